@@ -1,0 +1,26 @@
+#pragma once
+// Converting between our robot frame and MRPT's range/yaw/pitch measurements.
+// Ours (thesis): +x left, +y up, +z forward. MRPT's sensor frame: +x forward, +y left, +z up.
+// (x_m, y_m, z_m) = (z_r, x_r, y_r) is a proper rotation (a cyclic permutation of the axes).
+
+#include <Eigen/Core>
+
+namespace relslam::eval {
+
+// MRPT's convention (CPose3D::sphericalCoordinates): range = |p|, yaw = atan2(y, x) (0 ahead,
+// counter-clockwise positive), pitch = -asin(z / range) (NEGATIVE elevation: pitch > 0 is below).
+struct RangeBearing {
+  double range = 0;
+  double yaw_rad = 0;
+  double pitch_rad = 0;
+};
+
+inline Eigen::Vector3d mrpt_from_robot(const Eigen::Vector3d& p_robot) { return {p_robot.z(), p_robot.x(), p_robot.y()}; }
+inline Eigen::Vector3d robot_from_mrpt(const Eigen::Vector3d& p_mrpt) { return {p_mrpt.y(), p_mrpt.z(), p_mrpt.x()}; }
+
+// p in MRPT's sensor frame -> measurement; range 0 gives yaw = pitch = 0.
+RangeBearing range_bearing_of(const Eigen::Vector3d& p_mrpt);
+// MRPT's inverse model: (r cos yaw cos pitch, r sin yaw cos pitch, -r sin pitch).
+Eigen::Vector3d point_of(const RangeBearing& m);
+
+}  // namespace relslam::eval

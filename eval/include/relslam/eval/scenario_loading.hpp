@@ -1,0 +1,17 @@
+#pragma once
+// The steps every command that takes a scenario shares: read it with the --set overrides,
+// and build its simulator with errors pointing back at the scenario's lines.
+
+#include "relslam/eval/scenario.hpp"
+#include "relslam/sim/simulator.hpp"
+
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+LoadedScenario load_with_overrides(const std::string& file, const std::vector<std::string>& set);
+// Throws InputError (at the offending key) when the world cannot be built.
+sim::Simulator build_simulator(const LoadedScenario& loaded);
+
+}  // namespace relslam::eval

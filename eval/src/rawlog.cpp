@@ -1,0 +1,222 @@
+#include "relslam/eval/rawlog.hpp"
+
+#include "relslam/eval/input_error.hpp"
+#include "relslam/eval/range_bearing.hpp"
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CActionRobotMovement3D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <array>
+#include <cctype>
+#include <fstream>
+
+namespace relslam::eval {
+namespace {
+
+using mrpt::obs::CActionCollection;
+using mrpt::obs::CObservationBearingRange;
+using mrpt::obs::CSensoryFrame;
+
+Rigid3 rigid_of(const mrpt::poses::CPose3D& pose) {
+  Rigid3 r;
+  r.rotation = pose.getRotationMatrix().asEigen();
+  r.translation = {pose.x(), pose.y(), pose.z()};
+  return r;
+}
+
+std::optional<Rigid3> odometry_of(const CActionCollection& actions) {
+  if (auto a3 = actions.getActionByClass<mrpt::obs::CActionRobotMovement3D>()) return rigid_of(a3->poseChange.mean);
+  if (auto a2 = actions.getActionByClass<mrpt::obs::CActionRobotMovement2D>())
+    return rigid_of(mrpt::poses::CPose3D(a2->poseChange->getMeanVal()));
+  return std::nullopt;
+}
+
+RawlogFrame frame_of(const CObservationBearingRange& obs, int index) {
+  RawlogFrame frame;
+  frame.index = index;
+  frame.timestamp_s = mrpt::Clock::toDouble(obs.timestamp);
+  frame.robot_T_sensor = rigid_of(obs.sensorLocationOnRobot);
+  frame.measurements.reserve(obs.sensedData.size());
+  for (const auto& m : obs.sensedData) frame.measurements.push_back({m.range, m.yaw, m.pitch, m.landmarkID});
+  return frame;
+}
+
+// MRPT deserialises whatever bytes it is given; a text or image file can make it allocate
+// gigabytes for a "class name". So check the first record's header ourselves: a serialised
+// object starts with 0x80 | length, then that many identifier characters naming a class.
+void require_mrpt_header(const std::filesystem::path& path) {
+  mrpt::io::CFileGZInputStream in;
+  if (!in.open(path.string())) throw InputError(path.string(), 0, "", "cannot open file");
+  std::array<unsigned char, 128> head{};
+  const std::size_t n = in.Read(head.data(), head.size());
+  if (n == 0) throw InputError(path.string(), 0, "", "empty file: not an MRPT rawlog");
+  const unsigned length = head[0] & 0x7F;
+  bool ok = (head[0] & 0x80) != 0 && length >= 2 && 1 + length <= n;
+  for (unsigned i = 0; ok && i < length; ++i) ok = std::isalnum(head[1 + i]) || head[1 + i] == '_' || head[1 + i] == ':';
+  ok = ok && head[1] == 'C';  // every MRPT serialisable class name starts with C
+  if (!ok) throw InputError(path.string(), 1, "", "not an MRPT rawlog (the first record has no MRPT object header)");
+}
+
+}  // namespace
+
+Rawlog read_rawlog(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  if (!std::filesystem::exists(path)) throw InputError(name, 0, "", "file not found");
+  if (std::filesystem::is_directory(path)) throw InputError(name, 0, "", "is a directory, not a rawlog");
+  require_mrpt_header(path);
+
+  mrpt::io::CFileGZInputStream in;
+  if (!in.open(name)) throw InputError(name, 0, "", "cannot open file");
+  auto archive = mrpt::serialization::archiveFrom(in);
+
+  Rawlog log;
+  bool any_action = false, any_frame = false;
+  std::optional<Rigid3> pending_odometry;                 // action waiting for its frame
+  std::optional<mrpt::poses::CPose2D> last_odometry_reading;  // observation-only files
+  for (int record = 1;; ++record) {
+    const std::uint64_t before = in.getPosition();
+    mrpt::serialization::CSerializable::Ptr object;
+    try {
+      object = archive.ReadObject();
+    } catch (const mrpt::serialization::CExceptionEOF&) {
+      if (in.getPosition() == before) break;  // clean end between records
+      throw InputError(name, record, "", "truncated: the file ends inside record " + std::to_string(record));
+    } catch (const std::exception& e) {
+      std::string why = e.what();
+      why = why.substr(0, why.find('\n'));
+      throw InputError(name, record, "", "unreadable record (corrupt or not a rawlog): " + why);
+    }
+    log.records = record;
+    if (auto actions = std::dynamic_pointer_cast<CActionCollection>(object)) {
+      if (!any_action && !any_frame) log.sensory_frame_first = false;
+      any_action = true;
+      pending_odometry = odometry_of(*actions);
+    } else if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(object)) {
+      if (!any_action && !any_frame) log.sensory_frame_first = true;
+      any_frame = true;
+      auto obs = sf->getObservationByClass<CObservationBearingRange>();
+      if (!obs) {
+        log.skipped_observations += static_cast<int>(sf->size());
+        continue;
+      }
+      log.skipped_observations += static_cast<int>(sf->size()) - 1;
+      RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()));
+      frame.odometry = pending_odometry;
+      pending_odometry.reset();
+      log.frames.push_back(std::move(frame));
+    } else if (auto obs = std::dynamic_pointer_cast<CObservationBearingRange>(object)) {
+      log.format = Rawlog::Format::ObservationsOnly;
+      RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()));
+      frame.odometry = pending_odometry;
+      pending_odometry.reset();
+      log.frames.push_back(std::move(frame));
+    } else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(object)) {
+      log.format = Rawlog::Format::ObservationsOnly;
+      // Absolute odometry readings: the increment since the previous reading is the motion.
+      if (last_odometry_reading)
+        pending_odometry = rigid_of(mrpt::poses::CPose3D(odo->odometry - *last_odometry_reading));
+      last_odometry_reading = odo->odometry;
+    } else if (std::dynamic_pointer_cast<mrpt::obs::CObservation>(object)) {
+      log.format = Rawlog::Format::ObservationsOnly;
+      ++log.skipped_observations;
+    } else {
+      throw InputError(name, record, "", std::string("unexpected object of class ") + object->GetRuntimeClass()->className +
+                                             " in a rawlog");
+    }
+  }
+  if (log.frames.empty())
+    throw InputError(name, 0, "", "no CObservationBearingRange in " + std::to_string(log.records) +
+                                      " records: nothing for a landmark SLAM algorithm to read");
+  if (any_action && any_frame) log.format = Rawlog::Format::ActionsSensoryFrames;
+  return log;
+}
+
+ObservationFrame observation_frame(const RawlogFrame& frame) {
+  ObservationFrame out;
+  out.iteration = frame.index;
+  out.points.reserve(frame.measurements.size());
+  for (const RawlogMeasurement& m : frame.measurements) {
+    const Eigen::Vector3d p_sensor = point_of({m.range, m.yaw_rad, m.pitch_rad});
+    out.points.push_back(robot_from_mrpt(frame.robot_T_sensor * p_sensor));
+  }
+  return out;
+}
+
+struct RawlogWriter::Impl {
+  std::unique_ptr<mrpt::io::CStream> stream;
+  // Each record is serialised into memory first and written with one call: MRPT's archive
+  // issues one stream write per field, which is several times slower on a file stream.
+  mrpt::io::CMemoryStream record;
+  RangeBearingSensor sensor;
+  std::string name;
+};
+
+RawlogWriter::RawlogWriter(const std::filesystem::path& path, const RangeBearingSensor& sensor, bool gzip)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->sensor = sensor;
+  impl_->name = path.string();
+  if (gzip) {
+    auto s = std::make_unique<mrpt::io::CFileGZOutputStream>();
+    if (!s->open(impl_->name, 1)) throw std::runtime_error(impl_->name + ": cannot create file");
+    impl_->stream = std::move(s);
+  } else {
+    auto s = std::make_unique<mrpt::io::CFileOutputStream>();
+    if (!s->open(impl_->name, mrpt::io::OpenMode::TRUNCATE)) throw std::runtime_error(impl_->name + ": cannot create file");
+    impl_->stream = std::move(s);
+  }
+}
+
+RawlogWriter::~RawlogWriter() = default;
+
+void RawlogWriter::write(const ObservationFrame& frame, const std::vector<int>& landmark_ids, double timestamp_s) {
+  if (!impl_->stream) throw std::logic_error(impl_->name + ": write after close");
+  if (!landmark_ids.empty() && landmark_ids.size() != frame.points.size())
+    throw std::logic_error("RawlogWriter::write: " + std::to_string(landmark_ids.size()) + " ids for " +
+                           std::to_string(frame.points.size()) + " points");
+  const RangeBearingSensor& sensor = impl_->sensor;
+  auto obs = std::make_shared<CObservationBearingRange>();
+  obs->sensorLabel = "RELSLAM_SIM";
+  obs->timestamp = mrpt::Clock::fromDouble(timestamp_s);
+  obs->minSensorDistance = static_cast<float>(sensor.min_range);
+  obs->maxSensorDistance = static_cast<float>(sensor.max_range);
+  obs->fieldOfView_yaw = static_cast<float>(sensor.field_of_view_yaw_rad);
+  obs->fieldOfView_pitch = static_cast<float>(sensor.field_of_view_pitch_rad);
+  obs->sensor_std_range = static_cast<float>(sensor.std_range);
+  obs->sensor_std_yaw = static_cast<float>(sensor.std_yaw_rad);
+  obs->sensor_std_pitch = static_cast<float>(sensor.std_pitch_rad);
+  // sensorLocationOnRobot stays the identity: MRPT 2.5.8's analytic 6D observation Jacobian is
+  // wrong for any other sensor pose (spec mrpt §0.2).
+  obs->sensedData.resize(frame.points.size());
+  for (std::size_t i = 0; i < frame.points.size(); ++i) {
+    const RangeBearing m = range_bearing_of(mrpt_from_robot(frame.points[i]));
+    auto& out = obs->sensedData[i];
+    out.range = static_cast<float>(m.range);
+    out.yaw = static_cast<float>(m.yaw_rad);
+    out.pitch = static_cast<float>(m.pitch_rad);
+    out.landmarkID = landmark_ids.empty() ? -1 : landmark_ids[i];
+  }
+  CSensoryFrame sf;
+  sf.insert(obs);
+  CActionCollection no_odometry;  // action first: kf-slam then pairs step k with frame k
+  impl_->record.clear();
+  auto archive = mrpt::serialization::archiveFrom(impl_->record);
+  archive << no_odometry << sf;
+  const auto bytes = static_cast<std::size_t>(impl_->record.getPosition());  // bytes written since clear()
+  if (impl_->stream->Write(impl_->record.getRawBufferData(), bytes) != bytes)
+    throw std::runtime_error(impl_->name + ": write failed (disk full?)");
+}
+
+void RawlogWriter::close() { impl_->stream.reset(); }
+
+}  // namespace relslam::eval

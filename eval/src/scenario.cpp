@@ -1,0 +1,200 @@
+#include "relslam/eval/scenario.hpp"
+
+#include "relslam/eval/input_error.hpp"
+#include "relslam/eval/json_document.hpp"
+#include "relslam/eval/scenario_keys.hpp"
+
+#include <algorithm>
+
+namespace relslam::eval {
+namespace {
+
+using nlohmann::json;
+
+// Levenshtein distance, for "did you mean" on unknown keys.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string unknown_key_problem(const std::string& key) {
+  std::string best;
+  std::size_t best_distance = 4;  // suggest only near misses
+  for (const ScenarioKey& k : scenario_keys()) {
+    const std::size_t d = edit_distance(key, k.key);
+    if (d < best_distance) best_distance = d, best = k.key;
+  }
+  return "unknown key" + (best.empty() ? std::string() : "; did you mean \"" + best + "\"?") +
+         " (relslam keys lists them all)";
+}
+
+bool is_group(const std::string& path) {
+  const std::string prefix = path + ".";
+  return std::any_of(scenario_keys().begin(), scenario_keys().end(),
+                     [&](const ScenarioKey& k) { return k.key.compare(0, prefix.size(), prefix) == 0; });
+}
+
+class Loader {
+ public:
+  explicit Loader(Scenario& scenario) : s_(scenario) {}
+
+  void apply_document(const JsonDocument& doc) {
+    if (!doc.value.is_object()) throw InputError(doc.file, 1, "", "a scenario must be a JSON object");
+    walk(doc, doc.value, "");
+  }
+
+  void apply_override(const Override& o) {
+    const std::string where = "--set";
+    if (o.key == "sweep" || o.key.rfind("sweep.", 0) == 0)
+      throw InputError(where, 0, o.key, "sweeps are set in the scenario file or with relslam sweep --param");
+    const ScenarioKey* key = find_scenario_key(o.key);
+    if (!key) throw InputError(where, 0, o.key, unknown_key_problem(o.key));
+    store(*key, override_value(*key, o.value), {where, 0});
+  }
+
+  const std::map<std::string, KeyOrigin>& origins() const { return origins_; }
+
+ private:
+  void walk(const JsonDocument& doc, const json& object, const std::string& prefix) {
+    for (const auto& [name, value] : object.items()) {
+      const std::string path = prefix.empty() ? name : prefix + "." + name;
+      const int line = doc.line_of(path);
+      if (path == "sweep") {
+        read_sweep(doc, value);
+      } else if (const ScenarioKey* key = find_scenario_key(path)) {
+        store(*key, value, {doc.file, line});
+      } else if (is_group(path)) {
+        if (!value.is_object()) throw InputError(doc.file, line, path, "expected an object of keys, got " + value.dump());
+        walk(doc, value, path);
+      } else {
+        throw InputError(doc.file, line, path, unknown_key_problem(path));
+      }
+    }
+  }
+
+  // "sweep": {"sim.density": [100, 150]} — each axis must name a key and hold values that key
+  // accepts, so a sweep fails when the file is loaded, not hours into a batch.
+  void read_sweep(const JsonDocument& doc, const json& sweep) {
+    if (!sweep.is_object())
+      throw InputError(doc.file, doc.line_of("sweep"), "sweep", "expected an object of key: [values]");
+    for (const auto& [name, values] : sweep.items()) {
+      const std::string path = "sweep." + name;
+      const int line = doc.line_of(path);
+      const ScenarioKey* key = find_scenario_key(name);
+      if (!key || name == "seed" || name == "name") throw InputError(doc.file, line, path, "not a key that can be swept");
+      if (!values.is_array() || values.empty()) throw InputError(doc.file, line, path, "expected a non-empty list of values");
+      for (const json& v : values) {
+        Scenario probe = s_;
+        const std::string problem = key->write(probe, v);
+        if (!problem.empty()) throw InputError(doc.file, line, path, problem);
+      }
+      s_.sweep.push_back({name, values.get<std::vector<json>>()});
+    }
+  }
+
+  static json override_value(const ScenarioKey& key, const std::string& raw) {
+    if (key.text_value) {
+      if (key.key == "algorithms" && (raw.empty() || raw.front() != '[')) {
+        json list = json::array();
+        for (std::size_t start = 0; start <= raw.size() && !raw.empty();) {
+          const std::size_t comma = std::min(raw.find(',', start), raw.size());
+          list.push_back(raw.substr(start, comma - start));
+          start = comma + 1;
+        }
+        return list;
+      }
+      if (raw.empty() || (raw.front() != '"' && raw.front() != '[')) return raw;
+    }
+    try {
+      return json::parse(raw);
+    } catch (const json::parse_error&) {
+      return raw;  // not JSON: the key's own check says what it expected
+    }
+  }
+
+  void store(const ScenarioKey& key, const json& value, KeyOrigin origin) {
+    const std::string problem = key.write(s_, value);
+    if (!problem.empty()) throw InputError(origin.file, origin.line, key.key, problem);
+    origins_[key.key] = std::move(origin);
+  }
+
+  Scenario& s_;
+  std::map<std::string, KeyOrigin> origins_;
+};
+
+void check_semantics(const LoadedScenario& loaded) {
+  std::vector<InputError> errors;
+  for (const OptionIssue& issue : sim::check(loaded.scenario.sim)) errors.push_back(loaded.error("sim." + issue.field, issue.problem));
+  if (errors.empty()) return;
+  if (errors.size() == 1) throw errors.front();
+  // Report every problem at once; the first one is the error's own location.
+  std::string all;
+  for (const InputError& e : errors) all += std::string("\n  ") + e.what();
+  const InputError& first = errors.front();
+  throw InputError(first.file(), first.line(), first.field(),
+                   first.problem() + "\n" + std::to_string(errors.size()) + " problems in all:" + all);
+}
+
+LoadedScenario build(const JsonDocument& doc, const std::vector<Override>& overrides) {
+  LoadedScenario loaded;
+  loaded.file = doc.file;
+  loaded.scenario.name = std::filesystem::path(doc.file).stem().string();
+  Loader loader(loaded.scenario);
+  loader.apply_document(doc);
+  for (const Override& o : overrides) loader.apply_override(o);
+  loaded.origins = loader.origins();
+  check_semantics(loaded);
+  return loaded;
+}
+
+}  // namespace
+
+Override parse_override(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) throw InputError("--set", 0, text, "expected key=value, e.g. sim.density=50");
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+InputError LoadedScenario::error(const std::string& key, const std::string& problem) const {
+  const auto it = origins.find(key);
+  if (it == origins.end()) return InputError(file, 0, key, problem + " (default value)");
+  return InputError(it->second.file, it->second.line, key, problem);
+}
+
+LoadedScenario parse_scenario(const std::string& text, const std::string& file, const std::vector<Override>& overrides) {
+  return build(parse_json(text, file), overrides);
+}
+
+LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<Override>& overrides) {
+  return build(read_json_file(file), overrides);
+}
+
+json to_json(const Scenario& scenario) {
+  json out = json::object();
+  for (const ScenarioKey& key : scenario_keys()) {
+    std::string slashed = "/" + key.key;
+    std::replace(slashed.begin(), slashed.end(), '.', '/');
+    out[json::json_pointer(slashed)] = key.read(scenario);
+  }
+  json sweep = json::object();
+  for (const SweepAxis& axis : scenario.sweep) sweep[axis.key] = axis.values;
+  out["sweep"] = sweep;
+  return out;
+}
+
+const std::vector<std::string>& known_algorithms() {
+  static const std::vector<std::string> names = {};
+  return names;
+}
+
+}  // namespace relslam::eval

@@ -1,0 +1,273 @@
+#include "relslam/eval/scenario_keys.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+namespace relslam::eval {
+namespace {
+
+using nlohmann::json;
+using sim::DynamicOptions;
+using sim::Frustum;
+using sim::SimOptions;
+
+// member<&A::b, &B::c>(a) is a.b.c, const or not.
+template <auto First, auto... Rest>
+constexpr auto& member(auto& object) {
+  if constexpr (sizeof...(Rest) == 0)
+    return object.*First;
+  else
+    return member<Rest...>(object.*First);
+}
+
+std::string shown(const json& value) {
+  std::string text = value.dump();
+  return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+}
+
+std::string expected(const std::string& what, const json& value) { return "expected " + what + ", got " + shown(value); }
+
+std::optional<long long> as_integer(const json& v) {
+  if (v.is_number_integer()) return v.get<long long>();
+  if (v.is_number_float()) {
+    const double d = v.get<double>();
+    if (std::isfinite(d) && d == std::floor(d) && std::abs(d) < 9.0e15) return static_cast<long long>(d);
+  }
+  return std::nullopt;
+}
+
+template <auto... Path>
+ScenarioKey number(std::string key, std::string help) {
+  return {std::move(key), "number", std::move(help), false,
+          [](const Scenario& s) { return json(member<Path...>(s)); },
+          [](Scenario& s, const json& v) -> std::string {
+            if (!v.is_number()) return expected("a number", v);
+            member<Path...>(s) = v.get<double>();
+            return "";
+          }};
+}
+
+// Stored in radians, written and read in degrees (style.md 2.4: units convert at the boundary).
+template <auto... Path>
+ScenarioKey degrees(std::string key, std::string help) {
+  return {std::move(key), "number (degrees)", std::move(help), false,
+          [](const Scenario& s) { return json(member<Path...>(s) * 180.0 / std::numbers::pi); },
+          [](Scenario& s, const json& v) -> std::string {
+            if (!v.is_number()) return expected("a number", v);
+            member<Path...>(s) = v.get<double>() * std::numbers::pi / 180.0;
+            return "";
+          }};
+}
+
+template <auto... Path>
+ScenarioKey integer(std::string key, std::string help) {
+  return {std::move(key), "integer", std::move(help), false,
+          [](const Scenario& s) { return json(member<Path...>(s)); },
+          [](Scenario& s, const json& v) -> std::string {
+            const auto i = as_integer(v);
+            if (!i) return expected("an integer", v);
+            if (*i < std::numeric_limits<int>::min() || *i > std::numeric_limits<int>::max())
+              return "integer out of range: " + shown(v);
+            member<Path...>(s) = static_cast<int>(*i);
+            return "";
+          }};
+}
+
+template <auto... Path>
+ScenarioKey optional_integer(std::string key, std::string help) {
+  return {std::move(key), "integer or null", std::move(help), false,
+          [](const Scenario& s) {
+            const auto& field = member<Path...>(s);
+            return field ? json(*field) : json(nullptr);
+          },
+          [](Scenario& s, const json& v) -> std::string {
+            if (v.is_null()) {
+              member<Path...>(s).reset();
+              return "";
+            }
+            const auto i = as_integer(v);
+            if (!i) return expected("an integer or null", v);
+            if (*i < std::numeric_limits<int>::min() || *i > std::numeric_limits<int>::max())
+              return "integer out of range: " + shown(v);
+            member<Path...>(s) = static_cast<int>(*i);
+            return "";
+          }};
+}
+
+template <auto... Path>
+ScenarioKey boolean(std::string key, std::string help) {
+  return {std::move(key), "true or false", std::move(help), false,
+          [](const Scenario& s) { return json(member<Path...>(s)); },
+          [](Scenario& s, const json& v) -> std::string {
+            if (!v.is_boolean()) return expected("true or false", v);
+            member<Path...>(s) = v.get<bool>();
+            return "";
+          }};
+}
+
+template <auto... Path>
+ScenarioKey text(std::string key, std::string help) {
+  return {std::move(key), "string", std::move(help), true,
+          [](const Scenario& s) { return json(member<Path...>(s)); },
+          [](Scenario& s, const json& v) -> std::string {
+            if (!v.is_string()) return expected("a string", v);
+            member<Path...>(s) = v.get<std::string>();
+            return "";
+          }};
+}
+
+// An enum spelled by name; ToString/Parse are the enum's own conversions.
+template <auto ToString, auto Parse, auto... Path>
+ScenarioKey choice(std::string key, std::string help, std::vector<std::string> names) {
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  return {std::move(key), "one of: " + list, std::move(help), true,
+          [](const Scenario& s) { return json(std::string(ToString(member<Path...>(s)))); },
+          [list](Scenario& s, const json& v) -> std::string {
+            if (!v.is_string()) return expected("one of " + list, v);
+            const auto parsed = Parse(v.get<std::string>());
+            if (!parsed) return expected("one of " + list, v);
+            member<Path...>(s) = *parsed;
+            return "";
+          }};
+}
+
+std::string_view kind_name(ScenarioKind kind) {
+  return kind == ScenarioKind::Simulation ? "simulation" : "binning_benchmark";
+}
+std::optional<ScenarioKind> parse_kind(std::string_view name) {
+  if (name == "simulation") return ScenarioKind::Simulation;
+  if (name == "binning_benchmark") return ScenarioKind::BinningBenchmark;
+  return std::nullopt;
+}
+
+constexpr auto path_kind_name = static_cast<std::string_view (*)(sim::PathKind)>(&sim::to_string);
+constexpr auto far_cap_name = static_cast<std::string_view (*)(sim::FarCap)>(&sim::to_string);
+
+ScenarioKey seed_key() {
+  return {"seed", "integer >= 0", "seed of every random choice (field, noise, dynamics, shuffle)", false,
+          [](const Scenario& s) { return json(s.seed); },
+          [](Scenario& s, const json& v) -> std::string {
+            if (v.is_number_unsigned() || (v.is_number_integer() && v.get<long long>() >= 0)) {
+              s.seed = v.get<std::uint64_t>();
+              return "";
+            }
+            return expected("an integer >= 0", v);
+          }};
+}
+
+ScenarioKey algorithms_key() {
+  std::string names;
+  for (const auto& n : known_algorithms()) names += (names.empty() ? "" : ", ") + n;
+  return {"algorithms", "list of strings", "algorithms `relslam run` runs on the same observations" +
+                                               (names.empty() ? std::string(" (none have landed yet)") : ": " + names),
+          true, [](const Scenario& s) { return json(s.algorithms); },
+          [](Scenario& s, const json& v) -> std::string {
+            if (!v.is_array()) return expected("a list of algorithm names", v);
+            std::vector<std::string> names;
+            for (const json& item : v) {
+              if (!item.is_string()) return expected("algorithm names (strings)", item);
+              const std::string name = item.get<std::string>();
+              bool known = false;
+              for (const auto& k : known_algorithms()) known = known || k == name;
+              if (!known) {
+                std::string list;
+                for (const auto& k : known_algorithms()) list += (list.empty() ? "" : ", ") + k;
+                return "unknown algorithm \"" + name + "\" (known: " + (list.empty() ? "none yet" : list) + ")";
+              }
+              names.push_back(name);
+            }
+            s.algorithms = names;
+            return "";
+          }};
+}
+
+std::vector<ScenarioKey> build_keys() {
+  return {
+      text<&Scenario::name>("name", "experiment name; defaults to the file name without .json"),
+      text<&Scenario::description>("description", "what the experiment reproduces (thesis figures)"),
+      choice<kind_name, parse_kind, &Scenario::kind>(
+          "kind", "simulation, or the synthetic binning benchmark S-BIN", {"simulation", "binning_benchmark"}),
+      seed_key(),
+      choice<path_kind_name, sim::parse_path_kind, &Scenario::sim, &SimOptions::path>(
+          "sim.path", "robot path (thesis 6.6.1, 6.7.2)", {"figure_eight", "line", "stationary"}),
+      integer<&Scenario::sim, &SimOptions::loops>("sim.loops", "times round the figure eight; 1 loop = 3800 iterations"),
+      optional_integer<&Scenario::sim, &SimOptions::iterations>("sim.iterations",
+                                                                "run length in iterations; overrides sim.loops"),
+      number<&Scenario::sim, &SimOptions::scale>("sim.scale", "multiplies path lengths; 2 = the double-size eight (Fig 136)"),
+      number<&Scenario::sim, &SimOptions::density>("sim.density", "points per 100 units of path (thesis 6.6.2)"),
+      number<&Scenario::sim, &SimOptions::noise_sigma>("sim.noise_sigma",
+                                                       "std. deviation of white Gaussian noise per axis, units"),
+      boolean<&Scenario::sim, &SimOptions::range_noise>("sim.range_noise",
+                                                        "noise grows with range: sigma·(1 + range/far)"),
+      number<&Scenario::sim, &SimOptions::loop_length>("sim.loop_length", "figure-eight loop length at scale 1, units"),
+      integer<&Scenario::sim, &SimOptions::iterations_per_loop>("sim.iterations_per_loop",
+                                                                "iterations per loop at scale 1; sets the speed"),
+      number<&Scenario::sim, &SimOptions::incline_height>("sim.incline_height",
+                                                          "height of the crossing above the start, units"),
+      boolean<&Scenario::sim, &SimOptions::wobble>("sim.wobble", "add small roll and pitch oscillations (all 6 DOF move)"),
+      number<&Scenario::sim, &SimOptions::band_half_width>("sim.band_half_width",
+                                                           "point band extends this far left and right, units"),
+      number<&Scenario::sim, &SimOptions::band_half_height>("sim.band_half_height",
+                                                            "point band extends this far up and down, units"),
+      number<&Scenario::sim, &SimOptions::line_margin>("sim.line_margin", "line field runs this far past the end, units"),
+      number<&Scenario::sim, &SimOptions::frustum, &Frustum::near>("sim.frustum.near", "nearest visible depth, units"),
+      number<&Scenario::sim, &SimOptions::frustum, &Frustum::far>("sim.frustum.far", "farthest visible depth, units"),
+      degrees<&Scenario::sim, &SimOptions::frustum, &Frustum::half_angle_rad>("sim.frustum.half_angle_deg",
+                                                                              "half the horizontal field of view"),
+      number<&Scenario::sim, &SimOptions::frustum, &Frustum::half_height>("sim.frustum.half_height",
+                                                                          "visible height band |y| <= this, units"),
+      choice<far_cap_name, sim::parse_far_cap, &Scenario::sim, &SimOptions::frustum, &Frustum::far_cap>(
+          "sim.frustum.far_cap", "far end: flat plane z <= far, or range |p| <= far", {"plane", "range"}),
+      integer<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::count>(
+          "sim.dynamic.count", "dynamic points chosen among those visible at iteration 0 (S-DYN: 2)"),
+      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::fraction>(
+          "sim.dynamic.fraction", "share of all points made dynamic (S-DYN3: 0.03)"),
+      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::amplitude>("sim.dynamic.amplitude",
+                                                                               "dynamic wander amplitude, units"),
+      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::vertical_ratio>(
+          "sim.dynamic.vertical_ratio", "vertical amplitude as a share of the horizontal one"),
+      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::period_min>("sim.dynamic.period_min",
+                                                                                "shortest wander period, iterations"),
+      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::period_max>("sim.dynamic.period_max",
+                                                                                "longest wander period, iterations"),
+      algorithms_key(),
+      boolean<&Scenario::output, &OutputOptions::observations_csv>("output.observations_csv",
+                                                                   "write observations.csv (large at high density)"),
+      boolean<&Scenario::output, &OutputOptions::rawlog>("output.rawlog", "write observations.rawlog for MRPT tools"),
+      boolean<&Scenario::output, &OutputOptions::rawlog_landmark_ids>(
+          "output.rawlog_landmark_ids", "rawlog carries true landmark ids (else -1: unknown association)"),
+      boolean<&Scenario::output, &OutputOptions::rawlog_gzip>("output.rawlog_gzip", "gzip-compress the rawlog"),
+  };
+}
+
+}  // namespace
+
+const std::vector<ScenarioKey>& scenario_keys() {
+  static const std::vector<ScenarioKey> keys = build_keys();
+  return keys;
+}
+
+const ScenarioKey* find_scenario_key(const std::string& key) {
+  for (const ScenarioKey& k : scenario_keys())
+    if (k.key == key) return &k;
+  return nullptr;
+}
+
+std::string scenario_keys_markdown() {
+  const Scenario defaults;
+  std::ostringstream out;
+  out << "| key | type | default | meaning |\n|---|---|---|---|\n";
+  for (const ScenarioKey& k : scenario_keys()) {
+    std::string value = k.read(defaults).dump();
+    if (k.key == "name") value = "file name";
+    out << "| `" << k.key << "` | " << k.type << " | `" << value << "` | " << k.help << " |\n";
+  }
+  out << "| `sweep` | object | `{}` | parameter grid for `relslam sweep`: key → list of values |\n";
+  return out.str();
+}
+
+}  // namespace relslam::eval

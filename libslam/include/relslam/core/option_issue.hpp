@@ -1,0 +1,36 @@
+#pragma once
+// How option checks report problems without knowing where the options came from.
+// The evaluation layer adds the file, line and key prefix (style.md 2.5).
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace relslam {
+
+// One violated constraint. `field` is the option's path inside its struct, e.g.
+// "dynamic.count"; `problem` reads after it: "must be >= 0, got -1".
+struct OptionIssue {
+  std::string field;
+  std::string problem;
+};
+
+// Thrown when options pass their checks but still cannot be honoured once the data exist
+// (e.g. more dynamic points requested than are visible at iteration 0).
+class OptionError : public std::invalid_argument {
+ public:
+  OptionError(std::string field, std::string problem);
+  const std::string& field() const { return field_; }
+  const std::string& problem() const { return problem_; }
+
+ private:
+  std::string field_;
+  std::string problem_;
+};
+
+// Helpers that phrase the common constraints the same way everywhere.
+void require_at_least(std::vector<OptionIssue>& issues, const std::string& field, double value, double minimum);
+void require_above(std::vector<OptionIssue>& issues, const std::string& field, double value, double bound);
+void require_at_most(std::vector<OptionIssue>& issues, const std::string& field, double value, double maximum);
+
+}  // namespace relslam

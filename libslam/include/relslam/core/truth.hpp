@@ -1,0 +1,17 @@
+#pragma once
+// Ground truth that accompanies an ObservationFrame. Only the evaluation layer receives it:
+// an algorithm that could read truth could not be shown to ignore it (style.md 2.3).
+
+#include "relslam/core/rigid.hpp"
+
+#include <vector>
+
+namespace relslam {
+
+struct TruthFrame {
+  int iteration = 0;
+  Rigid3 world_T_robot;            // true pose; identity at iteration 0 by construction
+  std::vector<int> landmark_ids;   // true landmark id of ObservationFrame::points[i]
+};
+
+}  // namespace relslam

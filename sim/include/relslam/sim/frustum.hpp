@@ -1,0 +1,62 @@
+#pragma once
+// The sensor's viewing volume in the robot frame. Part of relslam/sim: Eigen only.
+
+#include <Eigen/Core>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string_view>
+
+namespace relslam::sim {
+
+// How the frustum is closed at the far end.
+enum class FarCap {
+  Plane,  // z <= far: the flat far plane of the thesis's Chapter 4 trapezoid frusta
+  Range,  // |p| <= far: a range-limited sensor (corners are then no farther than ahead)
+};
+std::string_view to_string(FarCap cap);
+std::optional<FarCap> parse_far_cap(std::string_view name);
+
+// A horizontal trapezoid extruded vertically (spec 4.5, A6) in the robot frame
+// (+x left, +y up, +z forward). Culling is applied to the *noisy* points (spec 2.2): with a
+// symmetric height band this reproduces the thesis's unbiased vertical behaviour (6.6.1).
+struct Frustum {
+  double near = 1.0;    // units; closer points are not seen [C]
+  double far = 100.0;   // units; forward limit [C], gives ~0.97·density visible points
+  // Half the horizontal field of view; 45° gives the 90° view of the spec [C].
+  double half_angle_rad = std::numbers::pi / 4.0;
+  // Vertical half-extent |y| <= half_height; equal to the band's half height so culling
+  // is symmetric (thesis 6.6.1) [I].
+  double half_height = 5.0;
+  FarCap far_cap = FarCap::Plane;  // [C] the spec's prism
+
+  // The tests with the trigonometry done once: the simulator runs them millions of times.
+  struct Prepared {
+    double near, far, half_height, tan_half_angle, side_margin_factor;
+    bool range_cap;
+    bool contains(const Eigen::Vector3d& p) const {
+      if (p.z() < near || p.z() > far) return false;
+      if (std::abs(p.x()) > p.z() * tan_half_angle) return false;
+      if (std::abs(p.y()) > half_height) return false;
+      return !range_cap || p.squaredNorm() <= far * far;
+    }
+    // False only if no point within `margin` (any direction) of p can be inside: lets the
+    // simulator skip drawing noise for points that cannot become visible. Each face moves
+    // outwards by `margin`; a side face x = z·tan(a) moves by margin / cos(a).
+    bool may_contain(const Eigen::Vector3d& p, double margin) const {
+      if (p.z() < near - margin || p.z() > far + margin) return false;
+      if (std::abs(p.x()) > p.z() * tan_half_angle + margin * side_margin_factor) return false;
+      if (std::abs(p.y()) > half_height + margin) return false;
+      return !range_cap || p.norm() <= far + margin;
+    }
+  };
+  Prepared prepare() const;
+
+  bool contains(const Eigen::Vector3d& p_robot) const { return prepare().contains(p_robot); }
+  // Largest distance from the sensor to any point inside (for MRPT's maxSensorDistance).
+  double max_range() const;
+  // Full vertical opening angle seen from the sensor (for MRPT's fieldOfView_pitch).
+  double vertical_field_of_view_rad() const;
+};
+
+}  // namespace relslam::sim

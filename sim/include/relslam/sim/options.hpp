@@ -1,0 +1,85 @@
+#pragma once
+// Everything that defines a simulated world and sensor, with one documented default each.
+// Part of relslam/sim: no I/O. Tags: [T] thesis-stated, [I] inferred, [C] chosen
+// (../shared/specs/relative_point.md §4).
+
+#include "relslam/core/option_issue.hpp"
+#include "relslam/sim/frustum.hpp"
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace relslam::sim {
+
+enum class PathKind {
+  FigureEight,  // the Chapter 6 test track: two lobes, gradual incline (thesis 6.6.1)
+  Line,         // straight and flat, for the no-turn EKF comparison (thesis 6.7.2)
+  Stationary,   // the robot never moves; it looks down the straight-line field (thesis 6.7.2)
+};
+std::string_view to_string(PathKind kind);
+std::optional<PathKind> parse_path_kind(std::string_view name);
+
+// Landmarks that move independently of the viewpoint (thesis 6.5.3, 6.7.3).
+// Motion [C]: p(k) = p0 + amplitude·(sin(2πk/T1+φ1), vertical_ratio·sin(2πk/T2+φ2), sin(2πk/T3+φ3)),
+// periods uniform in [period_min, period_max] iterations, phases uniform in [0, 2π).
+struct DynamicOptions {
+  // Number of points made dynamic, chosen among the points visible at iteration 0 (the
+  // thesis's dynamic RltPoints 18 and 24 were seen early) [T count 2 for S-DYN, I choice].
+  int count = 0;
+  // Share of all points made dynamic, chosen uniformly; used instead of `count` [T 3 % in Fig 117].
+  double fraction = 0.0;
+  double amplitude = 4.0;       // units; several matching bounds, well above the noise [C]
+  double vertical_ratio = 0.3;  // vertical motion is smaller so movers mostly stay in the band [C]
+  double period_min = 150.0;    // iterations; slow enough that local matching still tracks them [C]
+  double period_max = 400.0;    // iterations [C]
+};
+
+struct SimOptions {
+  PathKind path = PathKind::FigureEight;  // [T] figure eight is the main test track
+  // Times round the figure eight (ignored when `iterations` is set). Also sets the length
+  // of the line and stationary runs, one loop's worth of iterations each.
+  int loops = 1;
+  // Run length in iterations; overrides `loops` when set.
+  std::optional<int> iterations;
+  // Multiplies every path length (loop length, incline height, iterations per loop) but not
+  // the sensor or the point band: 2 gives the "twice the size" figure eight of Fig 136 [T, C].
+  double scale = 1.0;
+  // Points per 100 units of path [T definition]; the points-per-frame knob of Figs 137–145.
+  double density = 100.0;
+  // Standard deviation of the white Gaussian noise on each axis of each observation [T white
+  // Gaussian, C value]; applied before culling (thesis 6.6.1).
+  double noise_sigma = 0.1;
+  // Noise grows with range: sigma(r) = noise_sigma·(1 + r/far). Off in every thesis run [C].
+  bool range_noise = false;
+
+  double loop_length = 1145.0;    // units per figure-eight loop at scale 1 [T "about 1145"]
+  int iterations_per_loop = 3800; // at scale 1 [T "about 3800"]; fixes the step length
+  // Height gained between the start and the crossing: the robot passes above its start after
+  // the first lobe, so it cannot close the loop early [T shape, C value]. Must exceed twice
+  // band_half_height so the two passes see disjoint points.
+  double incline_height = 20.0;
+  // Adds a small roll and pitch oscillation so all six degrees of freedom move [C].
+  bool wobble = false;
+
+  double band_half_width = 15.0;  // units either side of the path, horizontally [C]
+  double band_half_height = 5.0;  // units above and below the path [T symmetric, C value]
+  // The line field runs this far past the end of the line so the last frames are not empty [C].
+  double line_margin = 110.0;
+
+  Frustum frustum;
+  DynamicOptions dynamic;
+};
+
+// Upper bounds that keep a typo from allocating the machine away: far above every thesis run
+// (S-40 has 152,000 iterations; ρ = 550 has 6,298 points).
+inline constexpr long long kMaxIterations = 100'000'000;
+inline constexpr long long kMaxLandmarks = 20'000'000;
+
+// Every violated constraint; fields are paths inside SimOptions ("dynamic.count").
+std::vector<OptionIssue> check(const SimOptions& options);
+
+// Number of iterations the options ask for (loops or the explicit count).
+long long iteration_count(const SimOptions& options);
+
+}  // namespace relslam::sim

@@ -1,0 +1,37 @@
+#pragma once
+// Counter-based random numbers for the simulator. Part of relslam/sim: no I/O.
+
+#include <cstdint>
+
+namespace relslam::sim {
+
+// Independent streams, so that e.g. changing the noise never moves a landmark (issue #2, spec 4.5).
+enum class Stream : std::uint64_t { Field = 1, Noise = 2, Dynamics = 3, Shuffle = 4 };
+
+// A short random sequence that is a pure function of (seed, stream, a, b).
+// Why counter-based instead of one long std::mt19937_64 per stream: the noise on landmark `b`
+// at iteration `a` is then the same whichever other points happen to be near the frustum, any
+// frame can be regenerated on its own (in any order, on any thread), and a denser point field
+// extends a sparser one with the same seed (point j is drawn from key j). SplitMix64 mixing.
+// Our own uniform and Gaussian transforms, because std::normal_distribution is
+// implementation-defined and would break bit-identical output across standard libraries.
+class RandomSequence {
+ public:
+  RandomSequence(std::uint64_t seed, Stream stream, std::uint64_t a = 0, std::uint64_t b = 0);
+
+  std::uint64_t next_u64();
+  // Uniform in [0, 1), 53 random bits.
+  double uniform();
+  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+  // Uniform integer in [0, n), n > 0, without modulo bias.
+  std::uint64_t below(std::uint64_t n);
+  // Standard normal sample (polar method; the second value of each pair is kept for the next call).
+  double gaussian();
+
+ private:
+  std::uint64_t state_;
+  double spare_ = 0.0;
+  bool has_spare_ = false;
+};
+
+}  // namespace relslam::sim
