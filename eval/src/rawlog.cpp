@@ -64,8 +64,20 @@ void require_mrpt_header(const std::filesystem::path& path) {
   const unsigned length = head[0] & 0x7F;
   bool ok = (head[0] & 0x80) != 0 && length >= 2 && 1 + length <= n;
   for (unsigned i = 0; ok && i < length; ++i) ok = std::isalnum(head[1 + i]) || head[1 + i] == '_' || head[1 + i] == ':';
-  ok = ok && head[1] == 'C';  // every MRPT serialisable class name starts with C
+  // Every MRPT serialisable class is called C..., with its namespace in MRPT 2 ("mrpt::obs::C...").
+  const std::string class_name(reinterpret_cast<const char*>(head.data()) + 1, ok ? length : 0);
+  const std::size_t colons = class_name.rfind("::");
+  ok = ok && class_name[colons == std::string::npos ? 0 : colons + 2] == 'C';
   if (!ok) throw InputError(path.string(), 1, "", "not an MRPT rawlog (the first record has no MRPT object header)");
+}
+
+// MRPT's exception text is a banner, a "Message:" line and a call stack; keep the message.
+std::string mrpt_message(const std::string& what) {
+  const std::size_t start = what.find("Message:");
+  std::string line = start == std::string::npos ? what : what.substr(start + 8);
+  line = line.substr(0, line.find('\n'));
+  const std::size_t first = line.find_first_not_of(' ');
+  return first == std::string::npos ? what.substr(0, what.find('\n')) : line.substr(first);
 }
 
 }  // namespace
@@ -93,9 +105,9 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
       if (in.getPosition() == before) break;  // clean end between records
       throw InputError(name, record, "", "truncated: the file ends inside record " + std::to_string(record));
     } catch (const std::exception& e) {
-      std::string why = e.what();
-      why = why.substr(0, why.find('\n'));
-      throw InputError(name, record, "", "unreadable record (corrupt or not a rawlog): " + why);
+      // MRPT wraps a short read inside an object in a generic error; EOF tells them apart.
+      if (in.checkEOF()) throw InputError(name, record, "", "truncated: the file ends inside record " + std::to_string(record));
+      throw InputError(name, record, "", "unreadable record (corrupt or not a rawlog): " + mrpt_message(e.what()));
     }
     log.records = record;
     if (auto actions = std::dynamic_pointer_cast<CActionCollection>(object)) {

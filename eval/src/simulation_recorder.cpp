@@ -82,7 +82,7 @@ void SimulationRecorder::record(const sim::SimFrame& frame) {
   if (files_->observations)
     for (std::size_t i = 0; i < points.size(); ++i) files_->observations->row(k, points[i].x(), points[i].y(), points[i].z(), ids[i]);
   static const std::vector<int> unknown_ids;  // empty: the writer stores -1
-  if (files_->rawlog) files_->rawlog->write(frame.observation, files_->rawlog_ids ? ids : unknown_ids, k);
+  if (files_->rawlog) files_->rawlog->write(frame.observation, files_->rawlog_ids ? ids : unknown_ids, kSimulationEpoch_s + k);
 
   const int n = static_cast<int>(points.size());
   summary_.iterations += 1;

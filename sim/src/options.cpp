@@ -52,7 +52,8 @@ std::vector<OptionIssue> check(const SimOptions& o) {
 
   const Frustum& f = o.frustum;
   require_at_least(issues, "frustum.near", f.near, 0.0);
-  require_above(issues, "frustum.far", f.far, f.near);
+  if (!(f.far > f.near))
+    issues.push_back({"frustum.far", "must be > frustum.near (" + format_number(f.near) + "), got " + format_number(f.far)});
   require_above(issues, "frustum.half_angle_deg", f.half_angle_rad * 180.0 / std::numbers::pi, 0.0);
   require_at_most(issues, "frustum.half_angle_deg", f.half_angle_rad * 180.0 / std::numbers::pi, 89.0);
   require_above(issues, "frustum.half_height", f.half_height, 0.0);

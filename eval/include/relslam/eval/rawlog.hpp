@@ -64,6 +64,10 @@ Rawlog read_rawlog(const std::filesystem::path& path);
 // the sensor's pose on the robot. The algorithms' view of a rawlog.
 ObservationFrame observation_frame(const RawlogFrame& frame);
 
+// MRPT reads a timestamp of 0 as "no timestamp", so simulated runs put iteration k at this
+// time plus k seconds in rawlogs (2001-09-09 onwards); TUM files use plain k.
+inline constexpr double kSimulationEpoch_s = 1.0e9;
+
 // Writes action-first rawlogs (empty CActionCollection, then one sensory frame holding one
 // CObservationBearingRange per iteration), the order kf-slam pairs without an offset.
 class RawlogWriter {

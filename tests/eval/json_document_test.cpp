@@ -1,0 +1,66 @@
+#include "relslam/eval/json_document.hpp"
+
+#include "relslam/eval/input_error.hpp"
+
+#include <gtest/gtest.h>
+
+namespace relslam::eval {
+namespace {
+
+TEST(JsonDocument, RecordsTheLineOfEveryKeyAndArrayElement) {
+  const JsonDocument doc = parse_json(
+      "{\n"
+      "  \"seed\": 3,\n"
+      "  \"sim\": {\n"
+      "    \"dynamic\": {\n"
+      "      \"count\": 2\n"
+      "    }\n"
+      "  },\n"
+      "  \"algorithms\": [\n"
+      "    \"a\",\n"
+      "    \"b\"\n"
+      "  ]\n"
+      "}\n",
+      "x.json");
+  EXPECT_EQ(doc.line_of("seed"), 2);
+  EXPECT_EQ(doc.line_of("sim"), 3);
+  EXPECT_EQ(doc.line_of("sim.dynamic"), 4);
+  EXPECT_EQ(doc.line_of("sim.dynamic.count"), 5);
+  EXPECT_EQ(doc.line_of("algorithms[1]"), 10);
+  EXPECT_EQ(doc.line_of("missing"), 0);
+  EXPECT_EQ(doc.value["sim"]["dynamic"]["count"], 2);
+}
+
+TEST(JsonDocument, MalformedJsonReportsFileAndLine) {
+  try {
+    parse_json("{\n  \"a\": 1,\n}\n", "bad.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "bad.json");
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_EQ(std::string(e.what()).rfind("bad.json:3: malformed JSON: ", 0), 0u) << e.what();
+  }
+}
+
+TEST(JsonDocument, RepeatedKeyIsAnError) {
+  try {
+    parse_json("{\n  \"seed\": 1,\n  \"seed\": 2\n}", "dup.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "dup.json:3: seed: key appears twice (first on line 2)");
+  }
+}
+
+TEST(JsonDocument, EmptyTextIsMalformed) { EXPECT_THROW(parse_json("", "empty.json"), InputError); }
+
+TEST(JsonDocument, MissingFileIsAnInputError) {
+  try {
+    read_json_file("/nonexistent/relslam.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "/nonexistent/relslam.json: file not found");
+  }
+}
+
+}  // namespace
+}  // namespace relslam::eval

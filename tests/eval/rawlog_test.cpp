@@ -1,0 +1,218 @@
+#include "relslam/eval/rawlog.hpp"
+
+#include "relslam/eval/input_error.hpp"
+#include "relslam/eval/range_bearing.hpp"
+#include "relslam/sim/random.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+#include <mrpt/core/Clock.h>
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationBearingRange.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+
+namespace relslam::eval {
+namespace {
+
+std::vector<ObservationFrame> random_frames(int count, std::vector<std::vector<int>>* ids) {
+  sim::RandomSequence rng(31, sim::Stream::Field);
+  std::vector<ObservationFrame> frames;
+  for (int k = 0; k < count; ++k) {
+    ObservationFrame f;
+    f.iteration = k;
+    std::vector<int> frame_ids;
+    for (int i = 0; i < 5 + k; ++i) {
+      f.points.emplace_back(rng.uniform(-50, 50), rng.uniform(-5, 5), rng.uniform(1, 100));
+      frame_ids.push_back(100 * k + i);
+    }
+    frames.push_back(f);
+    ids->push_back(frame_ids);
+  }
+  return frames;
+}
+
+RangeBearingSensor sensor() {
+  RangeBearingSensor s;
+  s.min_range = 1;
+  s.max_range = 141.5;
+  s.field_of_view_yaw_rad = M_PI / 2;
+  s.field_of_view_pitch_rad = 2.7;
+  return s;
+}
+
+void write_frames(const std::filesystem::path& path, bool gzip, bool with_ids, std::vector<ObservationFrame>* frames,
+                  std::vector<std::vector<int>>* ids, int count = 6) {
+  *frames = random_frames(count, ids);
+  RawlogWriter writer(path, sensor(), gzip);
+  for (std::size_t k = 0; k < frames->size(); ++k)
+    writer.write((*frames)[k], with_ids ? (*ids)[k] : std::vector<int>{}, kSimulationEpoch_s + static_cast<double>(k));
+  writer.close();
+}
+
+std::string error_reading(const std::filesystem::path& path) {
+  try {
+    read_rawlog(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+class RawlogRoundTrip : public ::testing::TestWithParam<bool> {};
+
+TEST_P(RawlogRoundTrip, PointsIdsAndTimesComeBackToFloatPrecision) {
+  test::ScratchDir dir;
+  std::vector<ObservationFrame> frames;
+  std::vector<std::vector<int>> ids;
+  write_frames(dir / "r.rawlog", GetParam(), true, &frames, &ids);
+  const Rawlog log = read_rawlog(dir / "r.rawlog");
+  EXPECT_EQ(log.format, Rawlog::Format::ActionsSensoryFrames);
+  EXPECT_FALSE(log.sensory_frame_first);
+  EXPECT_EQ(log.records, 2 * static_cast<int>(frames.size()));
+  ASSERT_EQ(log.frames.size(), frames.size());
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const RawlogFrame& f = log.frames[k];
+    EXPECT_EQ(f.index, static_cast<int>(k));
+    EXPECT_NEAR(f.timestamp_s, kSimulationEpoch_s + k, 1e-5);
+    EXPECT_FALSE(f.odometry.has_value()) << "empty actions mean no odometry";
+    const ObservationFrame back = observation_frame(f);
+    ASSERT_EQ(back.points.size(), frames[k].points.size());
+    for (std::size_t i = 0; i < back.points.size(); ++i) {
+      EXPECT_EQ(f.measurements[i].landmark_id, ids[k][i]);
+      // float range, yaw and pitch: relative error a few float epsilons (1.2e-7) of the range.
+      EXPECT_LT((back.points[i] - frames[k].points[i]).norm(), 1e-6 * frames[k].points[i].norm()) << k << "/" << i;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(PlainAndGzip, RawlogRoundTrip, ::testing::Bool());
+
+TEST(Rawlog, UnknownAssociationWritesMinusOne) {
+  test::ScratchDir dir;
+  std::vector<ObservationFrame> frames;
+  std::vector<std::vector<int>> ids;
+  write_frames(dir / "r.rawlog", false, false, &frames, &ids);
+  for (const RawlogFrame& f : read_rawlog(dir / "r.rawlog").frames)
+    for (const RawlogMeasurement& m : f.measurements) EXPECT_EQ(m.landmark_id, -1);
+}
+
+TEST(Rawlog, TruncatedFileIsReportedWithTheRecord) {
+  test::ScratchDir dir;
+  std::vector<ObservationFrame> frames;
+  std::vector<std::vector<int>> ids;
+  write_frames(dir / "r.rawlog", false, true, &frames, &ids);
+  const std::string bytes = test::read_file(dir / "r.rawlog");
+  test::write_file(dir / "cut.rawlog", bytes.substr(0, bytes.size() - 10));
+  const std::string e = error_reading(dir / "cut.rawlog");
+  EXPECT_NE(e.find("cut.rawlog:12: truncated: the file ends inside record 12"), std::string::npos) << e;
+}
+
+TEST(Rawlog, ForeignFilesAreRejectedWithoutCrashing) {
+  test::ScratchDir dir;
+  test::write_file(dir / "text.rawlog", "iteration,x,y,z\n0,1,2,3\n");
+  EXPECT_NE(error_reading(dir / "text.rawlog").find("not an MRPT rawlog"), std::string::npos);
+  test::write_file(dir / "empty.rawlog", "");
+  EXPECT_NE(error_reading(dir / "empty.rawlog").find("empty file"), std::string::npos);
+  std::string noise(4096, '\0');
+  sim::RandomSequence rng(5, sim::Stream::Field);
+  for (char& c : noise) c = static_cast<char>(rng.below(256));
+  noise[0] = static_cast<char>(0x85);  // an MRPT-looking first byte, then garbage
+  test::write_file(dir / "noise.rawlog", noise);
+  EXPECT_NE(error_reading(dir / "noise.rawlog").find("noise.rawlog:1: "), std::string::npos);
+  EXPECT_NE(error_reading(dir / "missing.rawlog").find("file not found"), std::string::npos);
+}
+
+TEST(Rawlog, HeaderLookingGarbageAfterTheFirstRecordIsAnError) {
+  test::ScratchDir dir;
+  std::vector<ObservationFrame> frames;
+  std::vector<std::vector<int>> ids;
+  write_frames(dir / "r.rawlog", false, true, &frames, &ids, 2);
+  std::string bytes = test::read_file(dir / "r.rawlog");
+  bytes += std::string("\x8D" "CNotAClassXYZ", 14) + std::string(64, '\x01');
+  test::write_file(dir / "bad.rawlog", bytes);
+  EXPECT_NE(error_reading(dir / "bad.rawlog").find("bad.rawlog:5: unreadable record"), std::string::npos)
+      << error_reading(dir / "bad.rawlog");
+}
+
+// MRPT's simul-landmarks writes SF, action, SF, action...; kf-slam then drops the first SF.
+TEST(Rawlog, SensoryFrameFirstFilesKeepEveryFrameAndPairOdometryWithTheNextFrame) {
+  test::ScratchDir dir;
+  {
+    mrpt::io::CFileOutputStream out((dir / "sf_first.rawlog").string());
+    auto archive = mrpt::serialization::archiveFrom(out);
+    for (int k = 0; k < 3; ++k) {
+      mrpt::obs::CSensoryFrame sf;
+      auto obs = std::make_shared<mrpt::obs::CObservationBearingRange>();
+      obs->timestamp = mrpt::Clock::fromDouble(100.0 + k);
+      obs->sensedData.push_back({10.0f + k, 0.1f, 0.0f, 7, {}});
+      sf.insert(obs);
+      mrpt::obs::CActionCollection actions;
+      mrpt::obs::CActionRobotMovement2D move;
+      move.computeFromOdometry(mrpt::poses::CPose2D(1.0 + k, 0, 0), {});
+      actions.insert(move);
+      archive << sf << actions;
+    }
+  }
+  const Rawlog log = read_rawlog(dir / "sf_first.rawlog");
+  EXPECT_TRUE(log.sensory_frame_first);
+  ASSERT_EQ(log.frames.size(), 3u);
+  EXPECT_FALSE(log.frames[0].odometry.has_value());
+  ASSERT_TRUE(log.frames[1].odometry.has_value());
+  EXPECT_NEAR(log.frames[1].odometry->translation.x(), 1.0, 1e-9) << "the action after frame 0";
+  EXPECT_NEAR(log.frames[2].odometry->translation.x(), 2.0, 1e-9);
+  EXPECT_NEAR(log.frames[2].measurements[0].range, 12.0f, 1e-6);
+}
+
+TEST(Rawlog, ObservationOnlyFilesAreReadWithOdometryIncrements) {
+  test::ScratchDir dir;
+  {
+    mrpt::io::CFileOutputStream out((dir / "obs.rawlog").string());
+    auto archive = mrpt::serialization::archiveFrom(out);
+    for (int k = 0; k < 3; ++k) {
+      mrpt::obs::CObservationOdometry odo;
+      odo.odometry = mrpt::poses::CPose2D(2.0 * k, 0, 0);
+      archive << odo;
+      mrpt::obs::CObservationBearingRange obs;
+      obs.sensedData.push_back({5.0f, 0.0f, 0.0f, -1, {}});
+      archive << obs;
+    }
+  }
+  const Rawlog log = read_rawlog(dir / "obs.rawlog");
+  EXPECT_EQ(log.format, Rawlog::Format::ObservationsOnly);
+  ASSERT_EQ(log.frames.size(), 3u);
+  EXPECT_FALSE(log.frames[0].odometry.has_value());
+  EXPECT_NEAR(log.frames[2].odometry->translation.x(), 2.0, 1e-9);
+}
+
+TEST(Rawlog, SensorPoseOnTheRobotIsAppliedToThePoints) {
+  test::ScratchDir dir;
+  {
+    mrpt::io::CFileOutputStream out((dir / "offset.rawlog").string());
+    auto archive = mrpt::serialization::archiveFrom(out);
+    mrpt::obs::CObservationBearingRange obs;
+    obs.sensorLocationOnRobot = mrpt::poses::CPose3D(1.0, 0.5, 0.2, 0, 0, 0);  // x fwd, y left, z up
+    obs.sensedData.push_back({10.0f, 0.0f, 0.0f, -1, {}});                       // 10 ahead of the sensor
+    archive << obs;
+  }
+  const ObservationFrame f = observation_frame(read_rawlog(dir / "offset.rawlog").frames.at(0));
+  // Our robot frame: +x left, +y up, +z forward.
+  EXPECT_LT((f.points.at(0) - Eigen::Vector3d(0.5, 0.2, 11.0)).norm(), 1e-6);
+}
+
+TEST(Rawlog, FileWithoutBearingRangeObservationsIsAnError) {
+  test::ScratchDir dir;
+  {
+    mrpt::io::CFileOutputStream out((dir / "odo.rawlog").string());
+    auto archive = mrpt::serialization::archiveFrom(out);
+    mrpt::obs::CObservationOdometry odo;
+    archive << odo;
+  }
+  EXPECT_NE(error_reading(dir / "odo.rawlog").find("no CObservationBearingRange"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace relslam::eval

@@ -1,0 +1,174 @@
+#include "relslam/eval/scenario.hpp"
+
+#include "relslam/eval/scenario_keys.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+namespace relslam::eval {
+namespace {
+
+std::string error_of(const std::string& text, const std::vector<Override>& overrides = {}) {
+  try {
+    parse_scenario(text, "scenarios/t.json", overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(Scenario, EmptyObjectGivesTheDocumentedDefaults) {
+  const Scenario s = parse_scenario("{}", "scenarios/t.json").scenario;
+  EXPECT_EQ(s.name, "t");
+  EXPECT_EQ(s.seed, 1u);
+  EXPECT_EQ(s.sim.path, sim::PathKind::FigureEight);
+  EXPECT_EQ(s.sim.density, 100.0);
+  EXPECT_TRUE(s.algorithms.empty());
+}
+
+TEST(Scenario, FixedKeysReachTheirFields) {
+  const Scenario s = parse_scenario(R"({"seed": 9, "sim": {"path": "line", "loops": 2, "iterations": 500, "scale": 2,
+      "density": 25, "noise_sigma": 0.2, "dynamic": {"count": 0, "fraction": 0.03}}})",
+                                    "t.json")
+                         .scenario;
+  EXPECT_EQ(s.seed, 9u);
+  EXPECT_EQ(s.sim.path, sim::PathKind::Line);
+  EXPECT_EQ(s.sim.loops, 2);
+  EXPECT_EQ(s.sim.iterations, 500);
+  EXPECT_EQ(s.sim.scale, 2.0);
+  EXPECT_EQ(s.sim.density, 25.0);
+  EXPECT_EQ(s.sim.noise_sigma, 0.2);
+  EXPECT_EQ(s.sim.dynamic.fraction, 0.03);
+}
+
+TEST(Scenario, UnknownKeyNamesFileLineAndSuggestion) {
+  EXPECT_EQ(error_of("{\n  \"sim\": {\n    \"densty\": 100\n  }\n}"),
+            "scenarios/t.json:3: sim.densty: unknown key; did you mean \"sim.density\"? (relslam keys lists them all)");
+  EXPECT_EQ(error_of("{\"zzzz\": 1}"), "scenarios/t.json:1: zzzz: unknown key (relslam keys lists them all)");
+}
+
+TEST(Scenario, WrongTypeNamesTheKey) {
+  EXPECT_EQ(error_of("{\n\"sim\": {\"density\": \"many\"}}"),
+            "scenarios/t.json:2: sim.density: expected a number, got \"many\"");
+  EXPECT_EQ(error_of("{\"sim\": {\"loops\": 2.5}}"), "scenarios/t.json:1: sim.loops: expected an integer, got 2.5");
+  EXPECT_EQ(error_of("{\"sim\": {\"wobble\": 1}}"), "scenarios/t.json:1: sim.wobble: expected true or false, got 1");
+  EXPECT_EQ(error_of("{\"sim\": {\"path\": \"circle\"}}"),
+            "scenarios/t.json:1: sim.path: expected one of figure_eight, line, stationary, got \"circle\"");
+  EXPECT_EQ(error_of("{\"sim\": 3}"), "scenarios/t.json:1: sim: expected an object of keys, got 3");
+  EXPECT_EQ(error_of("[1, 2]"), "scenarios/t.json:1: a scenario must be a JSON object");
+  EXPECT_EQ(error_of("{\"seed\": -1}"), "scenarios/t.json:1: seed: expected an integer >= 0, got -1");
+}
+
+TEST(Scenario, NegativeDensityIsRejectedAtItsLine) {
+  EXPECT_EQ(error_of("{\n  \"sim\": {\n    \"density\": -5\n  }\n}"), "scenarios/t.json:3: sim.density: must be >= 0, got -5");
+}
+
+TEST(Scenario, IntegralFloatsAreIntegersAndNullClearsIterations) {
+  const Scenario s = parse_scenario(R"({"sim": {"loops": 3.0, "iterations": null}})", "t.json").scenario;
+  EXPECT_EQ(s.sim.loops, 3);
+  EXPECT_FALSE(s.sim.iterations.has_value());
+}
+
+TEST(Scenario, DegreeKeysAreStoredInRadians) {
+  const Scenario s = parse_scenario(R"({"sim": {"frustum": {"half_angle_deg": 30}}})", "t.json").scenario;
+  EXPECT_NEAR(s.sim.frustum.half_angle_rad, std::numbers::pi / 6, 1e-15);
+  EXPECT_NEAR(to_json(s)["sim"]["frustum"]["half_angle_deg"].get<double>(), 30.0, 1e-12);
+}
+
+TEST(Scenario, OverridesApplyInOrderWithTheirOwnTypes) {
+  const Scenario s = parse_scenario("{}", "t.json",
+                                    {{"sim.density", "50"}, {"sim.path", "line"}, {"sim.wobble", "true"},
+                                     {"sim.iterations", "77"}, {"sim.density", "60"}, {"name", "123"}})
+                         .scenario;
+  EXPECT_EQ(s.sim.density, 60.0);
+  EXPECT_EQ(s.sim.path, sim::PathKind::Line);
+  EXPECT_TRUE(s.sim.wobble);
+  EXPECT_EQ(s.sim.iterations, 77);
+  EXPECT_EQ(s.name, "123") << "string keys take the raw text";
+}
+
+TEST(Scenario, BadOverridesSayWhereTheyCameFrom) {
+  EXPECT_EQ(error_of("{}", {{"sim.density", "abc"}}), "--set: sim.density: expected a number, got \"abc\"");
+  EXPECT_EQ(error_of("{}", {{"sim.density", "-3"}}), "--set: sim.density: must be >= 0, got -3");
+  EXPECT_EQ(error_of("{}", {{"sim.scal", "1"}}), "--set: sim.scal: unknown key; did you mean \"sim.scale\"? (relslam keys lists them all)");
+  EXPECT_THROW(parse_override("sim.density"), InputError);
+  EXPECT_EQ(parse_override("a=b=c").value, "b=c");
+}
+
+TEST(Scenario, ChecksOfDefaultValuesSayTheValueIsADefault) {
+  // dynamic.count 2 with fraction from the file: the conflict is reported at the file's line.
+  EXPECT_EQ(error_of("{\n\"sim\": {\"dynamic\": {\n\"count\": 2,\n\"fraction\": 0.1}}}"),
+            "scenarios/t.json:4: sim.dynamic.fraction: set either dynamic.count or dynamic.fraction, not both");
+  // far below the default near: the message points at far's line.
+  EXPECT_EQ(error_of("{\"sim\": {\"frustum\": {\n\"far\": 0.5}}}"), "scenarios/t.json:2: sim.frustum.far: must be > frustum.near (1), got 0.5");
+}
+
+TEST(Scenario, SeveralProblemsAreReportedTogether) {
+  const std::string e = error_of("{\n\"sim\": {\n\"density\": -1,\n\"noise_sigma\": -2}}");
+  EXPECT_NE(e.find("scenarios/t.json:3: sim.density: must be >= 0, got -1"), std::string::npos) << e;
+  EXPECT_NE(e.find("2 problems in all"), std::string::npos) << e;
+  EXPECT_NE(e.find("scenarios/t.json:4: sim.noise_sigma: must be >= 0, got -2"), std::string::npos) << e;
+}
+
+TEST(Scenario, SweepAxesAreCheckedAgainstTheirKeys) {
+  const Scenario s = parse_scenario(R"({"sweep": {"sim.density": [100, 150]}})", "t.json").scenario;
+  ASSERT_EQ(s.sweep.size(), 1u);
+  EXPECT_EQ(s.sweep[0].key, "sim.density");
+  EXPECT_EQ(s.sweep[0].values.size(), 2u);
+  EXPECT_EQ(error_of("{\"sweep\": {\"sim.density\": [100, \"x\"]}}"),
+            "scenarios/t.json:1: sweep.sim.density: expected a number, got \"x\"");
+  EXPECT_EQ(error_of("{\"sweep\": {\"sim.bogus\": [1]}}"), "scenarios/t.json:1: sweep.sim.bogus: not a key that can be swept");
+  EXPECT_EQ(error_of("{\"sweep\": {\"sim.density\": []}}"),
+            "scenarios/t.json:1: sweep.sim.density: expected a non-empty list of values");
+}
+
+TEST(Scenario, UnknownAlgorithmIsRejected) {
+  EXPECT_NE(error_of(R"({"algorithms": ["nope"]})").find("algorithms: unknown algorithm \"nope\""), std::string::npos);
+  EXPECT_EQ(error_of(R"({"algorithms": "x"})"), "scenarios/t.json:1: algorithms: expected a list of algorithm names, got \"x\"");
+}
+
+TEST(Scenario, ToJsonRoundTripsEveryKey) {
+  Scenario s = parse_scenario(R"({"seed": 5, "sim": {"path": "stationary", "iterations": 40, "wobble": true,
+      "frustum": {"half_angle_deg": 33, "far_cap": "range"}, "dynamic": {"fraction": 0.1}},
+      "output": {"rawlog_gzip": true}, "sweep": {"sim.noise_sigma": [0, 0.2]}})",
+                              "t.json")
+                   .scenario;
+  const nlohmann::json first = to_json(s);
+  const nlohmann::json second = to_json(parse_scenario(first.dump(), "t.json").scenario);
+  EXPECT_EQ(first, second);
+  EXPECT_EQ(first["sim"]["path"], "stationary");
+  EXPECT_EQ(first["sim"]["frustum"]["far_cap"], "range");
+}
+
+TEST(Scenario, EveryScenarioFileLoadsWithItsOwnName) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenarios"))) {
+    if (entry.path().extension() != ".json") continue;
+    const LoadedScenario loaded = load_scenario(entry.path());
+    EXPECT_EQ(loaded.scenario.name, entry.path().stem().string());
+    EXPECT_FALSE(loaded.scenario.description.empty()) << entry.path();
+    ++files;
+  }
+  EXPECT_GE(files, 14);
+}
+
+TEST(ScenarioKeys, FixedKeyNamesExist) {
+  for (const char* key : {"seed", "sim.path", "sim.loops", "sim.iterations", "sim.scale", "sim.density",
+                          "sim.noise_sigma", "sim.dynamic.count", "sim.dynamic.fraction", "algorithms"})
+    EXPECT_NE(find_scenario_key(key), nullptr) << key;
+}
+
+TEST(ScenarioKeys, ReadmeTableIsGeneratedFromTheRegistry) {
+  const std::string readme = test::read_file(test::source_path("README.md"));
+  const std::string begin = "<!-- scenario-keys:begin (relslam keys --markdown) -->\n", end = "<!-- scenario-keys:end -->";
+  const auto a = readme.find(begin), b = readme.find(end);
+  ASSERT_NE(a, std::string::npos) << "README.md lacks the scenario-keys block";
+  ASSERT_NE(b, std::string::npos);
+  EXPECT_EQ(readme.substr(a + begin.size(), b - a - begin.size()), scenario_keys_markdown())
+      << "README.md's key table is stale: replace it with the output of `relslam keys --markdown`";
+}
+
+}  // namespace
+}  // namespace relslam::eval

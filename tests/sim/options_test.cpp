@@ -1,0 +1,55 @@
+#include "relslam/sim/options.hpp"
+
+#include <gtest/gtest.h>
+
+namespace relslam::sim {
+namespace {
+
+TEST(SimOptions, DefaultsAreValid) { EXPECT_TRUE(check(SimOptions{}).empty()); }
+
+TEST(SimOptions, EachViolationNamesItsField) {
+  SimOptions o;
+  o.density = -1;
+  o.noise_sigma = -0.1;
+  o.frustum.far = 0.5;  // below near
+  o.dynamic.count = 2;
+  o.dynamic.fraction = 0.1;
+  std::vector<std::string> fields;
+  for (const OptionIssue& issue : check(o)) fields.push_back(issue.field);
+  EXPECT_EQ(fields, (std::vector<std::string>{"density", "noise_sigma", "frustum.far", "dynamic.fraction"}));
+}
+
+TEST(SimOptions, NegativeDensityMessageGivesTheBoundAndTheValue) {
+  SimOptions o;
+  o.density = -5;
+  const auto issues = check(o);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].problem, "must be >= 0, got -5");
+}
+
+TEST(SimOptions, AbsurdSizesAreRejectedBeforeAnythingIsAllocated) {
+  SimOptions o;
+  o.density = 1e9;
+  ASSERT_EQ(check(o).size(), 1u);
+  EXPECT_EQ(check(o)[0].field, "density");
+  SimOptions p;
+  p.loops = 1'000'000;
+  ASSERT_EQ(check(p).size(), 1u);
+  EXPECT_EQ(check(p)[0].field, "loops");
+}
+
+TEST(SimOptions, NanIsRejected) {
+  SimOptions o;
+  o.noise_sigma = std::nan("");
+  ASSERT_EQ(check(o).size(), 1u);
+  EXPECT_EQ(check(o)[0].field, "noise_sigma");
+}
+
+TEST(SimOptions, PathNamesRoundTrip) {
+  for (PathKind kind : {PathKind::FigureEight, PathKind::Line, PathKind::Stationary})
+    EXPECT_EQ(parse_path_kind(to_string(kind)), kind);
+  EXPECT_FALSE(parse_path_kind("circle"));
+}
+
+}  // namespace
+}  // namespace relslam::sim

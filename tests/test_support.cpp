@@ -1,0 +1,62 @@
+#include "test_support.hpp"
+
+#include "relslam/eval/app.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace relslam::test {
+
+ScratchDir::ScratchDir() {
+  static std::atomic<int> counter{0};
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "relslam";
+  path_ = std::filesystem::temp_directory_path() /
+          ("relslam-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + "-" + name);
+  std::filesystem::remove_all(path_);
+  std::filesystem::create_directories(path_);
+}
+
+ScratchDir::~ScratchDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+std::vector<std::string> read_lines(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::filesystem::path source_path(const std::string& relative) { return std::filesystem::path(RELSLAM_SOURCE_DIR) / relative; }
+
+CliResult run_relslam(const std::vector<std::string>& arguments) {
+  std::vector<const char*> argv = {"relslam"};
+  for (const std::string& a : arguments) argv.push_back(a.c_str());
+  CliResult result;
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  result.exit_code = eval::run_cli(static_cast<int>(argv.size()), argv.data());
+  result.out = ::testing::internal::GetCapturedStdout();
+  result.err = ::testing::internal::GetCapturedStderr();
+  return result;
+}
+
+}  // namespace relslam::test

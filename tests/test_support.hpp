@@ -1,0 +1,38 @@
+#pragma once
+// Helpers shared by the test programs: scratch folders, file reading, in-process CLI runs.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace relslam::test {
+
+// A fresh empty folder under the system temp dir, removed when the object dies.
+class ScratchDir {
+ public:
+  ScratchDir();
+  ~ScratchDir();
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::string read_file(const std::filesystem::path& path);
+void write_file(const std::filesystem::path& path, const std::string& text);
+std::vector<std::string> read_lines(const std::filesystem::path& path);
+// Path of a file in the source tree (RELSLAM_SOURCE_DIR is set by CMake).
+std::filesystem::path source_path(const std::string& relative);
+
+// Runs the relslam command line in-process; stdout and stderr are captured.
+struct CliResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+CliResult run_relslam(const std::vector<std::string>& arguments);
+
+}  // namespace relslam::test
