@@ -1,6 +1,7 @@
 #include "relslam/eval/app.hpp"
 
 #include "relslam/eval/build_info.hpp"
+#include "relslam/eval/commands/rawlog_info.hpp"
 #include "relslam/eval/commands/simulate.hpp"
 #include "relslam/eval/input_error.hpp"
 #include "relslam/eval/scenario_keys.hpp"
@@ -23,6 +24,7 @@ Examples:
   relslam simulate scenarios/s-f8.json --out runs/f8
   relslam simulate scenarios/s-f8.json --out runs/f8-dense --set sim.density=550
   relslam scenario scenarios/s-dyn.json --set sim.dynamic.count=3
+  relslam rawlog runs/f8/observations.rawlog --csv runs/f8/from_rawlog.csv
 
 Exit codes: 0 ok, 2 bad input (the message names the file, line and key), 1 internal error.)";
 
@@ -55,6 +57,8 @@ int run_cli(int argc, const char* const* argv) {
   add_simulate(app, simulate);
   ScenarioArgs scenario;
   add_scenario(app, scenario);
+  RawlogArgs rawlog;
+  add_rawlog(app, rawlog);
   bool markdown = false;
   CLI::App* keys = app.add_subcommand("keys", "List every scenario key with its type, default and meaning");
   keys->add_flag("--markdown", markdown, "Markdown table (the one in README.md)");
@@ -69,6 +73,7 @@ int run_cli(int argc, const char* const* argv) {
   try {
     if (app.got_subcommand("simulate")) return run_simulate(simulate, command_line);
     if (app.got_subcommand("scenario")) return run_scenario(scenario);
+    if (app.got_subcommand("rawlog")) return run_rawlog(rawlog);
     if (app.got_subcommand("keys")) {
       if (markdown) {
         std::cout << scenario_keys_markdown();

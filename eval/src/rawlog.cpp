@@ -18,6 +18,7 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <array>
+#include <cmath>
 #include <cctype>
 #include <fstream>
 
@@ -42,13 +43,23 @@ std::optional<Rigid3> odometry_of(const CActionCollection& actions) {
   return std::nullopt;
 }
 
-RawlogFrame frame_of(const CObservationBearingRange& obs, int index) {
+// A NaN or infinite measurement would poison every estimate downstream; reject it here,
+// naming the record and the measurement, instead of producing silently wrong numbers.
+RawlogFrame frame_of(const CObservationBearingRange& obs, int index, const std::string& file, int record) {
   RawlogFrame frame;
   frame.index = index;
   frame.timestamp_s = mrpt::Clock::toDouble(obs.timestamp);
   frame.robot_T_sensor = rigid_of(obs.sensorLocationOnRobot);
   frame.measurements.reserve(obs.sensedData.size());
-  for (const auto& m : obs.sensedData) frame.measurements.push_back({m.range, m.yaw, m.pitch, m.landmarkID});
+  for (std::size_t i = 0; i < obs.sensedData.size(); ++i) {
+    const auto& m = obs.sensedData[i];
+    const std::string field = "sensedData[" + std::to_string(i) + "]";
+    if (!std::isfinite(m.range) || !std::isfinite(m.yaw) || !std::isfinite(m.pitch))
+      throw InputError(file, record, field, "range/yaw/pitch must be finite, got " + std::to_string(m.range) + "/" +
+                                                std::to_string(m.yaw) + "/" + std::to_string(m.pitch));
+    if (m.range < 0) throw InputError(file, record, field, "negative range " + std::to_string(m.range));
+    frame.measurements.push_back({m.range, m.yaw, m.pitch, m.landmarkID});
+  }
   return frame;
 }
 
@@ -123,13 +134,13 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
         continue;
       }
       log.skipped_observations += static_cast<int>(sf->size()) - 1;
-      RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()));
+      RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()), name, record);
       frame.odometry = pending_odometry;
       pending_odometry.reset();
       log.frames.push_back(std::move(frame));
     } else if (auto obs = std::dynamic_pointer_cast<CObservationBearingRange>(object)) {
       log.format = Rawlog::Format::ObservationsOnly;
-      RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()));
+      RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()), name, record);
       frame.odometry = pending_odometry;
       pending_odometry.reset();
       log.frames.push_back(std::move(frame));

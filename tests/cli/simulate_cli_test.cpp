@@ -163,3 +163,33 @@ TEST(Cli, ScenarioCommandPrintsTheResolvedScenario) {
 
 }  // namespace
 }  // namespace relslam
+
+namespace relslam {
+namespace {
+
+TEST(RawlogCommand, SummarisesAndExportsASimulatedRawlog) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_relslam(simulate_args(dir / "run")).exit_code, 0);
+  const auto r = test::run_relslam({"rawlog", (dir / "run/observations.rawlog").string(), "--csv", (dir / "o.csv").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("actions/sensory frames, action first"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("120 frames in 240 records"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("landmark ids: all known"), std::string::npos) << r.out;
+  EXPECT_EQ(test::read_lines(dir / "o.csv").size(), test::read_lines(dir / "run/observations.csv").size());
+}
+
+TEST(RawlogCommand, TruncatedOrForeignFilesExitWithTwo) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_relslam(simulate_args(dir / "run")).exit_code, 0);
+  const std::string bytes = test::read_file(dir / "run/observations.rawlog");
+  test::write_file(dir / "cut.rawlog", bytes.substr(0, bytes.size() / 2));
+  auto r = test::run_relslam({"rawlog", (dir / "cut.rawlog").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("truncated: the file ends inside record"), std::string::npos) << r.err;
+  r = test::run_relslam({"rawlog", (dir / "run/observations.csv").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("not an MRPT rawlog"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace relslam

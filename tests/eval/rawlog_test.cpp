@@ -216,3 +216,26 @@ TEST(Rawlog, FileWithoutBearingRangeObservationsIsAnError) {
 
 }  // namespace
 }  // namespace relslam::eval
+
+namespace relslam::eval {
+namespace {
+
+TEST(Rawlog, NonFiniteMeasurementsAreRejectedWithRecordAndIndex) {
+  test::ScratchDir dir;
+  {
+    mrpt::io::CFileOutputStream out((dir / "nan.rawlog").string());
+    auto archive = mrpt::serialization::archiveFrom(out);
+    mrpt::obs::CActionCollection actions;
+    mrpt::obs::CSensoryFrame sf;
+    auto obs = std::make_shared<mrpt::obs::CObservationBearingRange>();
+    obs->sensedData.push_back({5.0f, 0.0f, 0.0f, 1, {}});
+    obs->sensedData.push_back({std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f, 2, {}});
+    sf.insert(obs);
+    archive << actions << sf;
+  }
+  const std::string e = error_reading(dir / "nan.rawlog");
+  EXPECT_NE(e.find("nan.rawlog:2: sensedData[1]: range/yaw/pitch must be finite"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace relslam::eval
