@@ -30,109 +30,114 @@ std::string shown(const json& value) {
 
 std::string expected(const std::string& what, const json& value) { return "expected " + what + ", got " + shown(value); }
 
-std::optional<long long> as_integer(const json& v) {
-  if (v.is_number_integer()) return v.get<long long>();
-  if (v.is_number_float()) {
-    const double d = v.get<double>();
-    if (std::isfinite(d) && d == std::floor(d) && std::abs(d) < 9.0e15) return static_cast<long long>(d);
-  }
-  return std::nullopt;
-}
-
-template <auto... Path>
-ScenarioKey number(std::string key, std::string help) {
-  return {std::move(key), "number", std::move(help), false,
-          [](const Scenario& s) { return json(member<Path...>(s)); },
-          [](Scenario& s, const json& v) -> std::string {
-            if (!v.is_number()) return expected("a number", v);
-            member<Path...>(s) = v.get<double>();
-            return "";
-          }};
+// Parsers turn a JSON value into a field value, or say what is wrong with it.
+std::string parse_number(const json& v, double& out) {
+  if (!v.is_number()) return expected("a number", v);
+  out = v.get<double>();
+  return "";
 }
 
 // Stored in radians, written and read in degrees (style.md 2.4: units convert at the boundary).
+std::string parse_degrees(const json& v, double& out) {
+  if (!v.is_number()) return expected("a number", v);
+  out = v.get<double>() * std::numbers::pi / 180.0;
+  return "";
+}
+json show_degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+
+// Integral floats (3800.0) are integers; 2.5 is not.
+std::string parse_integer(const json& v, int& out) {
+  double d = 0;
+  if (v.is_number_integer() || v.is_number_unsigned())
+    d = static_cast<double>(v.get<long long>());
+  else if (v.is_number_float() && std::isfinite(v.get<double>()) && v.get<double>() == std::floor(v.get<double>()))
+    d = v.get<double>();
+  else
+    return expected("an integer", v);
+  if (d < std::numeric_limits<int>::min() || d > std::numeric_limits<int>::max()) return "integer out of range: " + shown(v);
+  out = static_cast<int>(d);
+  return "";
+}
+
+std::string parse_optional_integer(const json& v, std::optional<int>& out) {
+  if (v.is_null()) {
+    out.reset();
+    return "";
+  }
+  int i = 0;
+  const std::string problem = parse_integer(v, i);
+  if (!problem.empty()) return v.is_number() ? problem : expected("an integer or null", v);
+  out = i;
+  return "";
+}
+json show_optional_integer(const std::optional<int>& v) { return v ? json(*v) : json(nullptr); }
+
+std::string parse_boolean(const json& v, bool& out) {
+  if (!v.is_boolean()) return expected("true or false", v);
+  out = v.get<bool>();
+  return "";
+}
+
+std::string parse_text(const json& v, std::string& out) {
+  if (!v.is_string()) return expected("a string", v);
+  out = v.get<std::string>();
+  return "";
+}
+
+// The one way a key is bound to a field: `parse` writes the field only when the value is good.
+template <auto... Path, class Parse, class Show>
+ScenarioKey bind(std::string key, std::string type, std::string help, bool text_value, Parse parse, Show show) {
+  return {std::move(key), std::move(type), std::move(help), text_value,
+          [show](const Scenario& s) { return json(show(member<Path...>(s))); },
+          [parse](Scenario& s, const json& v) -> std::string {
+            auto value = member<Path...>(s);
+            std::string problem = parse(v, value);
+            if (problem.empty()) member<Path...>(s) = std::move(value);
+            return problem;
+          }};
+}
+
+constexpr auto as_is = [](const auto& field) { return json(field); };
+
+template <auto... Path>
+ScenarioKey number(std::string key, std::string help) {
+  return bind<Path...>(std::move(key), "number", std::move(help), false, parse_number, as_is);
+}
 template <auto... Path>
 ScenarioKey degrees(std::string key, std::string help) {
-  return {std::move(key), "number (degrees)", std::move(help), false,
-          [](const Scenario& s) { return json(member<Path...>(s) * 180.0 / std::numbers::pi); },
-          [](Scenario& s, const json& v) -> std::string {
-            if (!v.is_number()) return expected("a number", v);
-            member<Path...>(s) = v.get<double>() * std::numbers::pi / 180.0;
-            return "";
-          }};
+  return bind<Path...>(std::move(key), "number (degrees)", std::move(help), false, parse_degrees, show_degrees);
 }
-
 template <auto... Path>
 ScenarioKey integer(std::string key, std::string help) {
-  return {std::move(key), "integer", std::move(help), false,
-          [](const Scenario& s) { return json(member<Path...>(s)); },
-          [](Scenario& s, const json& v) -> std::string {
-            const auto i = as_integer(v);
-            if (!i) return expected("an integer", v);
-            if (*i < std::numeric_limits<int>::min() || *i > std::numeric_limits<int>::max())
-              return "integer out of range: " + shown(v);
-            member<Path...>(s) = static_cast<int>(*i);
-            return "";
-          }};
+  return bind<Path...>(std::move(key), "integer", std::move(help), false, parse_integer, as_is);
 }
-
 template <auto... Path>
 ScenarioKey optional_integer(std::string key, std::string help) {
-  return {std::move(key), "integer or null", std::move(help), false,
-          [](const Scenario& s) {
-            const auto& field = member<Path...>(s);
-            return field ? json(*field) : json(nullptr);
-          },
-          [](Scenario& s, const json& v) -> std::string {
-            if (v.is_null()) {
-              member<Path...>(s).reset();
-              return "";
-            }
-            const auto i = as_integer(v);
-            if (!i) return expected("an integer or null", v);
-            if (*i < std::numeric_limits<int>::min() || *i > std::numeric_limits<int>::max())
-              return "integer out of range: " + shown(v);
-            member<Path...>(s) = static_cast<int>(*i);
-            return "";
-          }};
+  return bind<Path...>(std::move(key), "integer or null", std::move(help), false, parse_optional_integer,
+                       show_optional_integer);
 }
-
 template <auto... Path>
 ScenarioKey boolean(std::string key, std::string help) {
-  return {std::move(key), "true or false", std::move(help), false,
-          [](const Scenario& s) { return json(member<Path...>(s)); },
-          [](Scenario& s, const json& v) -> std::string {
-            if (!v.is_boolean()) return expected("true or false", v);
-            member<Path...>(s) = v.get<bool>();
-            return "";
-          }};
+  return bind<Path...>(std::move(key), "true or false", std::move(help), false, parse_boolean, as_is);
 }
-
 template <auto... Path>
 ScenarioKey text(std::string key, std::string help) {
-  return {std::move(key), "string", std::move(help), true,
-          [](const Scenario& s) { return json(member<Path...>(s)); },
-          [](Scenario& s, const json& v) -> std::string {
-            if (!v.is_string()) return expected("a string", v);
-            member<Path...>(s) = v.get<std::string>();
-            return "";
-          }};
+  return bind<Path...>(std::move(key), "string", std::move(help), true, parse_text, as_is);
 }
 
 // An enum spelled by name; ToString/Parse are the enum's own conversions.
 template <auto ToString, auto Parse, auto... Path>
-ScenarioKey choice(std::string key, std::string help, std::vector<std::string> names) {
+ScenarioKey choice(std::string key, std::string help, const std::vector<std::string>& names) {
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-  return {std::move(key), "one of: " + list, std::move(help), true,
-          [](const Scenario& s) { return json(std::string(ToString(member<Path...>(s)))); },
-          [list](Scenario& s, const json& v) -> std::string {
-            if (!v.is_string()) return expected("one of " + list, v);
-            const auto parsed = Parse(v.get<std::string>());
-            if (!parsed) return expected("one of " + list, v);
-            member<Path...>(s) = *parsed;
-            return "";
-          }};
+  auto parse = [list](const json& v, auto& out) -> std::string {
+    const auto parsed = v.is_string() ? Parse(v.get<std::string>()) : std::nullopt;
+    if (!parsed) return expected("one of " + list, v);
+    out = *parsed;
+    return "";
+  };
+  return bind<Path...>(std::move(key), "one of: " + list, std::move(help), true, parse,
+                       [](const auto& field) { return json(std::string(ToString(field))); });
 }
 
 std::string_view kind_name(ScenarioKind kind) {
