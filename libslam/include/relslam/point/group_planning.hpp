@@ -1,0 +1,46 @@
+#pragma once
+// Choosing an RltGroup's members and basis (thesis 6.4.3 steps 1–4 and 6, spec 5.6).
+
+#include "relslam/point/options.hpp"
+#include "relslam/point/rlt_group.hpp"
+#include "relslam/point/rlt_point_charting.hpp"
+#include "relslam/point/rlt_ungrouped_list.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace relslam::point {
+
+struct GroupPlan {
+  std::vector<PointId> members;  // previously mapped ones first, then new ones; each by count, most first
+  std::vector<bool> anchor;      // previously mapped: registration sources, never rewritten
+  std::array<int, 3> basis{};
+  bool root = false;
+};
+
+// What the planner needs to know about the map at one level.
+struct LevelContext {
+  GroupLevel level = GroupLevel::Temporary;
+  const GroupLevelOptions* options = nullptr;
+  const RltUngroupedList* ungrouped = nullptr;  // this level's list
+  bool level_mapped = false;  // some point is already mapped at this level (else a root group may form)
+  int first_iteration = 0;
+};
+
+class GroupPlanner {
+ public:
+  // The group for ungrouped point c whose visible run began at c0, planned at iteration k;
+  // nothing when c is not a good point for this level (too few previously mapped or new points,
+  // c itself too rarely seen, or no usable basis).
+  std::optional<GroupPlan> plan(PointId c, int c0, int k, const LevelContext& level, const std::vector<RltPoint>& points,
+                                RltPointCharting& charting, BasisSelection selection, double min_basis_ratio);
+
+ private:
+  bool previously_mapped(const RltPoint& p, const LevelContext& level, int c0) const;
+  std::vector<Eigen::Vector3d> basis_positions(const std::vector<PointId>& members, const std::vector<RltPoint>& points,
+                                               int c0, int k) const;
+  std::vector<PointId> scratch_;
+  std::vector<std::pair<int, PointId>> ranked_;
+};
+
+}  // namespace relslam::point

@@ -1,0 +1,89 @@
+#pragma once
+// Every constant of the Relative Point algorithm, with its default and its source.
+// Tags: [T] thesis-stated, [I] inferred, [C] chosen (../shared/specs/relative_point.md §5.14).
+
+#include "relslam/core/option_issue.hpp"
+#include "relslam/point/basis.hpp"
+
+#include <vector>
+
+namespace relslam::point {
+
+// One level of group creation (thesis 6.4.3, 6.5.5): when an ungrouped RltPoint c first seen at
+// c0 becomes ready (look_ahead iterations later), a group is formed from up to prev_max
+// already-mapped points and the still-ungrouped points seen around c0.
+struct GroupLevelOptions {
+  int look_ahead = 60;  // iterations waited after c0; also the window [c0, c0+A] of new members
+  int look_back = 60;   // previously mapped candidates come from [c0-B, c0+A]
+  // A candidate needs look_ahead - accuracy_reduction observations in [c0, c0+A]: points first
+  // seen more than this many iterations after c0 get their own group (thesis 6.5.5).
+  int accuracy_reduction = 10;
+  int prev_min = 20;  // fewer previously mapped candidates: c is not a good point, no group
+  int prev_max = 20;  // the best (most observed) previously mapped candidates kept
+  int next_min = 1;   // ungrouped members needed, c included; 1 is the thesis's best (Fig 125)
+};
+
+// Temporary level: a short look-ahead so new points are mapped within a few iterations
+// (thesis 6.5.5 "a few iterations") [C values, spec A11].
+inline GroupLevelOptions temporary_level_defaults() { return {10, 10, 2, 6, 20, 1}; }
+// Final level: the thesis's constants, with NextGroupMin at its best value 1 [T].
+inline GroupLevelOptions final_level_defaults() { return {60, 60, 10, 20, 20, 1}; }
+
+struct PointSlamOptions {
+  // Local matching compares with the latest observation of points seen in the last
+  // match_look_back iterations ("a few", thesis 6.2.3) [C].
+  int match_look_back = 3;
+  // Local matching bound, units: above the largest motion of a static point between frames
+  // (0.52 on the figure eight) plus noise [C, spec A9].
+  double local_bound = 1.2;
+  // Deviation (beyond the thesis): predict where each local candidate is now from the recent
+  // frame-to-frame motion (itself fitted to the matches, no pose or odometry involved), fit the
+  // motion to a first matching pass and match again within compensated_bound. Off: the
+  // thesis's single uncompensated pass with local_bound.
+  bool compensate_motion = true;
+  // Second-pass bound, units: the residual is then noise only, two observations' worth
+  // (|n1 - n2| ~ 0.14·chi3 for sigma 0.1: 1.0 misses one correct pair in ~1e10) [C]. Within
+  // it the closest pair still wins; a smaller bound also stops a new landmark from taking the
+  // place of a vanished neighbour (noise-free runs can use a tiny one).
+  double compensated_bound = 1.0;
+  // Global matching bound, units: room for the map error accumulated since a place was last
+  // seen (loop closure) [C, spec A9].
+  double global_bound = 2.0;
+  // Local OVLPQuadTree cell, units; the thesis's "small quads" variant uses 1.5 [C, A32].
+  // Must be at least local_bound (the cell overlap).
+  double local_cell_size = 5.0;
+  // Global (incremental) grid cell, units; at least global_bound [C, A32].
+  double global_cell_size = 4.0;
+
+  GroupLevelOptions temporary_group = temporary_level_defaults();
+  GroupLevelOptions final_group = final_level_defaults();
+
+  // Basis choice (thesis 6.5.4); FirstThree reproduces the early version of Fig 119.
+  BasisSelection basis = BasisSelection::Farthest;
+  // A basis whose third point is closer than this share of |B0 B1| to their line is rejected
+  // (nearly collinear: noise then dominates the frame) [C].
+  double min_basis_ratio = 1e-3;
+
+  // Every so many iterations, temporary groups whose members are all in final groups are
+  // deleted: they no longer map anything (thesis 6.5.5) [C period].
+  int temporary_cleanup_period = 50;
+
+  // Deviation (beyond the thesis): an RltPoint no group has mapped yet (seen too briefly) gets
+  // a provisional position from the current pose, so global matching recognises it when it is
+  // seen again instead of starting a duplicate. The thesis matches mapped points only.
+  bool match_unmapped = true;
+  // Deviation (beyond the thesis): when fewer than 3 mapped points are visible (the first
+  // iterations, before any group exists), the pose is registered to the provisional positions
+  // instead of being held, so every iteration has a pose.
+  bool pose_from_unmapped = true;
+
+  // Observations kept per RltPoint (ring buffer) and iterations kept by RltPointCharting;
+  // both must cover the final level's look_back + look_ahead [C, spec A26].
+  int ring_capacity = 1024;
+  int charting_capacity = 512;
+};
+
+// Every violated constraint, fields named as in the struct ("final_group.prev_min").
+std::vector<OptionIssue> check(const PointSlamOptions& options);
+
+}  // namespace relslam::point

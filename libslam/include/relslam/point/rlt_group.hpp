@@ -1,0 +1,71 @@
+#pragma once
+// RltGroup (thesis 6.3.3): a fixed set of RltPoints seen together and their averaged
+// positions in the frame of three basis points.
+
+#include "relslam/core/rigid.hpp"
+#include "relslam/point/basis.hpp"
+#include "relslam/point/rlt_interval.hpp"
+#include "relslam/point/rlt_point.hpp"
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace relslam::point {
+
+enum class GroupLevel : unsigned char {
+  Temporary,  // short look-ahead: maps new points quickly (thesis 6.5.5)
+  Final,      // long look-ahead: the groups the map's accuracy rests on
+};
+
+// Invariant: members, anchor flags and basis never change after construction (a change means a
+// new group, thesis 6.3.3), so running sums stay valid; sums only ever include iterations in
+// which every member was observed.
+class RltGroup {
+ public:
+  RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vector<PointId> members, std::vector<bool> anchor,
+           std::array<int, 3> basis, bool root);
+
+  // Adds every iteration in [from, to] not yet used in which all members were observed
+  // (thesis 6.3.3 steps 1–2); an iteration whose basis is degenerate is skipped. Returns
+  // whether anything was added. O(members) per iteration.
+  bool accumulate(const std::vector<RltPoint>& points, int from, int to, double basis_epsilon);
+
+  // world_T_group from the averaged positions (thesis 6.3.3 step 4): a root group registers
+  // the members seen at the first iteration to those first observations (the world frame is
+  // the first robot pose); any other group registers its anchors to their map positions.
+  // Nothing before the first accumulation or with fewer than 3 usable pairs.
+  std::optional<Rigid3> registration(const std::vector<RltPoint>& points, int first_iteration) const;
+
+  GroupId id() const { return id_; }
+  GroupLevel level() const { return level_; }
+  int c0() const { return c0_; }
+  int built_at() const { return built_at_; }
+  bool root() const { return root_; }
+  bool alive() const { return alive_; }
+  void retire() { alive_ = false; }
+  const std::vector<PointId>& members() const { return members_; }
+  bool anchor(int member) const { return anchor_[member]; }
+  const std::array<int, 3>& basis() const { return basis_; }
+  int iterations_used() const { return used_; }
+  const RltInterval& computed_on() const { return computed_on_; }
+  // Averaged position of a member in the basis frame; valid once iterations_used() > 0.
+  Eigen::Vector3d relative(int member) const { return sum_[member] / used_; }
+
+ private:
+  GroupId id_;
+  GroupLevel level_;
+  int c0_;
+  int built_at_;
+  std::vector<PointId> members_;
+  std::vector<bool> anchor_;
+  std::array<int, 3> basis_;
+  bool root_;
+  bool alive_ = true;
+  std::vector<Eigen::Vector3d> sum_;
+  int used_ = 0;
+  RltInterval computed_on_;
+  std::vector<const Point*> scratch_;  // one iteration's observations, reused
+};
+
+}  // namespace relslam::point

@@ -1,0 +1,121 @@
+#pragma once
+// RltMapper (thesis 6.4.3): the Relative Point SLAM algorithm, one iteration at a time.
+// Eigen only: no I/O, MRPT or JSON. Truth never enters.
+
+#include "relslam/core/observation.hpp"
+#include "relslam/core/rigid.hpp"
+#include "relslam/point/group_planning.hpp"
+#include "relslam/point/options.hpp"
+#include "relslam/point/point_matching.hpp"
+#include "relslam/point/rlt_group.hpp"
+#include "relslam/point/rlt_point.hpp"
+#include "relslam/point/rlt_point_charting.hpp"
+#include "relslam/point/rlt_ungrouped_list.hpp"
+#include "relslam/spatial/incremental_ovlp_quadtree.hpp"
+#include "relslam/spatial/ovlp_quadtree.hpp"
+
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace relslam::point {
+
+enum class PoseSource : unsigned char {
+  Start,          // the first iteration: the identity by definition (the map frame)
+  MappedPoints,   // RltICP of this iteration's observations to their map positions (thesis 6.1)
+  UnmappedPoints, // fewer than 3 mapped points visible: registered to provisional positions
+  Held,           // no registration possible: the previous pose is kept
+};
+
+// Wall time of the thesis's components (Figs 138–142), milliseconds.
+struct StepTimings {
+  double init_ms = 0;     // local candidates and the local OVLPQuadTree
+  double load_ms = 0;     // matching observations, creating RltPoints
+  double compute_ms = 0;  // group averages and RltICP anchoring
+  double create_ms = 0;   // group creation (and clean-up)
+  double pose_ms = 0;     // current position
+  double total_ms() const { return init_ms + load_ms + compute_ms + create_ms + pose_ms; }
+};
+
+struct StepResult {
+  int iteration = 0;
+  Rigid3 world_T_robot;
+  PoseSource pose_source = PoseSource::Start;
+  std::vector<PointId> assignment;  // RltPoint of each observation, in input order
+  std::vector<PointId> changed;     // RltPoints whose map position was set or moved this iteration
+  int new_points = 0;
+  int local_matches = 0;
+  int global_matches = 0;
+  int groups_created = 0;
+  StepTimings timings;
+};
+
+struct GroupStats {
+  int created = 0;          // every group ever built
+  int alive = 0;
+  int temporary_alive = 0;
+  int final_created = 0;    // final groups (never retired)
+};
+
+class RltMapper {
+ public:
+  // logic_error if check(options) finds a problem: callers validate user input first.
+  explicit RltMapper(const PointSlamOptions& options = {});
+
+  // One iteration (thesis 6.2–6.5 as ordered in spec 5.3). Iterations must increase; points
+  // are robot-frame observations in any order. The first frame defines the world frame.
+  StepResult step(const ObservationFrame& frame);
+
+  const std::vector<RltPoint>& points() const { return points_; }
+  const std::vector<RltGroup>& groups() const { return groups_; }
+  const Rigid3& pose() const { return pose_; }
+  GroupStats group_stats() const { return stats_; }
+  int first_iteration() const { return first_iteration_; }
+  // Empty while the run is healthy; otherwise why no map can ever be built.
+  const std::string& failure() const { return failure_; }
+  const PointSlamOptions& options() const { return options_; }
+
+ private:
+  void build_local_index(int k);
+  void record(PointId id, const Eigen::Vector3d& p, int k, bool returned);
+  PointId create_point(const Eigen::Vector3d& p, int k);
+  void compute_groups(int k);
+  void anchor(RltGroup& group);
+  void create_groups(int k, StepResult& result);
+  bool try_create(GroupLevel level, const RltUngroupedList::Entry& entry, int k);
+  void retire_redundant_temporary_groups(int k);
+  void update_pose(int k, StepResult& result);
+  void set_global(PointId id, const Eigen::Vector3d& g);
+  void mark_changed(PointId id);
+  RltUngroupedList& list(GroupLevel level) { return level == GroupLevel::Temporary ? temporary_list_ : final_list_; }
+  const GroupLevelOptions& level_options(GroupLevel level) const {
+    return level == GroupLevel::Temporary ? options_.temporary_group : options_.final_group;
+  }
+
+  PointSlamOptions options_;
+  std::vector<RltPoint> points_;
+  std::vector<RltGroup> groups_;
+  RltPointCharting charting_;
+  spatial::IncrementalOVLPQuadTree global_index_;
+  RltUngroupedList temporary_list_, final_list_;
+  PointMatcher matcher_;
+  GroupPlanner planner_;
+  std::deque<GroupId> temporary_to_review_;  // temporary groups in creation order, for clean-up
+
+  Rigid3 pose_;
+  int first_iteration_ = kNone;
+  int last_iteration_ = kNone;
+  bool any_mapped_ = false;
+  GroupStats stats_;
+  std::string failure_;
+
+  // Per-iteration scratch.
+  std::vector<PointId> scratch_ids_;
+  std::vector<LocalCandidate> local_candidates_;
+  std::vector<GroupId> queued_groups_;
+  std::vector<int> group_queued_at_;
+  std::vector<int> changed_at_;
+  std::vector<PointId>* changed_ = nullptr;
+};
+
+}  // namespace relslam::point

@@ -1,0 +1,45 @@
+#pragma once
+// The incremental OVLPQuadTree of thesis 6.5.1: points are inserted, moved and removed one at
+// a time, so global matching never reloads the whole map. Eigen only.
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace relslam::spatial {
+
+// The same overlapping-cell rule as OVLPQuadTree over x and z, on an unbounded sparse grid
+// (a hash map of cells: the map's extent is not known in advance, spec A33). Stores ids only;
+// callers test exact distances against the live positions they own.
+// Invariant: query(q) contains every stored id whose position (as last inserted or moved) is
+// within L∞ distance `overlap` of q in x and z.
+class IncrementalOVLPQuadTree {
+ public:
+  IncrementalOVLPQuadTree(double cell_size, double overlap);
+
+  // Inserts, or moves when the id is present. Ids are small non-negative integers.
+  void place(int id, const Eigen::Vector3d& p);
+  void remove(int id);
+  bool contains(int id) const;
+  const std::vector<int>& query(const Eigen::Vector3d& q) const;
+  std::size_t size() const { return count_; }
+
+ private:
+  struct Membership {
+    std::array<std::uint64_t, 9> cells{};
+    std::uint8_t count = 0;  // 0: not stored
+  };
+  Membership cells_of(const Eigen::Vector3d& p) const;
+  std::uint64_t key(std::int64_t ix, std::int64_t iz) const;
+
+  double cell_;
+  double overlap_;
+  std::unordered_map<std::uint64_t, std::vector<int>> cells_;
+  std::vector<Membership> members_;  // by id
+  std::size_t count_ = 0;
+};
+
+}  // namespace relslam::spatial

@@ -1,0 +1,63 @@
+#include "relslam/point/rlt_group.hpp"
+
+#include "relslam/point/rlt_icp.hpp"
+
+#include <stdexcept>
+
+namespace relslam::point {
+
+RltGroup::RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vector<PointId> members,
+                   std::vector<bool> anchor, std::array<int, 3> basis, bool root)
+    : id_(id),
+      level_(level),
+      c0_(c0),
+      built_at_(built_at),
+      members_(std::move(members)),
+      anchor_(std::move(anchor)),
+      basis_(basis),
+      root_(root),
+      sum_(members_.size(), Eigen::Vector3d::Zero()) {
+  if (anchor_.size() != members_.size()) throw std::logic_error("RltGroup: one anchor flag per member");
+  for (int b : basis_)
+    if (b < 0 || b >= static_cast<int>(members_.size())) throw std::logic_error("RltGroup: basis index out of range");
+}
+
+bool RltGroup::accumulate(const std::vector<RltPoint>& points, int from, int to, double basis_epsilon) {
+  bool added = false;
+  scratch_.resize(members_.size());
+  for (int t = from; t <= to; ++t) {
+    if (!computed_on_.empty() && t <= computed_on_.last() && computed_on_.contains(t)) continue;
+    bool all_present = true;
+    for (std::size_t i = 0; i < members_.size() && all_present; ++i) {
+      scratch_[i] = points[members_[i]].observations.at(t);
+      all_present = scratch_[i] != nullptr;
+    }
+    if (!all_present) continue;  // thesis 6.3.3: only iterations with every member observed
+    const auto frame = basis_frame(scratch_[basis_[0]]->p, scratch_[basis_[1]]->p, scratch_[basis_[2]]->p, basis_epsilon);
+    if (!frame) continue;
+    for (std::size_t i = 0; i < members_.size(); ++i) sum_[i] += (*frame)(scratch_[i]->p);
+    ++used_;
+    computed_on_.insert(t);
+    added = true;
+  }
+  return added;
+}
+
+std::optional<Rigid3> RltGroup::registration(const std::vector<RltPoint>& points, int first_iteration) const {
+  if (used_ == 0) return std::nullopt;
+  std::vector<Eigen::Vector3d> from, to;
+  for (std::size_t i = 0; i < members_.size(); ++i) {
+    const RltPoint& p = points[members_[i]];
+    if (root_) {
+      if (p.first_observation.iteration != first_iteration || p.dynamic || p.merged) continue;
+      from.push_back(relative(static_cast<int>(i)));
+      to.push_back(p.first_observation.p);  // robot frame at the first iteration = world frame
+    } else if (anchor_[i] && p.on_map()) {
+      from.push_back(relative(static_cast<int>(i)));
+      to.push_back(p.global);
+    }
+  }
+  return rlt_icp(from, to);
+}
+
+}  // namespace relslam::point

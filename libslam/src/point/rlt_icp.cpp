@@ -1,0 +1,40 @@
+#include "relslam/point/rlt_icp.hpp"
+
+#include <Eigen/SVD>
+
+namespace relslam::point {
+namespace {
+
+// Second singular value below this share of the first: the points lie on a line [C].
+constexpr double kCollinear = 1e-9;
+
+}  // namespace
+
+std::optional<Rigid3> rlt_icp(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
+  if (a.size() != b.size() || a.size() < 3) return std::nullopt;
+  Eigen::Vector3d mean_a = Eigen::Vector3d::Zero(), mean_b = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    mean_a += a[i];
+    mean_b += b[i];
+  }
+  mean_a /= static_cast<double>(a.size());
+  mean_b /= static_cast<double>(b.size());
+  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < a.size(); ++i) h += (a[i] - mean_a) * (b[i] - mean_b).transpose();
+
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::Vector3d s = svd.singularValues();
+  if (!(s[0] > 0) || s[1] < kCollinear * s[0]) return std::nullopt;
+  const Eigen::Matrix3d& u = svd.matrixU();
+  const Eigen::Matrix3d& v = svd.matrixV();
+  // Reflection fix: a proper rotation even when the best orthogonal fit is a mirror, which
+  // happens for planar sets (the third singular vector's sign is then arbitrary).
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  d(2, 2) = (v * u.transpose()).determinant() < 0 ? -1.0 : 1.0;
+  Rigid3 b_T_a;
+  b_T_a.rotation = v * d * u.transpose();
+  b_T_a.translation = mean_b - b_T_a.rotation * mean_a;
+  return b_T_a;
+}
+
+}  // namespace relslam::point
