@@ -1,0 +1,94 @@
+#include "relslam/point/point_matching.hpp"
+
+#include "relslam/sim/random.hpp"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+namespace relslam::point {
+namespace {
+
+// Two landmarks 0.3 apart, the robot turning so each moves ~0.6 between frames: without
+// motion compensation the nearest previous observation is the other landmark's.
+TEST(PointMatcher, MotionCompensationKeepsCloseLandmarksApart) {
+  sim::RandomSequence rng(701, sim::Stream::Field);
+  std::vector<Eigen::Vector3d> world;
+  for (int i = 0; i < 40; ++i) world.emplace_back(rng.uniform(-40, 40), rng.uniform(-4, 4), rng.uniform(20, 95));
+  world.push_back({0.0, 0.0, 60.0});
+  world.push_back({0.3, 0.0, 60.0});
+  auto pose = [](int k) { return Rigid3{rotation_about(Eigen::Vector3d::UnitY(), 0.01 * k), Eigen::Vector3d(0, 0, 0.3 * k)}; };
+
+  for (bool compensate : {true, false}) {
+    PointSlamOptions o;
+    o.compensate_motion = compensate;
+    PointMatcher matcher(o);
+    spatial::IncrementalOVLPQuadTree global(o.global_cell_size, o.global_bound);
+    std::vector<RltPoint> points;  // landmark i is RltPoint i
+    std::vector<LocalCandidate> candidates;
+    int swaps = 0;
+    for (int k = 0; k < 6; ++k) {
+      std::vector<Eigen::Vector3d> obs;
+      for (const auto& w : world) obs.push_back(pose(k).inverse_apply(w));
+      if (k > 0) {
+        matcher.prepare(candidates, k);
+        const MatchResult& r = matcher.match(obs, k, global, points, pose(k - 1));
+        for (int i = 0; i < static_cast<int>(obs.size()); ++i) swaps += r.assigned[i] != i;
+        if (compensate && k > 1) {
+          EXPECT_TRUE(r.motion_estimated);
+          const Rigid3 truth = pose(k).inverse() * pose(k - 1);
+          EXPECT_LT((r.motion.translation - truth.translation).norm(), 1e-9);
+        }
+      }
+      candidates.clear();
+      points.resize(obs.size());
+      for (int i = 0; i < static_cast<int>(obs.size()); ++i) {
+        points[i].id = i;
+        points[i].observations.push({obs[i], k});
+        candidates.push_back({i, obs[i], k});
+      }
+    }
+    if (compensate) {
+      EXPECT_EQ(swaps, 0);
+    } else {
+      EXPECT_GT(swaps, 0) << "the thesis's plain nearest match confuses the pair";
+    }
+  }
+}
+
+TEST(PointMatcher, GlobalMatchingFindsAMappedPointThroughThePose) {
+  PointSlamOptions o;
+  PointMatcher matcher(o);
+  spatial::IncrementalOVLPQuadTree global(o.global_cell_size, o.global_bound);
+  std::vector<RltPoint> points(1);
+  points[0].id = 0;
+  points[0].observations.push({Eigen::Vector3d(0, 0, 10), 0});
+  points[0].global = {5, 0, 30};
+  points[0].has_global = true;
+  global.place(0, points[0].global);
+  const Rigid3 world_T_robot{Eigen::Matrix3d::Identity(), Eigen::Vector3d(5, 0, 10)};
+  matcher.prepare({}, 50);
+  const MatchResult& r = matcher.match({Eigen::Vector3d(0.5, 0, 20.5)}, 50, global, points, world_T_robot);
+  EXPECT_EQ(r.assigned, std::vector<PointId>{0});
+  EXPECT_EQ(r.global, 1);
+  points[0].dynamic = true;  // flagged movers are never matched globally
+  matcher.prepare({}, 51);
+  EXPECT_EQ(matcher.match({Eigen::Vector3d(0.5, 0, 20.5)}, 51, global, points, world_T_robot).assigned,
+            std::vector<PointId>{kNone});
+}
+
+TEST(PointMatcher, OneObservationPerPointAndViceVersa) {
+  PointSlamOptions o;
+  o.compensate_motion = false;
+  PointMatcher matcher(o);
+  spatial::IncrementalOVLPQuadTree global(o.global_cell_size, o.global_bound);
+  std::vector<RltPoint> points(1);
+  points[0].observations.push({Eigen::Vector3d(0, 0, 10), 0});
+  matcher.prepare({{0, {0, 0, 10}, 0}}, 1);
+  // Two observations near one candidate: the closer one gets it, the other is new.
+  const MatchResult& r = matcher.match({Eigen::Vector3d(0.5, 0, 10), Eigen::Vector3d(0.1, 0, 10)}, 1, global, points,
+                                       Rigid3::identity());
+  EXPECT_EQ(r.assigned, (std::vector<PointId>{kNone, 0}));
+}
+
+}  // namespace
+}  // namespace relslam::point

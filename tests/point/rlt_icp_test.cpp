@@ -1,0 +1,80 @@
+#include "relslam/point/rlt_icp.hpp"
+
+#include "relslam/sim/random.hpp"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+namespace relslam::point {
+namespace {
+
+Rigid3 random_motion(sim::RandomSequence& rng, bool planar = false) {
+  Eigen::Quaterniond q(rng.gaussian(), rng.gaussian(), rng.gaussian(), rng.gaussian());
+  if (planar) q = Eigen::Quaterniond(Eigen::AngleAxisd(rng.uniform(-M_PI, M_PI), Eigen::Vector3d::UnitZ()));
+  return Rigid3::from(q, {rng.uniform(-50, 50), rng.uniform(-50, 50), planar ? 0.0 : rng.uniform(-50, 50)});
+}
+
+void expect_same_motion(const Rigid3& a, const Rigid3& b, const std::string& what) {
+  EXPECT_LT((a.rotation - b.rotation).norm(), 1e-12) << what;
+  EXPECT_LT((a.translation - b.translation).norm(), 1e-10) << what;
+}
+
+TEST(RltICP, RecoversRandomRigidMotionsExactlyFromNoiseFreePoints) {
+  sim::RandomSequence rng(101, sim::Stream::Field);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Rigid3 truth = random_motion(rng);
+    const int n = 3 + trial;
+    std::vector<Eigen::Vector3d> a, b;
+    for (int i = 0; i < n; ++i) {
+      a.emplace_back(rng.uniform(-100, 100), rng.uniform(-5, 5), rng.uniform(0, 100));
+      b.push_back(truth * a.back());
+    }
+    const auto fit = rlt_icp(a, b);
+    ASSERT_TRUE(fit) << "trial " << trial;
+    expect_same_motion(*fit, truth, "trial " + std::to_string(trial));
+  }
+}
+
+TEST(RltICP, HandlesCoplanarSetsLikeVictoriaPark) {
+  sim::RandomSequence rng(102, sim::Stream::Field);
+  for (bool planar_motion : {true, false})
+    for (int trial = 0; trial < 20; ++trial) {
+      const Rigid3 truth = random_motion(rng, planar_motion);
+      std::vector<Eigen::Vector3d> a, b;
+      for (int i = 0; i < 4 + trial; ++i) {
+        a.emplace_back(rng.uniform(-40, 40), rng.uniform(-40, 40), 0.0);  // all in one plane
+        b.push_back(truth * a.back());
+      }
+      const auto fit = rlt_icp(a, b);
+      ASSERT_TRUE(fit);
+      expect_same_motion(*fit, truth, "planar trial " + std::to_string(trial));
+      EXPECT_NEAR(fit->rotation.determinant(), 1.0, 1e-12) << "a rotation, never a reflection";
+    }
+}
+
+TEST(RltICP, RejectsFewerThanThreePairsAndCollinearPoints) {
+  const std::vector<Eigen::Vector3d> two = {{0, 0, 0}, {1, 0, 0}};
+  EXPECT_FALSE(rlt_icp(two, two));
+  const std::vector<Eigen::Vector3d> line = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {5, 5, 5}};
+  EXPECT_FALSE(rlt_icp(line, line));
+  const std::vector<Eigen::Vector3d> three = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_FALSE(rlt_icp(three, two)) << "sizes differ";
+  EXPECT_TRUE(rlt_icp(three, three));
+}
+
+TEST(RltICP, FitsNoisyPointsInTheLeastSquaresSense) {
+  sim::RandomSequence rng(103, sim::Stream::Field);
+  const Rigid3 truth = random_motion(rng);
+  std::vector<Eigen::Vector3d> a, b;
+  for (int i = 0; i < 2000; ++i) {
+    a.emplace_back(rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50));
+    b.push_back(truth * a.back() + 0.1 * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian()));
+  }
+  const auto fit = rlt_icp(a, b);
+  ASSERT_TRUE(fit);
+  // Rotation error ~ sigma / (spread·sqrt(n)) ≈ 0.1 / (29·45) ≈ 1e-4 rad.
+  EXPECT_LT(Eigen::AngleAxisd(Eigen::Matrix3d(fit->rotation.transpose() * truth.rotation)).angle(), 1e-3);
+}
+
+}  // namespace
+}  // namespace relslam::point

@@ -1,0 +1,191 @@
+// Whole-run behaviour of the Relative Point algorithm on simulated figure eights (label
+// `scenario`: about a second each in a Release build).
+#include "relslam/point/rlt_mapper.hpp"
+
+#include "relslam/sim/random.hpp"
+#include "relslam/sim/simulator.hpp"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+namespace relslam::point {
+namespace {
+
+struct RunReport {
+  double worst_position_error = 0;
+  int worst_position_iteration = -1;
+  double worst_mean_landmark_error = 0;  // per mapped landmark, against its true landmark
+  double final_mean_landmark_error = 0;
+  int rlt_points = 0;
+  int distinct_landmarks_seen = 0;
+  int mapped = 0;
+  int duplicated_on_map = 0;            // mapped RltPoints beyond one per true landmark
+  int long_seen_unmapped = 0;           // landmarks observed >= 20 times without a mapped RltPoint
+  int global_matches_last_quarter = 0;  // loop closure: points recognised when the start returns
+  std::vector<StepResult> steps;
+  std::vector<Eigen::Vector3d> final_map;
+};
+
+// The true landmark an RltPoint stands for: the one behind most of its observations.
+int majority(const std::map<int, int>& votes) {
+  int best = -1, count = 0;
+  for (const auto& [id, n] : votes)
+    if (n > count) best = id, count = n;
+  return best;
+}
+
+RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const PointSlamOptions& options,
+              const Rigid3& sensor_T_robot = Rigid3::identity(), bool errors_every_iteration = false) {
+  const sim::Simulator sim(sim_options, seed);
+  RltMapper mapper(options);
+  RunReport report;
+  std::vector<std::map<int, int>> votes;
+  std::map<int, int> seen;
+  for (int k = 0; k < sim.iterations(); ++k) {
+    sim::SimFrame f = sim.frame(k);
+    for (Eigen::Vector3d& p : f.observation.points) p = sensor_T_robot * p;
+    StepResult r = mapper.step(f.observation);
+    votes.resize(mapper.points().size());
+    for (std::size_t i = 0; i < r.assignment.size(); ++i) {
+      ++votes[r.assignment[i]][f.truth.landmark_ids[i]];
+      ++seen[f.truth.landmark_ids[i]];
+    }
+    const Rigid3 estimate = sensor_T_robot.inverse() * r.world_T_robot * sensor_T_robot;
+    const double position_error = (estimate.translation - f.truth.world_T_robot.translation).norm();
+    if (position_error > report.worst_position_error) report.worst_position_error = position_error, report.worst_position_iteration = k;
+    if (k >= sim.iterations() * 3 / 4) report.global_matches_last_quarter += r.global_matches;
+    if (errors_every_iteration || k + 1 == sim.iterations()) {
+      double sum = 0;
+      int n = 0;
+      for (const RltPoint& p : mapper.points())
+        if (p.on_map()) sum += (sensor_T_robot.inverse() * p.global - sim.world().position(majority(votes[p.id]), k)).norm(), ++n;
+      const double mean = n ? sum / n : 0.0;
+      report.worst_mean_landmark_error = std::max(report.worst_mean_landmark_error, mean);
+      report.final_mean_landmark_error = mean;
+    }
+    report.steps.push_back(std::move(r));
+  }
+  report.rlt_points = static_cast<int>(mapper.points().size());
+  report.distinct_landmarks_seen = static_cast<int>(seen.size());
+  std::map<int, int> on_map;
+  for (const RltPoint& p : mapper.points()) {
+    report.final_map.push_back(p.has_global ? Eigen::Vector3d(sensor_T_robot.inverse() * p.global) : Eigen::Vector3d::Zero());
+    if (!p.on_map()) continue;
+    ++report.mapped;
+    ++on_map[majority(votes[p.id])];
+  }
+  for (const auto& [id, n] : on_map) report.duplicated_on_map += n - 1;
+  for (const auto& [id, n] : seen) report.long_seen_unmapped += n >= 20 && !on_map.count(id);
+  return report;
+}
+
+sim::SimOptions one_loop(double noise) {
+  sim::SimOptions o;
+  o.density = 100;
+  o.noise_sigma = noise;
+  return o;
+}
+
+// Noise-free data are exact, so any positive bound is right; small ones keep apart the few
+// landmarks that happen to lie within a unit of each other (~16 pairs at density 100), which
+// the noisy-data bounds (1.0 local after compensation, 2.0 global) cannot tell apart.
+PointSlamOptions noise_free_bounds() {
+  PointSlamOptions o;
+  o.compensated_bound = 1e-3;
+  o.global_bound = 1e-3;
+  return o;
+}
+
+TEST(RltMapper, NoiseFreeLoopIsExactAtEveryIterationWithoutDuplicates) {
+  const RunReport r = run(one_loop(0.0), 1, noise_free_bounds(), Rigid3::identity(), true);
+  EXPECT_LT(r.worst_position_error, 1e-6) << "at iteration " << r.worst_position_iteration;
+  EXPECT_LT(r.worst_mean_landmark_error, 1e-6);
+  EXPECT_EQ(r.rlt_points, r.distinct_landmarks_seen) << "one RltPoint per landmark seen";
+  EXPECT_EQ(r.long_seen_unmapped, 0) << "every landmark seen 20+ times is on the map";
+  EXPECT_EQ(r.duplicated_on_map, 0);
+  EXPECT_GT(r.global_matches_last_quarter, 20) << "returning to the start re-finds the first landmarks";
+}
+
+// Noisy loop (sigma 0.1, thesis defaults). The bound on the final mean landmark error: over
+// seeds 1-5 this run ends at 0.16-0.46 units per landmark (drift along ~250 chained final
+// groups). 1.0 leaves room for seed-to-seed spread and still fails on any systematic
+// breakage (an unstable anchor choice reached tens of units before the loop closed).
+TEST(RltMapper, NoisyLoopClosesByItselfWithFewDuplicates) {
+  const RunReport r = run(one_loop(0.1), 1, PointSlamOptions{});
+  EXPECT_LT(r.final_mean_landmark_error, 1.0);
+  EXPECT_LT(r.duplicated_on_map, 0.01 * r.mapped) << r.duplicated_on_map << " of " << r.mapped;
+  EXPECT_GT(r.global_matches_last_quarter, 50) << "revisited landmarks are matched globally";
+  EXPECT_LT(r.worst_position_error, 3.0);
+  EXPECT_GT(r.mapped, 0.9 * r.distinct_landmarks_seen);
+}
+
+TEST(RltMapper, SameInputGivesIdenticalResults) {
+  sim::SimOptions o = one_loop(0.1);
+  o.iterations = 800;
+  const RunReport a = run(o, 4, PointSlamOptions{}), b = run(o, 4, PointSlamOptions{});
+  ASSERT_EQ(a.steps.size(), b.steps.size());
+  for (std::size_t k = 0; k < a.steps.size(); ++k) {
+    ASSERT_EQ(a.steps[k].assignment, b.steps[k].assignment) << k;
+    ASSERT_EQ(a.steps[k].world_T_robot.translation, b.steps[k].world_T_robot.translation) << k;
+  }
+  EXPECT_EQ(a.final_map, b.final_map);
+}
+
+// The whole world moved rigidly relative to the sensor (a sensor mounted differently): every
+// observation changes, but the relative maps, the matches and, transformed back, the map,
+// the poses and the errors are the same.
+TEST(RltMapper, RigidlyTransformedObservationsGiveTheSameMapTransformed) {
+  sim::SimOptions o = one_loop(0.1);
+  o.iterations = 1200;
+  sim::RandomSequence rng(9, sim::Stream::Field);
+  const Rigid3 t = Rigid3::from(Eigen::Quaterniond(rng.gaussian(), rng.gaussian(), rng.gaussian(), rng.gaussian()),
+                                {rng.uniform(-30, 30), rng.uniform(-30, 30), rng.uniform(-30, 30)});
+  const RunReport plain = run(o, 2, PointSlamOptions{}), moved = run(o, 2, PointSlamOptions{}, t);
+  ASSERT_EQ(plain.rlt_points, moved.rlt_points);
+  for (std::size_t k = 0; k < plain.steps.size(); ++k) ASSERT_EQ(plain.steps[k].assignment, moved.steps[k].assignment) << k;
+  for (std::size_t i = 0; i < plain.final_map.size(); ++i) EXPECT_LT((plain.final_map[i] - moved.final_map[i]).norm(), 1e-9) << i;
+  EXPECT_NEAR(plain.final_mean_landmark_error, moved.final_mean_landmark_error, 1e-9);
+  EXPECT_NEAR(plain.worst_position_error, moved.worst_position_error, 1e-9);
+}
+
+TEST(RltMapper, TooFewPointsAtTheFirstIterationIsReportedAsAFailure) {
+  RltMapper mapper;
+  ObservationFrame frame;
+  frame.points = {{0, 0, 10}, {1, 0, 10}};
+  for (int k = 0; k < 30; ++k) {
+    frame.iteration = k;
+    mapper.step(frame);
+  }
+  EXPECT_FALSE(mapper.failure().empty());
+  EXPECT_EQ(mapper.group_stats().created, 0);
+}
+
+TEST(RltMapper, EmptyAndSparseFramesDoNotDisturbTheRun) {
+  sim::SimOptions o = one_loop(0.1);
+  o.iterations = 300;
+  const sim::Simulator sim(o, 3);
+  RltMapper mapper;
+  for (int k = 0; k < sim.iterations(); ++k) {
+    sim::SimFrame f = sim.frame(k);
+    if (k >= 150 && k < 155) f.observation.points.clear();  // the sensor saw nothing
+    if (k == 160) f.observation.points.resize(2);
+    const StepResult r = mapper.step(f.observation);
+    if (k >= 150 && k < 155) {
+      EXPECT_EQ(r.pose_source, PoseSource::Held);
+    }
+  }
+  EXPECT_TRUE(mapper.failure().empty());
+  EXPECT_LT((mapper.pose().translation - sim.path().world_T_robot(299).translation).norm(), 0.5);
+}
+
+TEST(RltMapper, IterationsMustIncrease) {
+  RltMapper mapper;
+  mapper.step({5, {}});
+  EXPECT_THROW(mapper.step({5, {}}), std::logic_error);
+}
+
+}  // namespace
+}  // namespace relslam::point
