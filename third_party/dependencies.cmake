@@ -6,12 +6,14 @@
 #   OpenCV 4.6        libopencv-dev       map rendering (eval only)
 #   nlohmann_json 3.11 nlohmann-json3-dev scenarios, manifests (eval only)
 #   CLI11 2.1         libcli11-dev        command line (eval only)
+#   nanoflann 1.4     libnanoflann-dev    k-d tree for scoring (eval only)
 #   GTest 1.12        libgtest-dev        tests
 #   benchmark 1.7     libbenchmark-dev    benchmarks
 
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.11 REQUIRED)
 find_package(CLI11 2.1 REQUIRED)
+find_package(nanoflann 1.4 REQUIRED)
 find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs)
 foreach(module IN ITEMS mrpt-slam mrpt-obs mrpt-io mrpt-serialization mrpt-poses)
   find_package(${module} REQUIRED)

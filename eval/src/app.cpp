@@ -2,6 +2,7 @@
 
 #include "relslam/eval/build_info.hpp"
 #include "relslam/eval/commands/rawlog_info.hpp"
+#include "relslam/eval/commands/run.hpp"
 #include "relslam/eval/commands/simulate.hpp"
 #include "relslam/eval/input_error.hpp"
 #include "relslam/eval/scenario_keys.hpp"
@@ -21,7 +22,8 @@ one-loop figure eight). Every key has a default; `relslam keys` lists them and
 `relslam scenario FILE` shows a scenario with every default filled in.
 
 Examples:
-  relslam simulate scenarios/s-f8.json --out runs/f8
+  relslam run scenarios/s-f8.json --out runs/f8              # simulate and run the Relative Point algorithm
+  relslam simulate scenarios/s-f8.json --out runs/f8-sim
   relslam simulate scenarios/s-f8.json --out runs/f8-dense --set sim.density=550
   relslam scenario scenarios/s-dyn.json --set sim.dynamic.count=3
   relslam rawlog runs/f8/observations.rawlog --csv runs/f8/from_rawlog.csv
@@ -55,6 +57,8 @@ int run_cli(int argc, const char* const* argv) {
 
   SimulateArgs simulate;
   add_simulate(app, simulate);
+  RunArgs run;
+  add_run(app, run);
   ScenarioArgs scenario;
   add_scenario(app, scenario);
   RawlogArgs rawlog;
@@ -72,6 +76,7 @@ int run_cli(int argc, const char* const* argv) {
 
   try {
     if (app.got_subcommand("simulate")) return run_simulate(simulate, command_line);
+    if (app.got_subcommand("run")) return run_run(run, command_line);
     if (app.got_subcommand("scenario")) return run_scenario(scenario);
     if (app.got_subcommand("rawlog")) return run_rawlog(rawlog);
     if (app.got_subcommand("keys")) {

@@ -135,6 +135,8 @@ class Loader {
 void check_semantics(const LoadedScenario& loaded) {
   std::vector<InputError> errors;
   for (const OptionIssue& issue : sim::check(loaded.scenario.sim)) errors.push_back(loaded.error("sim." + issue.field, issue.problem));
+  for (const OptionIssue& issue : point::check(loaded.scenario.relative_point))
+    errors.push_back(loaded.error("relative_point." + issue.field, issue.problem));
   if (errors.empty()) return;
   if (errors.size() == 1) throw errors.front();
   // Report every problem at once; the first one is the error's own location.
@@ -193,7 +195,7 @@ json to_json(const Scenario& scenario) {
 }
 
 const std::vector<std::string>& known_algorithms() {
-  static const std::vector<std::string> names = {};
+  static const std::vector<std::string> names = {"relative_point"};
   return names;
 }
 

@@ -149,6 +149,72 @@ std::optional<ScenarioKind> parse_kind(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view basis_name(point::BasisSelection b) {
+  return b == point::BasisSelection::Farthest ? "farthest" : "first_three";
+}
+std::optional<point::BasisSelection> parse_basis(std::string_view name) {
+  if (name == "farthest") return point::BasisSelection::Farthest;
+  if (name == "first_three") return point::BasisSelection::FirstThree;
+  return std::nullopt;
+}
+
+// The keys of one group level, relative_point.<level>.<field>.
+template <auto Level>
+void add_level_keys(std::vector<ScenarioKey>& keys, const std::string& level, const std::string& what) {
+  using point::GroupLevelOptions;
+  using point::PointSlamOptions;
+  const std::string p = "relative_point." + level + ".";
+  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::look_ahead>(
+      p + "look_ahead", what + ": iterations waited before grouping; new members come from [c0, c0+A]"));
+  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::look_back>(
+      p + "look_back", what + ": previously mapped candidates come from [c0-B, c0+A]"));
+  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::accuracy_reduction>(
+      p + "accuracy_reduction", what + ": members need A minus this many observations in [c0, c0+A]"));
+  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::prev_min>(
+      p + "prev_min", what + ": PrevGroupMin, previously mapped members needed"));
+  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::prev_max>(
+      p + "prev_max", what + ": PrevGroupMax, previously mapped members kept"));
+  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::next_min>(
+      p + "next_min", what + ": NextGroupMin, ungrouped members needed"));
+}
+
+std::vector<ScenarioKey> relative_point_keys() {
+  using point::PointSlamOptions;
+  std::vector<ScenarioKey> keys = {
+      integer<&Scenario::relative_point, &PointSlamOptions::match_look_back>(
+          "relative_point.match_look_back", "local matching looks this many iterations back (thesis 6.2.3)"),
+      number<&Scenario::relative_point, &PointSlamOptions::local_bound>(
+          "relative_point.local_bound", "local matching bound, units (frame motion plus noise)"),
+      boolean<&Scenario::relative_point, &PointSlamOptions::compensate_motion>(
+          "relative_point.compensate_motion", "predict local candidates by the fitted frame motion (beyond the thesis)"),
+      number<&Scenario::relative_point, &PointSlamOptions::compensated_bound>(
+          "relative_point.compensated_bound", "local bound after motion compensation, units (noise only)"),
+      number<&Scenario::relative_point, &PointSlamOptions::global_bound>(
+          "relative_point.global_bound", "global matching bound, units (thesis 6.5.1)"),
+      number<&Scenario::relative_point, &PointSlamOptions::local_cell_size>(
+          "relative_point.local_cell_size", "local OVLPQuadTree cell, units; 1.5 = the thesis's small quads"),
+      number<&Scenario::relative_point, &PointSlamOptions::global_cell_size>("relative_point.global_cell_size",
+                                                                             "global incremental grid cell, units"),
+  };
+  add_level_keys<&PointSlamOptions::temporary_group>(keys, "temporary_group", "temporary groups");
+  add_level_keys<&PointSlamOptions::final_group>(keys, "final_group", "final groups");
+  keys.push_back(choice<basis_name, parse_basis, &Scenario::relative_point, &PointSlamOptions::basis>(
+      "relative_point.basis", "basis points: farthest (thesis 6.5.4) or first_three (Fig 119)", {"farthest", "first_three"}));
+  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::min_basis_ratio>(
+      "relative_point.min_basis_ratio", "reject a basis whose third point is this close to the line, relative"));
+  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::temporary_cleanup_period>(
+      "relative_point.temporary_cleanup_period", "iterations between removals of redundant temporary groups"));
+  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::match_unmapped>(
+      "relative_point.match_unmapped", "global matching also finds unmapped points (beyond the thesis)"));
+  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::pose_from_unmapped>(
+      "relative_point.pose_from_unmapped", "pose from unmapped points when < 3 mapped are seen (beyond the thesis)"));
+  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::ring_capacity>(
+      "relative_point.ring_capacity", "observations kept per RltPoint"));
+  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::charting_capacity>(
+      "relative_point.charting_capacity", "iterations kept by RltPointCharting"));
+  return keys;
+}
+
 constexpr auto path_kind_name = static_cast<std::string_view (*)(sim::PathKind)>(&sim::to_string);
 constexpr auto far_cap_name = static_cast<std::string_view (*)(sim::FarCap)>(&sim::to_string);
 
@@ -191,7 +257,7 @@ ScenarioKey algorithms_key() {
 }
 
 std::vector<ScenarioKey> build_keys() {
-  return {
+  std::vector<ScenarioKey> keys = {
       text<&Scenario::name>("name", "experiment name; defaults to the file name without .json"),
       text<&Scenario::description>("description", "what the experiment reproduces (thesis figures)"),
       choice<kind_name, parse_kind, &Scenario::kind>(
@@ -247,6 +313,8 @@ std::vector<ScenarioKey> build_keys() {
           "output.rawlog_landmark_ids", "rawlog carries true landmark ids (else -1: unknown association)"),
       boolean<&Scenario::output, &OutputOptions::rawlog_gzip>("output.rawlog_gzip", "gzip-compress the rawlog"),
   };
+  for (ScenarioKey& k : relative_point_keys()) keys.push_back(std::move(k));
+  return keys;
 }
 
 }  // namespace

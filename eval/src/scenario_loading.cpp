@@ -18,4 +18,12 @@ sim::Simulator build_simulator(const LoadedScenario& loaded) {
   }
 }
 
+LandmarkTruth landmark_truth(const sim::World& world) {
+  LandmarkTruth truth;
+  truth.positions = world.anchors();
+  truth.dynamic_ids = world.dynamic_ids();
+  truth.dynamic_position = [&world](int id, int k) { return world.position(id, k); };
+  return truth;
+}
+
 }  // namespace relslam::eval

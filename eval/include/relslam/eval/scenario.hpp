@@ -3,6 +3,7 @@
 // Loaded from scenarios/*.json; every key and its default are listed by scenario_keys().
 
 #include "relslam/eval/input_error.hpp"
+#include "relslam/point/options.hpp"
 #include "relslam/sim/options.hpp"
 
 #include <nlohmann/json.hpp>
@@ -46,6 +47,7 @@ struct Scenario {
   std::uint64_t seed = 1;   // the only source of randomness of a run
   sim::SimOptions sim;
   std::vector<std::string> algorithms;
+  point::PointSlamOptions relative_point;  // the Relative Point algorithm's constants
   OutputOptions output;
   std::vector<SweepAxis> sweep;
 };

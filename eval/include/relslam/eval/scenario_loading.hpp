@@ -2,6 +2,7 @@
 // The steps every command that takes a scenario shares: read it with the --set overrides,
 // and build its simulator with errors pointing back at the scenario's lines.
 
+#include "relslam/eval/landmark_truth.hpp"
 #include "relslam/eval/scenario.hpp"
 #include "relslam/sim/simulator.hpp"
 
@@ -13,5 +14,7 @@ namespace relslam::eval {
 LoadedScenario load_with_overrides(const std::string& file, const std::vector<std::string>& set);
 // Throws InputError (at the offending key) when the world cannot be built.
 sim::Simulator build_simulator(const LoadedScenario& loaded);
+// The simulated landmarks as scoring truth; refers to `world`, which must outlive it.
+LandmarkTruth landmark_truth(const sim::World& world);
 
 }  // namespace relslam::eval

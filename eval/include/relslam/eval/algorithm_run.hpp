@@ -1,0 +1,32 @@
+#pragma once
+// One algorithm of a run: fed the shared observation stream frame by frame, it writes its own
+// sub-folder (iterations.csv, landmarks.csv, trajectory.tum) and a summary row.
+
+#include "relslam/core/observation.hpp"
+#include "relslam/core/truth.hpp"
+#include "relslam/eval/run_summary.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace relslam::eval {
+
+struct Scenario;
+struct LandmarkTruth;
+
+class AlgorithmRun {
+ public:
+  virtual ~AlgorithmRun() = default;
+  virtual const std::string& name() const = 0;
+  // The algorithm sees only `observation`; `truth` is for scoring after its timed work.
+  virtual void step(const ObservationFrame& observation, const TruthFrame& truth) = 0;
+  // Closes the files; the row for summary.csv.
+  virtual SummaryRow finish() = 0;
+};
+
+// The run of algorithm `name` (one of known_algorithms()) writing into dir/name/.
+std::unique_ptr<AlgorithmRun> make_algorithm_run(const std::string& name, const Scenario& scenario,
+                                                 const LandmarkTruth& truth, const std::filesystem::path& dir);
+
+}  // namespace relslam::eval

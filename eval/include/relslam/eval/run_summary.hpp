@@ -1,0 +1,39 @@
+#pragma once
+// summary.csv: one row per algorithm of a run (issue #3 harness).
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+// Median, 95th percentile and maximum of per-iteration times, milliseconds.
+struct RuntimeStats {
+  double median_ms = 0;
+  double p95_ms = 0;
+  double max_ms = 0;
+  double mean_ms = 0;
+};
+RuntimeStats runtime_stats(std::vector<double> times_ms);
+
+struct SummaryRow {
+  std::string algorithm;
+  std::string status = "not run";  // "ok", or "failed: <why>"
+  int iterations = 0;
+  double final_landmark_error = 0;       // sum over the map (thesis metric)
+  double final_mean_landmark_error = 0;  // per landmark on the map
+  double mean_landmark_error = 0;        // per landmark, averaged over iterations
+  double final_position_error = 0;
+  double ate_rmse = 0;                   // frames coincide by construction: no alignment
+  int landmarks_on_map = 0;
+  int duplicates = 0;                    // map landmarks sharing their true landmark with another
+  RuntimeStats runtime;
+  double peak_rss_mb = 0;                // the whole process, at the end of this algorithm's run
+};
+
+void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows);
+
+// Peak resident memory of this process so far, megabytes.
+double peak_rss_mb();
+
+}  // namespace relslam::eval

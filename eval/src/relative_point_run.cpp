@@ -1,0 +1,117 @@
+// The Relative Point algorithm (libslam's RltMapper) as one algorithm of a run.
+#include "relslam/eval/algorithm_run.hpp"
+#include "relslam/eval/csv_writer.hpp"
+#include "relslam/eval/run_scorer.hpp"
+#include "relslam/eval/scenario.hpp"
+#include "relslam/eval/tum_writer.hpp"
+#include "relslam/point/rlt_mapper.hpp"
+
+#include <chrono>
+
+namespace relslam::eval {
+namespace {
+
+using point::RltMapper;
+using point::RltPoint;
+
+std::string level_of(const RltPoint& p, const RltMapper& mapper) {
+  if (p.merged) return "merged";
+  if (p.dynamic) return "dynamic";
+  if (!p.has_global) return "none";
+  return mapper.groups()[p.owner].level() == point::GroupLevel::Final ? "final" : "temporary";
+}
+
+class RelativePointRun final : public AlgorithmRun {
+ public:
+  RelativePointRun(const Scenario& scenario, const LandmarkTruth& truth, const std::filesystem::path& dir)
+      : dir_(dir),
+        mapper_(scenario.relative_point),
+        scorer_(truth),
+        iterations_(dir / "iterations.csv",
+                    {"iteration", "landmark_error", "mean_landmark_error", "position_error", "ex", "ey", "ez",
+                     "runtime_ms", "t_init_ms", "t_load_ms", "t_compute_ms", "t_create_ms", "t_pose_ms",
+                     "visible_points", "rlt_points", "mapped_points", "groups", "final_groups", "groups_alive",
+                     "temporary_groups_alive", "new_points", "local_matches", "global_matches", "pose_source"}),
+        trajectory_(dir / "trajectory.tum") {}
+
+  const std::string& name() const override { return name_; }
+
+  void step(const ObservationFrame& observation, const TruthFrame& truth) override {
+    const auto start = std::chrono::steady_clock::now();
+    const point::StepResult r = mapper_.step(observation);
+    const double runtime_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+    // Scoring, outside the timed region.
+    scorer_.associate(r.assignment, truth.landmark_ids);
+    const auto& points = mapper_.points();
+    const IterationScore s = scorer_.score(r.iteration, r.world_T_robot, truth, r.changed,
+                                           [&](int id) -> std::optional<Eigen::Vector3d> {
+                                             if (!points[id].on_map()) return std::nullopt;
+                                             return points[id].global;
+                                           },
+                                           runtime_ms);
+    const point::GroupStats g = mapper_.group_stats();
+    const point::StepTimings& t = r.timings;
+    iterations_.row(r.iteration, s.landmark_error, s.mean_landmark_error, s.position_error, s.axis_error.x(),
+                    s.axis_error.y(), s.axis_error.z(), runtime_ms, t.init_ms, t.load_ms, t.compute_ms, t.create_ms,
+                    t.pose_ms, observation.points.size(), points.size(), s.landmarks_on_map, g.created, g.final_created,
+                    g.alive, g.temporary_alive, r.new_points, r.local_matches, r.global_matches, pose_source(r.pose_source));
+    trajectory_.write(static_cast<double>(r.iteration), r.world_T_robot);
+  }
+
+  SummaryRow finish() override {
+    iterations_.close();
+    trajectory_.close();
+    CsvWriter landmarks(dir_ / "landmarks.csv", {"id", "x", "y", "z", "true_id", "error", "level", "observations",
+                                                 "first_iteration", "last_iteration", "owner_group"});
+    std::vector<int> on_map;
+    for (const RltPoint& p : mapper_.points()) {
+      const bool mapped = p.has_global;
+      if (p.on_map()) on_map.push_back(p.id);
+      const std::optional<double> x = mapped ? std::optional(p.global.x()) : std::nullopt;
+      const std::optional<double> y = mapped ? std::optional(p.global.y()) : std::nullopt;
+      const std::optional<double> z = mapped ? std::optional(p.global.z()) : std::nullopt;
+      landmarks.row(p.id, x, y, z, scorer_.majority_truth(p.id), scorer_.error_of(p.id), level_of(p, mapper_),
+                    p.interval.total(), p.interval.first(), p.interval.last(),
+                    p.owner >= 0 ? std::optional(p.owner) : std::nullopt);
+    }
+    landmarks.close();
+    SummaryRow row;
+    row.algorithm = name_;
+    row.status = mapper_.failure().empty() ? "ok" : "failed: " + mapper_.failure();
+    scorer_.fill(row);
+    row.landmarks_on_map = static_cast<int>(on_map.size());
+    row.duplicates = scorer_.duplicates(on_map);
+    row.peak_rss_mb = peak_rss_mb();
+    return row;
+  }
+
+ private:
+  static const char* pose_source(point::PoseSource s) {
+    switch (s) {
+      case point::PoseSource::Start: return "start";
+      case point::PoseSource::MappedPoints: return "mapped";
+      case point::PoseSource::UnmappedPoints: return "unmapped";
+      case point::PoseSource::Held: return "held";
+    }
+    return "?";
+  }
+
+  std::string name_ = "relative_point";
+  std::filesystem::path dir_;
+  RltMapper mapper_;
+  RunScorer scorer_;
+  CsvWriter iterations_;
+  TumWriter trajectory_;
+};
+
+}  // namespace
+
+std::unique_ptr<AlgorithmRun> make_algorithm_run(const std::string& name, const Scenario& scenario,
+                                                 const LandmarkTruth& truth, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir / name);
+  if (name == "relative_point") return std::make_unique<RelativePointRun>(scenario, truth, dir / name);
+  throw std::logic_error("make_algorithm_run: unknown algorithm " + name);
+}
+
+}  // namespace relslam::eval

@@ -1,0 +1,146 @@
+#include "test_support.hpp"
+
+#include <Eigen/Core>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+
+namespace relslam {
+namespace {
+
+using test::run_relslam;
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream in(line);
+  for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
+  if (!line.empty() && line.back() == ',') fields.push_back("");
+  return fields;
+}
+
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  int column(const std::string& name) const {
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (header[i] == name) return static_cast<int>(i);
+    ADD_FAILURE() << "no column " << name;
+    return 0;
+  }
+  double number(std::size_t row, const std::string& name) const { return std::stod(rows.at(row).at(column(name))); }
+};
+
+Table read_table(const std::filesystem::path& file) {
+  Table t;
+  const auto lines = test::read_lines(file);
+  t.header = split(lines.at(0));
+  for (std::size_t i = 1; i < lines.size(); ++i) t.rows.push_back(split(lines[i]));
+  return t;
+}
+
+// Measured times differ from run to run; everything else must not.
+bool is_timing(const std::string& column) {
+  return column == "runtime_ms" || column.rfind("t_", 0) == 0 || column.rfind("runtime_", 0) == 0 ||
+         column == "peak_rss_mb";
+}
+
+std::vector<std::string> run_args(const std::filesystem::path& out, std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"run", test::source_path("scenarios/s-f8.json").string(), "--out", out.string(), "-q",
+                                   "--set", "sim.iterations=400", "--set", "sim.density=50",
+                                   "--set", "output.observations_csv=false", "--set", "output.rawlog=false"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+TEST(RunCommand, WritesTheAlgorithmFolderAndSummary) {
+  test::ScratchDir dir;
+  const auto r = run_relslam(run_args(dir / "run"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table iterations = read_table(dir / "run/relative_point/iterations.csv");
+  for (const char* column : {"iteration", "landmark_error", "mean_landmark_error", "position_error", "ex", "ey", "ez",
+                             "runtime_ms", "t_init_ms", "t_load_ms", "t_compute_ms", "t_create_ms", "t_pose_ms",
+                             "visible_points", "rlt_points", "mapped_points", "groups", "final_groups"})
+    iterations.column(column);
+  EXPECT_EQ(iterations.rows.size(), 400u);
+  EXPECT_EQ(test::read_lines(dir / "run/relative_point/trajectory.tum").size(), 400u);
+  const Table landmarks = read_table(dir / "run/relative_point/landmarks.csv");
+  EXPECT_EQ(std::vector<std::string>(landmarks.header.begin(), landmarks.header.begin() + 7),
+            (std::vector<std::string>{"id", "x", "y", "z", "true_id", "error", "level"}));
+  const Table summary = read_table(dir / "run/summary.csv");
+  ASSERT_EQ(summary.rows.size(), 1u);
+  EXPECT_EQ(summary.rows[0][summary.column("algorithm")], "relative_point");
+  EXPECT_EQ(summary.rows[0][summary.column("status")], "ok");
+  for (const char* column : {"final_landmark_error", "final_mean_landmark_error", "final_position_error", "ate_rmse",
+                             "runtime_median_ms", "runtime_p95_ms", "runtime_max_ms", "peak_rss_mb"})
+    EXPECT_GE(summary.number(0, column), 0.0) << column;
+  EXPECT_TRUE(std::filesystem::exists(dir / "run/ground_truth_path.tum"));
+}
+
+TEST(RunCommand, FinalLandmarkErrorIsTheSumOfTheMapLandmarksErrors) {
+  test::ScratchDir dir;
+  ASSERT_EQ(run_relslam(run_args(dir / "run")).exit_code, 0);
+  const Table iterations = read_table(dir / "run/relative_point/iterations.csv");
+  const Table landmarks = read_table(dir / "run/relative_point/landmarks.csv");
+  const Table truth = read_table(dir / "run/ground_truth_landmarks.csv");
+  double sum = 0;
+  int on_map = 0;
+  for (std::size_t i = 0; i < landmarks.rows.size(); ++i) {
+    const std::string level = landmarks.rows[i][landmarks.column("level")];
+    if (level != "final" && level != "temporary") continue;
+    ++on_map;
+    sum += landmarks.number(i, "error");
+    // The error is the distance to the nearest true landmark (brute force here).
+    const Eigen::Vector3d p(landmarks.number(i, "x"), landmarks.number(i, "y"), landmarks.number(i, "z"));
+    double nearest = 1e300;
+    for (std::size_t j = 0; j < truth.rows.size(); ++j)
+      nearest = std::min(nearest, (p - Eigen::Vector3d(truth.number(j, "x"), truth.number(j, "y"), truth.number(j, "z"))).norm());
+    EXPECT_NEAR(landmarks.number(i, "error"), nearest, 1e-12);
+  }
+  const std::size_t last = iterations.rows.size() - 1;
+  EXPECT_EQ(iterations.number(last, "mapped_points"), on_map);
+  EXPECT_NEAR(iterations.number(last, "landmark_error"), sum, 1e-9 * sum);
+}
+
+TEST(RunCommand, SameSeedGivesIdenticalResultsApartFromMeasuredTimes) {
+  test::ScratchDir dir;
+  ASSERT_EQ(run_relslam(run_args(dir / "a")).exit_code, 0);
+  ASSERT_EQ(run_relslam(run_args(dir / "b")).exit_code, 0);
+  for (const char* file : {"relative_point/landmarks.csv", "relative_point/trajectory.tum", "ground_truth_path.tum"})
+    EXPECT_EQ(test::read_file(dir / "a" / file), test::read_file(dir / "b" / file)) << file;
+  for (const char* file : {"relative_point/iterations.csv", "summary.csv"}) {
+    const Table a = read_table(dir / "a" / file), b = read_table(dir / "b" / file);
+    ASSERT_EQ(a.header, b.header);
+    ASSERT_EQ(a.rows.size(), b.rows.size());
+    for (std::size_t r = 0; r < a.rows.size(); ++r)
+      for (std::size_t c = 0; c < a.header.size(); ++c)
+        if (!is_timing(a.header[c])) {
+          ASSERT_EQ(a.rows[r][c], b.rows[r][c]) << file << " row " << r << " " << a.header[c];
+        }
+  }
+}
+
+TEST(RunCommand, NoiseFreeRunScoresZeroErrors) {
+  test::ScratchDir dir;
+  ASSERT_EQ(run_relslam(run_args(dir / "run", {"--set", "sim.noise_sigma=0", "--set", "relative_point.compensated_bound=0.001",
+                                               "--set", "relative_point.global_bound=0.001"}))
+                .exit_code,
+            0);
+  const Table iterations = read_table(dir / "run/relative_point/iterations.csv");
+  for (std::size_t r = 0; r < iterations.rows.size(); ++r) {
+    ASSERT_LT(iterations.number(r, "mean_landmark_error"), 1e-9) << "row " << r;
+    ASSERT_LT(iterations.number(r, "position_error"), 1e-9) << "row " << r;
+  }
+}
+
+TEST(RunCommand, AScenarioWithoutAlgorithmsIsABadInput) {
+  test::ScratchDir dir;
+  const auto r = run_relslam(run_args(dir / "run", {"--set", "algorithms=[]"}));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--set: algorithms: the scenario lists no algorithm to run"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace relslam
