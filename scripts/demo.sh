@@ -2,7 +2,8 @@
 # The main job for a new user: install what is missing, build, run the default experiment,
 # plot it, and say where everything is.
 #   scripts/demo.sh [--out DIR]        (default runs/demo)
-# Default experiment: the one-loop figure eight, S-F8 (scenarios/s-f8.json).
+# Default experiment: the Relative Point algorithm on one loop of the figure eight, S-F8
+# (scenarios/s-f8.json), scored against the simulator's truth.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=runs/demo
@@ -18,12 +19,15 @@ done
 scripts/setup.sh
 scripts/build.sh build
 echo
-./build/relslam simulate "$scenario" --out "$out" --force
+./build/relslam run "$scenario" --out "$out" --force
 /usr/bin/python3 scripts/plot/simulation.py --run "$out"
+/usr/bin/python3 scripts/plot/run.py --run "$out"
 echo
 echo "Results in $out/:"
-echo "  ground_truth_path.tum       robot path (TUM; try: evo_traj tum $out/ground_truth_path.tum)"
-echo "  observations.csv, .rawlog   what the robot saw, per iteration (CSV and MRPT rawlog)"
-echo "  sim_iterations.csv          pose and visible-point count per iteration"
-echo "  plots/*.png                 top view, side view, visible points"
-echo "  manifest.json               scenario, seed, git revision, library versions"
+echo "  summary.csv                      one row per algorithm: errors, ATE, run time, memory"
+echo "  relative_point/iterations.csv    errors, timings and counts per iteration"
+echo "  relative_point/landmarks.csv     the map: position, true landmark, error, group level"
+echo "  relative_point/trajectory.tum    estimated path (evo: evo_ape tum $out/ground_truth_path.tum $out/relative_point/trajectory.tum)"
+echo "  ground_truth_*, observations.*   the simulated truth and what the robot saw (CSV and MRPT rawlog)"
+echo "  plots/*.png                      errors, run time, top view, visible points"
+echo "  manifest.json                    scenario, seed, git revision, library versions"

@@ -1,0 +1,79 @@
+#!/usr/bin/python3
+"""Plots a `relslam run` folder: landmark error, position error and run time per iteration,
+one line per algorithm (every algorithm listed in summary.csv).
+
+Usage: scripts/plot/run.py --run runs/demo [--out runs/demo/plots]
+"""
+import argparse
+import csv
+import os
+
+import matplotlib.pyplot as plt
+
+import relslam_plot as rp
+
+COLUMNS = ["iteration", "landmark_error", "mean_landmark_error", "position_error", "ex", "ey", "ez", "runtime_ms"]
+
+
+def algorithms(run):
+    with open(os.path.join(run, "summary.csv"), newline="") as f:
+        return [row["algorithm"] for row in csv.DictReader(f)]
+
+
+def moving_average(values, width):
+    out, total = [], 0.0
+    for i, v in enumerate(values):
+        total += v
+        if i >= width:
+            total -= values[i - width]
+        out.append(total / min(i + 1, width))
+    return out
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--run", required=True, help="run folder written by relslam run")
+    parser.add_argument("--out", help="output folder (default: RUN/plots)")
+    args = parser.parse_args()
+    out = args.out or os.path.join(args.run, "plots")
+    name = rp.read_manifest(args.run)["scenario"]["name"]
+    data = {a: rp.read_columns(os.path.join(args.run, a, "iterations.csv"), COLUMNS) for a in algorithms(args.run)}
+    written = []
+
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(10, 6), sharex=True)
+    for a, d in data.items():
+        top.plot(d["iteration"], d["landmark_error"], lw=1, label=a)
+        bottom.plot(d["iteration"], d["mean_landmark_error"], lw=1, label=a)
+    top.set_ylabel("landmark error (units, sum)")
+    bottom.set_ylabel("per landmark (units)")
+    bottom.set_xlabel("iteration")
+    top.legend(fontsize=8)
+    top.set_title(f"{name}: landmark error (sum of distances to the nearest true landmark)")
+    written.append(rp.save(fig, out, "landmark_error"))
+
+    fig, axes = plt.subplots(4, 1, figsize=(10, 8), sharex=True)
+    for a, d in data.items():
+        for ax, column in zip(axes, ["position_error", "ex", "ey", "ez"]):
+            ax.plot(d["iteration"], d[column], lw=0.8, label=a)
+    for ax, label in zip(axes, ["position error", "x error", "y error (up)", "z error"]):
+        ax.set_ylabel(f"{label} (units)", fontsize=8)
+    axes[-1].set_xlabel("iteration")
+    axes[0].legend(fontsize=8)
+    axes[0].set_title(f"{name}: position error, estimate minus truth (thesis Figs 130-135)")
+    written.append(rp.save(fig, out, "position_error"))
+
+    fig, ax = plt.subplots(figsize=(10, 3.5))
+    for a, d in data.items():
+        ax.plot(d["iteration"], moving_average(d["runtime_ms"], 12), lw=0.8, label=f"{a} (12-iteration mean)")
+    ax.set_xlabel("iteration")
+    ax.set_ylabel("run time per iteration (ms)")
+    ax.legend(fontsize=8)
+    ax.set_title(f"{name}: run time (algorithm only)")
+    written.append(rp.save(fig, out, "runtime"))
+
+    for p in written:
+        print(f"plot: wrote {p}")
+
+
+if __name__ == "__main__":
+    main()
