@@ -189,6 +189,8 @@ std::vector<ScenarioKey> relative_point_keys() {
           "relative_point.compensate_motion", "predict local candidates by the fitted frame motion (beyond the thesis)"),
       number<&Scenario::relative_point, &PointSlamOptions::compensated_bound>(
           "relative_point.compensated_bound", "local bound after motion compensation, units (noise only)"),
+      number<&Scenario::relative_point, &PointSlamOptions::motion_outlier_cut>(
+          "relative_point.motion_outlier_cut", "motion fit keeps pairs within this many median residuals"),
       number<&Scenario::relative_point, &PointSlamOptions::global_bound>(
           "relative_point.global_bound", "global matching bound, units (thesis 6.5.1)"),
       number<&Scenario::relative_point, &PointSlamOptions::local_cell_size>(

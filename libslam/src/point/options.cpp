@@ -23,6 +23,7 @@ std::vector<OptionIssue> check(const PointSlamOptions& o) {
   require_above(issues, "local_bound", o.local_bound, 0.0);
   require_above(issues, "compensated_bound", o.compensated_bound, 0.0);
   require_at_most(issues, "compensated_bound", o.compensated_bound, o.local_bound);
+  require_above(issues, "motion_outlier_cut", o.motion_outlier_cut, 1.0);
   require_above(issues, "global_bound", o.global_bound, 0.0);
   require_at_least(issues, "local_cell_size", o.local_cell_size, o.local_bound);
   require_at_least(issues, "global_cell_size", o.global_cell_size, o.global_bound);

@@ -8,10 +8,6 @@
 namespace relslam::point {
 namespace {
 
-// Motion fits keep pairs within this many median residuals (one refit) [C]: a few wrong first-pass
-// pairs must not tilt the estimate.
-constexpr double kResidualCut = 3.0;
-
 }  // namespace
 
 const Eigen::Vector3d* global_match_position(const RltPoint& p, bool match_unmapped) {
@@ -98,7 +94,7 @@ std::optional<Rigid3> PointMatcher::robust_motion(const std::vector<Eigen::Vecto
   for (std::size_t i = 0; i < from.size(); ++i) residuals.push_back((*fit * from[i] - to[i]).norm());
   std::vector<double> sorted = residuals;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-  const double cut = kResidualCut * sorted[sorted.size() / 2] + 1e-12;
+  const double cut = options_.motion_outlier_cut * sorted[sorted.size() / 2] + 1e-12;
   std::vector<Eigen::Vector3d> kept_from, kept_to;
   for (std::size_t i = 0; i < from.size(); ++i)
     if (residuals[i] <= cut) kept_from.push_back(from[i]), kept_to.push_back(to[i]);

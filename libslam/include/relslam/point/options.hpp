@@ -46,6 +46,9 @@ struct PointSlamOptions {
   // it the closest pair still wins; a smaller bound also stops a new landmark from taking the
   // place of a vanished neighbour (noise-free runs can use a tiny one).
   double compensated_bound = 1.0;
+  // The motion fit keeps first-pass pairs within this many median residuals, then refits once,
+  // so a few wrong first-pass matches cannot tilt it [C].
+  double motion_outlier_cut = 3.0;
   // Global matching bound, units: room for the map error accumulated since a place was last
   // seen (loop closure) [C, spec A9].
   double global_bound = 2.0;
