@@ -1,6 +1,7 @@
 #include "relslam/eval/app.hpp"
 
 #include "relslam/eval/build_info.hpp"
+#include "relslam/eval/commands/bench_binning.hpp"
 #include "relslam/eval/commands/rawlog_info.hpp"
 #include "relslam/eval/commands/run.hpp"
 #include "relslam/eval/commands/simulate.hpp"
@@ -27,6 +28,7 @@ Examples:
   relslam simulate scenarios/s-f8.json --out runs/f8-dense --set sim.density=550
   relslam scenario scenarios/s-dyn.json --set sim.dynamic.count=3
   relslam rawlog runs/f8/observations.rawlog --csv runs/f8/from_rawlog.csv
+  relslam bench-binning scenarios/s-bin.json --out runs/s-bin
 
 Exit codes: 0 ok, 2 bad input (the message names the file, line and key), 1 internal error.)";
 
@@ -63,6 +65,8 @@ int run_cli(int argc, const char* const* argv) {
   add_scenario(app, scenario);
   RawlogArgs rawlog;
   add_rawlog(app, rawlog);
+  BenchBinningArgs bench_binning;
+  add_bench_binning(app, bench_binning);
   bool markdown = false;
   CLI::App* keys = app.add_subcommand("keys", "List every scenario key with its type, default and meaning");
   keys->add_flag("--markdown", markdown, "Markdown table (the one in README.md)");
@@ -79,6 +83,7 @@ int run_cli(int argc, const char* const* argv) {
     if (app.got_subcommand("run")) return run_run(run, command_line);
     if (app.got_subcommand("scenario")) return run_scenario(scenario);
     if (app.got_subcommand("rawlog")) return run_rawlog(rawlog);
+    if (app.got_subcommand("bench-binning")) return run_bench_binning(bench_binning, command_line);
     if (app.got_subcommand("keys")) {
       if (markdown) {
         std::cout << scenario_keys_markdown();

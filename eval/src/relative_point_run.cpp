@@ -25,14 +25,18 @@ class RelativePointRun final : public AlgorithmRun {
  public:
   RelativePointRun(const Scenario& scenario, const LandmarkTruth& truth, const std::filesystem::path& dir)
       : dir_(dir),
+        truth_dynamic_(truth.positions.size(), false),
         mapper_(scenario.relative_point),
         scorer_(truth),
         iterations_(dir / "iterations.csv",
                     {"iteration", "landmark_error", "mean_landmark_error", "position_error", "ex", "ey", "ez",
                      "runtime_ms", "t_init_ms", "t_load_ms", "t_compute_ms", "t_create_ms", "t_pose_ms",
                      "visible_points", "rlt_points", "mapped_points", "groups", "final_groups", "groups_alive",
-                     "temporary_groups_alive", "new_points", "local_matches", "global_matches", "pose_source"}),
-        trajectory_(dir / "trajectory.tum") {}
+                     "temporary_groups_alive", "new_points", "local_matches", "global_matches", "pose_source",
+                     "t_merge_ms", "t_binning_ms", "binning_comparisons", "dynamic_flagged", "merges"}),
+        trajectory_(dir / "trajectory.tum") {
+    for (int id : truth.dynamic_ids) truth_dynamic_[id] = true;
+  }
 
   const std::string& name() const override { return name_; }
 
@@ -55,7 +59,8 @@ class RelativePointRun final : public AlgorithmRun {
     iterations_.row(r.iteration, s.landmark_error, s.mean_landmark_error, s.position_error, s.axis_error.x(),
                     s.axis_error.y(), s.axis_error.z(), runtime_ms, t.init_ms, t.load_ms, t.compute_ms, t.create_ms,
                     t.pose_ms, observation.points.size(), points.size(), s.landmarks_on_map, g.created, g.final_created,
-                    g.alive, g.temporary_alive, r.new_points, r.local_matches, r.global_matches, pose_source(r.pose_source));
+                    g.alive, g.temporary_alive, r.new_points, r.local_matches, r.global_matches, pose_source(r.pose_source),
+                    t.merge_ms, t.binning_ms, r.binning_comparisons, g.dynamic_points, g.merged_points);
     trajectory_.write(static_cast<double>(r.iteration), r.world_T_robot);
   }
 
@@ -63,7 +68,8 @@ class RelativePointRun final : public AlgorithmRun {
     iterations_.close();
     trajectory_.close();
     CsvWriter landmarks(dir_ / "landmarks.csv", {"id", "x", "y", "z", "true_id", "error", "level", "observations",
-                                                 "first_iteration", "last_iteration", "owner_group"});
+                                                 "first_iteration", "last_iteration", "owner_group", "dynamic_flagged",
+                                                 "true_dynamic", "merged_into"});
     std::vector<int> on_map;
     for (const RltPoint& p : mapper_.points()) {
       const bool mapped = p.has_global;
@@ -71,9 +77,11 @@ class RelativePointRun final : public AlgorithmRun {
       const std::optional<double> x = mapped ? std::optional(p.global.x()) : std::nullopt;
       const std::optional<double> y = mapped ? std::optional(p.global.y()) : std::nullopt;
       const std::optional<double> z = mapped ? std::optional(p.global.z()) : std::nullopt;
-      landmarks.row(p.id, x, y, z, scorer_.majority_truth(p.id), scorer_.error_of(p.id), level_of(p, mapper_),
-                    p.interval.total(), p.interval.first(), p.interval.last(),
-                    p.owner >= 0 ? std::optional(p.owner) : std::nullopt);
+      const int truth = scorer_.majority_truth(p.id);
+      landmarks.row(p.id, x, y, z, truth, scorer_.error_of(p.id), level_of(p, mapper_), p.interval.total(),
+                    p.interval.first(), p.interval.last(), p.owner >= 0 ? std::optional(p.owner) : std::nullopt,
+                    p.dynamic, truth >= 0 && truth_dynamic_[truth],
+                    p.merged ? std::optional(p.merged_into) : std::nullopt);
     }
     landmarks.close();
     SummaryRow row;
@@ -99,6 +107,7 @@ class RelativePointRun final : public AlgorithmRun {
 
   std::string name_ = "relative_point";
   std::filesystem::path dir_;
+  std::vector<bool> truth_dynamic_;  // by true landmark id
   RltMapper mapper_;
   RunScorer scorer_;
   CsvWriter iterations_;

@@ -137,6 +137,8 @@ void check_semantics(const LoadedScenario& loaded) {
   for (const OptionIssue& issue : sim::check(loaded.scenario.sim)) errors.push_back(loaded.error("sim." + issue.field, issue.problem));
   for (const OptionIssue& issue : point::check(loaded.scenario.relative_point))
     errors.push_back(loaded.error("relative_point." + issue.field, issue.problem));
+  for (const OptionIssue& issue : check(loaded.scenario.binning_bench))
+    errors.push_back(loaded.error("binning_bench." + issue.field, issue.problem));
   if (errors.empty()) return;
   if (errors.size() == 1) throw errors.front();
   // Report every problem at once; the first one is the error's own location.

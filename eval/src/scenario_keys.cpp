@@ -5,6 +5,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 namespace relslam::eval {
 namespace {
@@ -125,6 +126,35 @@ ScenarioKey text(std::string key, std::string help) {
   return bind<Path...>(std::move(key), "string", std::move(help), true, parse_text, as_is);
 }
 
+// A non-empty list of numbers (positive integers when Integral).
+template <class T>
+std::string parse_list(const json& v, std::vector<T>& out) {
+  const char* what = std::is_integral_v<T> ? "a non-empty list of integers >= 1" : "a non-empty list of numbers";
+  if (!v.is_array() || v.empty()) return expected(what, v);
+  std::vector<T> values;
+  for (const json& item : v) {
+    if constexpr (std::is_integral_v<T>) {
+      int i = 0;
+      if (!parse_integer(item, i).empty() || i < 1) return expected(what, v);
+      values.push_back(i);
+    } else {
+      if (!item.is_number()) return expected(what, v);
+      values.push_back(item.get<double>());
+    }
+  }
+  out = std::move(values);
+  return "";
+}
+
+template <auto... Path>
+ScenarioKey integer_list(std::string key, std::string help) {
+  return bind<Path...>(std::move(key), "list of integers", std::move(help), false, parse_list<int>, as_is);
+}
+template <auto... Path>
+ScenarioKey number_list(std::string key, std::string help) {
+  return bind<Path...>(std::move(key), "list of numbers", std::move(help), false, parse_list<double>, as_is);
+}
+
 // An enum spelled by name; ToString/Parse are the enum's own conversions.
 template <auto ToString, auto Parse, auto... Path>
 ScenarioKey choice(std::string key, std::string help, const std::vector<std::string>& names) {
@@ -158,6 +188,15 @@ std::optional<point::BasisSelection> parse_basis(std::string_view name) {
   return std::nullopt;
 }
 
+constexpr auto local_index_name = static_cast<std::string_view (*)(spatial::LocalIndexKind)>(&spatial::to_string);
+constexpr auto global_index_name = static_cast<std::string_view (*)(spatial::GlobalIndexKind)>(&spatial::to_string);
+std::string_view pairing_name(point::BinPairing p) { return p == point::BinPairing::Disjoint ? "disjoint" : "every_bin"; }
+std::optional<point::BinPairing> parse_pairing(std::string_view name) {
+  if (name == "disjoint") return point::BinPairing::Disjoint;
+  if (name == "every_bin") return point::BinPairing::EveryBin;
+  return std::nullopt;
+}
+
 // The keys of one group level, relative_point.<level>.<field>.
 template <auto Level>
 void add_level_keys(std::vector<ScenarioKey>& keys, const std::string& level, const std::string& what) {
@@ -176,6 +215,8 @@ void add_level_keys(std::vector<ScenarioKey>& keys, const std::string& level, co
       p + "prev_max", what + ": PrevGroupMax, previously mapped members kept"));
   keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::next_min>(
       p + "next_min", what + ": NextGroupMin, ungrouped members needed"));
+  keys.push_back(boolean<&Scenario::relative_point, Level, &GroupLevelOptions::binning>(
+      p + "binning", what + ": RltBinning removes dynamic members (thesis 6.5.3)"));
 }
 
 std::vector<ScenarioKey> relative_point_keys() {
@@ -210,6 +251,35 @@ std::vector<ScenarioKey> relative_point_keys() {
       "relative_point.match_unmapped", "global matching also finds unmapped points (beyond the thesis)"));
   keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::pose_from_unmapped>(
       "relative_point.pose_from_unmapped", "pose from unmapped points when < 3 mapped are seen (beyond the thesis)"));
+  keys.push_back(choice<local_index_name, spatial::parse_local_index, &Scenario::relative_point, &PointSlamOptions::local_index>(
+      "relative_point.local_index", "local matching index (thesis 6.6.2)", {"quadtree", "octree", "kdtree"}));
+  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::octree_cell_size>(
+      "relative_point.octree_cell_size", "octree cell, units"));
+  keys.push_back(choice<global_index_name, spatial::parse_global_index, &Scenario::relative_point, &PointSlamOptions::global_index>(
+      "relative_point.global_index", "global index: incremental (thesis 6.5.1) or rebuilt each iteration (Fig 110)",
+      {"incremental", "rebuilt"}));
+  using point::BinningOptions;
+  keys.push_back(choice<pairing_name, parse_pairing, &Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::pairing>(
+      "relative_point.binning.pairing", "bins meet disjointly per round, or every bin initiates (spec 5.7)",
+      {"disjoint", "every_bin"}));
+  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::abs_gap>(
+      "relative_point.binning.abs_gap", "threshold gap, absolute part, units"));
+  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::rel_gap>(
+      "relative_point.binning.rel_gap", "threshold gap, relative part"));
+  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::threshold_margin>(
+      "relative_point.binning.threshold_margin", "threshold gets half the minimum gap as a margin"));
+  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::min_pair_samples>(
+      "relative_point.binning.min_pair_samples", "common observations a pair needs"));
+  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::majority_fraction>(
+      "relative_point.binning.majority_fraction", "a bin holding more than this share ends the pairing (thesis: 0.5)"));
+  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::priority_heuristic>(
+      "relative_point.binning.priority_heuristic", "bins that merged initiate the next round (thesis 6.5.3)"));
+  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::merge_points>(
+      "relative_point.merge_points", "merge new points into older ones found at the same place (thesis 6.5.2)"));
+  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::merge_delay>(
+      "relative_point.merge_delay", "iterations after creation a point is checked for merging"));
+  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::merge_bound>(
+      "relative_point.merge_bound", "merging bound, units"));
   keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::ring_capacity>(
       "relative_point.ring_capacity", "observations kept per RltPoint"));
   keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::charting_capacity>(
@@ -297,6 +367,8 @@ std::vector<ScenarioKey> build_keys() {
           "sim.frustum.far_cap", "far end: flat plane z <= far, or range |p| <= far", {"plane", "range"}),
       integer<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::count>(
           "sim.dynamic.count", "dynamic points chosen among those visible at iteration 0 (S-DYN: 2)"),
+      integer<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::count_visible_for>(
+          "sim.dynamic.count_visible_for", "counted movers are seen at iteration 0 and this many iterations later"),
       number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::fraction>(
           "sim.dynamic.fraction", "share of all points made dynamic (S-DYN3: 0.03)"),
       number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::amplitude>("sim.dynamic.amplitude",
@@ -316,6 +388,22 @@ std::vector<ScenarioKey> build_keys() {
       boolean<&Scenario::output, &OutputOptions::rawlog_gzip>("output.rawlog_gzip", "gzip-compress the rawlog"),
   };
   for (ScenarioKey& k : relative_point_keys()) keys.push_back(std::move(k));
+  using B = BinningBenchOptions;
+  const std::vector<ScenarioKey> bench = {
+      integer_list<&Scenario::binning_bench, &B::points>("binning_bench.points", "S-BIN: points per binning (Fig 111's x)"),
+      number_list<&Scenario::binning_bench, &B::percentages>("binning_bench.percentages",
+                                                              "S-BIN: shares of uncorrelated points, percent"),
+      integer<&Scenario::binning_bench, &B::seeds>("binning_bench.seeds", "S-BIN: repetitions per cell"),
+      integer<&Scenario::binning_bench, &B::iterations>("binning_bench.iterations", "S-BIN: observations per point"),
+      number<&Scenario::binning_bench, &B::static_sigma>("binning_bench.static_sigma", "S-BIN: jitter of every point, units"),
+      number<&Scenario::binning_bench, &B::noisy_sigma>("binning_bench.noisy_sigma",
+                                                         "S-BIN: extra jitter of uncorrelated points, units"),
+      boolean<&Scenario::binning_bench, &B::correlated>("binning_bench.correlated",
+                                                        "S-BIN: add Fig 114's mix with 4 correlated groups"),
+      number<&Scenario::binning_bench, &B::correlated_step_sigma>("binning_bench.correlated_step_sigma",
+                                                                  "S-BIN: random-walk step of a correlated group, units"),
+  };
+  keys.insert(keys.end(), bench.begin(), bench.end());
   return keys;
 }
 

@@ -60,6 +60,7 @@ std::vector<OptionIssue> check(const SimOptions& o) {
 
   const DynamicOptions& d = o.dynamic;
   require_at_least(issues, "dynamic.count", d.count, 0);
+  require_at_least(issues, "dynamic.count_visible_for", d.count_visible_for, 0);
   require_at_least(issues, "dynamic.fraction", d.fraction, 0.0);
   require_at_most(issues, "dynamic.fraction", d.fraction, 1.0);
   if (d.count > 0 && d.fraction > 0)

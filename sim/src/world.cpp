@@ -63,13 +63,18 @@ World::World(const SimOptions& o, const Path& path, std::uint64_t seed) {
   std::vector<int> pool;
   int wanted = 0;
   if (d.count > 0) {
-    // Among the points seen at iteration 0 (noise-free), like the thesis's early movers.
+    // Among the points seen at iteration 0 and still seen count_visible_for iterations later
+    // (noise-free), like the thesis's early movers that stayed in view.
+    const int later = std::min(d.count_visible_for, path.iterations() - 1);
+    const Rigid3 start = path.world_T_robot(0), then = path.world_T_robot(later);
     for (int j = 0; j < n; ++j)
-      if (o.frustum.contains(path.world_T_robot(0).inverse_apply(anchors_[j]))) pool.push_back(j);
+      if (o.frustum.contains(start.inverse_apply(anchors_[j])) && o.frustum.contains(then.inverse_apply(anchors_[j])))
+        pool.push_back(j);
     wanted = d.count;
     if (wanted > static_cast<int>(pool.size()))
       throw OptionError("dynamic.count", std::to_string(wanted) + " dynamic points requested but only " +
-                                             std::to_string(pool.size()) + " points are visible at iteration 0");
+                                             std::to_string(pool.size()) + " points are visible at iteration 0 and " +
+                                             std::to_string(later));
   } else {
     for (int j = 0; j < n; ++j) pool.push_back(j);
     wanted = static_cast<int>(std::lround(d.fraction * n));

@@ -5,6 +5,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <set>
+
 namespace relslam::point {
 namespace {
 
@@ -22,7 +24,8 @@ TEST(PointMatcher, MotionCompensationKeepsCloseLandmarksApart) {
     PointSlamOptions o;
     o.compensate_motion = compensate;
     PointMatcher matcher(o);
-    spatial::IncrementalOVLPQuadTree global(o.global_cell_size, o.global_bound);
+    auto global_index = spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
+    auto& global = *global_index;
     std::vector<RltPoint> points;  // landmark i is RltPoint i
     std::vector<LocalCandidate> candidates;
     int swaps = 0;
@@ -58,7 +61,8 @@ TEST(PointMatcher, MotionCompensationKeepsCloseLandmarksApart) {
 TEST(PointMatcher, GlobalMatchingFindsAMappedPointThroughThePose) {
   PointSlamOptions o;
   PointMatcher matcher(o);
-  spatial::IncrementalOVLPQuadTree global(o.global_cell_size, o.global_bound);
+  auto global_index = spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
+    auto& global = *global_index;
   std::vector<RltPoint> points(1);
   points[0].id = 0;
   points[0].observations.push({Eigen::Vector3d(0, 0, 10), 0});
@@ -80,7 +84,8 @@ TEST(PointMatcher, OneObservationPerPointAndViceVersa) {
   PointSlamOptions o;
   o.compensate_motion = false;
   PointMatcher matcher(o);
-  spatial::IncrementalOVLPQuadTree global(o.global_cell_size, o.global_bound);
+  auto global_index = spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
+    auto& global = *global_index;
   std::vector<RltPoint> points(1);
   points[0].observations.push({Eigen::Vector3d(0, 0, 10), 0});
   matcher.prepare({{0, {0, 0, 10}, 0}}, 1);
@@ -88,6 +93,59 @@ TEST(PointMatcher, OneObservationPerPointAndViceVersa) {
   const MatchResult& r = matcher.match({Eigen::Vector3d(0.5, 0, 10), Eigen::Vector3d(0.1, 0, 10)}, 1, global, points,
                                        Rigid3::identity());
   EXPECT_EQ(r.assigned, (std::vector<PointId>{kNone, 0}));
+}
+
+}  // namespace
+}  // namespace relslam::point
+
+namespace relslam::point {
+namespace {
+
+// Brute force: every (observation, candidate) pair within the bound, closest first.
+std::vector<PointId> brute_force_matches(const std::vector<Eigen::Vector3d>& obs, const std::vector<LocalCandidate>& cands,
+                                         double bound) {
+  struct Pair {
+    double d;
+    int i;
+    PointId id;
+  };
+  std::vector<Pair> pairs;
+  for (int i = 0; i < static_cast<int>(obs.size()); ++i)
+    for (const LocalCandidate& c : cands)
+      if (const double d = (obs[i] - c.p).norm(); d <= bound) pairs.push_back({d, i, c.id});
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
+    return a.d != b.d ? a.d < b.d : (a.i != b.i ? a.i < b.i : a.id < b.id);
+  });
+  std::vector<PointId> assigned(obs.size(), kNone);
+  std::set<PointId> taken;
+  for (const Pair& p : pairs)
+    if (assigned[p.i] == kNone && !taken.count(p.id)) assigned[p.i] = p.id, taken.insert(p.id);
+  return assigned;
+}
+
+TEST(PointMatcher, EveryLocalIndexGivesTheBruteForceMatches) {
+  sim::RandomSequence rng(702, sim::Stream::Field);
+  for (spatial::LocalIndexKind kind : {spatial::LocalIndexKind::Quadtree, spatial::LocalIndexKind::Octree, spatial::LocalIndexKind::KdTree})
+    for (int trial = 0; trial < 10; ++trial) {
+      std::vector<LocalCandidate> cands;
+      std::vector<Eigen::Vector3d> obs;
+      for (int i = 0; i < 300; ++i) {
+        cands.push_back({i, {rng.uniform(-60, 60), rng.uniform(-5, 5), rng.uniform(1, 100)}, 9});
+        if (rng.uniform() < 0.8)
+          obs.push_back(cands.back().p + 0.5 * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian()));
+      }
+      PointSlamOptions o;
+      o.compensate_motion = false;  // the thesis's single pass: exactly the brute-force rule
+      o.local_index = kind;
+      PointMatcher matcher(o);
+      auto global = spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
+      std::vector<RltPoint> points(cands.size());
+      for (const LocalCandidate& c : cands) points[c.id].observations.push({c.p, 9});
+      matcher.prepare(cands, 10);
+      EXPECT_EQ(matcher.match(obs, 10, *global, points, Rigid3::identity()).assigned,
+                brute_force_matches(obs, cands, o.local_bound))
+          << spatial::to_string(kind) << " trial " << trial;
+    }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Whole-run behaviour of the Relative Point algorithm on simulated figure eights (label
 // `scenario`: about a second each in a Release build).
+#include "mapper_run.hpp"
 #include "relslam/point/rlt_mapper.hpp"
 
 #include "relslam/sim/random.hpp"
@@ -13,74 +14,6 @@
 
 namespace relslam::point {
 namespace {
-
-struct RunReport {
-  double worst_position_error = 0;
-  int worst_position_iteration = -1;
-  double worst_mean_landmark_error = 0;  // per mapped landmark, against its true landmark
-  double final_mean_landmark_error = 0;
-  int rlt_points = 0;
-  int distinct_landmarks_seen = 0;
-  int mapped = 0;
-  int duplicated_on_map = 0;            // mapped RltPoints beyond one per true landmark
-  int long_seen_unmapped = 0;           // landmarks observed >= 20 times without a mapped RltPoint
-  int global_matches_last_quarter = 0;  // loop closure: points recognised when the start returns
-  std::vector<StepResult> steps;
-  std::vector<Eigen::Vector3d> final_map;
-};
-
-// The true landmark an RltPoint stands for: the one behind most of its observations.
-int majority(const std::map<int, int>& votes) {
-  int best = -1, count = 0;
-  for (const auto& [id, n] : votes)
-    if (n > count) best = id, count = n;
-  return best;
-}
-
-RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const PointSlamOptions& options,
-              const Rigid3& sensor_T_robot = Rigid3::identity(), bool errors_every_iteration = false) {
-  const sim::Simulator sim(sim_options, seed);
-  RltMapper mapper(options);
-  RunReport report;
-  std::vector<std::map<int, int>> votes;
-  std::map<int, int> seen;
-  for (int k = 0; k < sim.iterations(); ++k) {
-    sim::SimFrame f = sim.frame(k);
-    for (Eigen::Vector3d& p : f.observation.points) p = sensor_T_robot * p;
-    StepResult r = mapper.step(f.observation);
-    votes.resize(mapper.points().size());
-    for (std::size_t i = 0; i < r.assignment.size(); ++i) {
-      ++votes[r.assignment[i]][f.truth.landmark_ids[i]];
-      ++seen[f.truth.landmark_ids[i]];
-    }
-    const Rigid3 estimate = sensor_T_robot.inverse() * r.world_T_robot * sensor_T_robot;
-    const double position_error = (estimate.translation - f.truth.world_T_robot.translation).norm();
-    if (position_error > report.worst_position_error) report.worst_position_error = position_error, report.worst_position_iteration = k;
-    if (k >= sim.iterations() * 3 / 4) report.global_matches_last_quarter += r.global_matches;
-    if (errors_every_iteration || k + 1 == sim.iterations()) {
-      double sum = 0;
-      int n = 0;
-      for (const RltPoint& p : mapper.points())
-        if (p.on_map()) sum += (sensor_T_robot.inverse() * p.global - sim.world().position(majority(votes[p.id]), k)).norm(), ++n;
-      const double mean = n ? sum / n : 0.0;
-      report.worst_mean_landmark_error = std::max(report.worst_mean_landmark_error, mean);
-      report.final_mean_landmark_error = mean;
-    }
-    report.steps.push_back(std::move(r));
-  }
-  report.rlt_points = static_cast<int>(mapper.points().size());
-  report.distinct_landmarks_seen = static_cast<int>(seen.size());
-  std::map<int, int> on_map;
-  for (const RltPoint& p : mapper.points()) {
-    report.final_map.push_back(p.has_global ? Eigen::Vector3d(sensor_T_robot.inverse() * p.global) : Eigen::Vector3d::Zero());
-    if (!p.on_map()) continue;
-    ++report.mapped;
-    ++on_map[majority(votes[p.id])];
-  }
-  for (const auto& [id, n] : on_map) report.duplicated_on_map += n - 1;
-  for (const auto& [id, n] : seen) report.long_seen_unmapped += n >= 20 && !on_map.count(id);
-  return report;
-}
 
 sim::SimOptions one_loop(double noise) {
   sim::SimOptions o;
@@ -185,6 +118,35 @@ TEST(RltMapper, IterationsMustIncrease) {
   RltMapper mapper;
   mapper.step({5, {}});
   EXPECT_THROW(mapper.step({5, {}}), std::logic_error);
+}
+
+}  // namespace
+}  // namespace relslam::point
+
+namespace relslam::point {
+namespace {
+
+// The indexes only narrow the candidates; matching tests exact distances, so every variant
+// must give the very same run (thesis 6.6.2 compares their speed, not their results).
+TEST(RltMapper, EveryIndexVariantGivesTheSameRun) {
+  sim::SimOptions o = one_loop(0.1);
+  o.iterations = 700;
+  const RunReport reference = run(o, 6, PointSlamOptions{});
+  for (spatial::LocalIndexKind local : {spatial::LocalIndexKind::Octree, spatial::LocalIndexKind::KdTree})
+    for (spatial::GlobalIndexKind global : {spatial::GlobalIndexKind::Incremental, spatial::GlobalIndexKind::Rebuilt}) {
+      PointSlamOptions options;
+      options.local_index = local;
+      options.global_index = global;
+      const RunReport variant = run(o, 6, options);
+      ASSERT_EQ(variant.steps.size(), reference.steps.size());
+      for (std::size_t k = 0; k < reference.steps.size(); ++k)
+        ASSERT_EQ(variant.steps[k].assignment, reference.steps[k].assignment)
+            << spatial::to_string(local) << "/" << spatial::to_string(global) << " iteration " << k;
+      EXPECT_EQ(variant.final_map, reference.final_map);
+    }
+  PointSlamOptions small_quads;
+  small_quads.local_cell_size = 1.5;
+  EXPECT_EQ(run(o, 6, small_quads).final_map, reference.final_map);
 }
 
 }  // namespace

@@ -51,6 +51,7 @@ TEST(World, DynamicCountPicksPointsVisibleAtTheStart) {
   ASSERT_EQ(world.dynamic_count(), 2);
   for (int id : world.dynamic_ids()) {
     EXPECT_TRUE(o.frustum.contains(world.anchors()[id])) << "id " << id;
+    EXPECT_TRUE(o.frustum.contains(path.world_T_robot(100).inverse_apply(world.anchors()[id]))) << "still seen at 100";
     // It moves: positions differ across iterations, but stay within the amplitude per axis.
     double moved = 0;
     for (int k = 0; k < 400; k += 10) {
@@ -82,7 +83,7 @@ TEST(World, TooManyDynamicPointsIsAnOptionErrorOnDynamicCount) {
     FAIL() << "expected OptionError";
   } catch (const OptionError& e) {
     EXPECT_EQ(e.field(), "dynamic.count");
-    EXPECT_NE(e.problem().find("visible at iteration 0"), std::string::npos) << e.problem();
+    EXPECT_NE(e.problem().find("visible at iteration 0 and 100"), std::string::npos) << e.problem();
   }
 }
 

@@ -41,9 +41,41 @@ std::vector<Eigen::Vector3d> GroupPlanner::basis_positions(const std::vector<Poi
   return positions;
 }
 
-std::optional<GroupPlan> GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& level,
-                                            const std::vector<RltPoint>& points, RltPointCharting& charting,
-                                            BasisSelection selection, double min_basis_ratio) {
+bool GroupPlanner::keep_static(GroupPlan& plan, PointId c, int c0, int k, const GroupLevelOptions& level,
+                               const std::vector<RltPoint>& points, const BinningOptions& binning,
+                               PlanOutcome& outcome) const {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<PointId>& m = plan.members;
+  const BinningResult bins = rlt_binning(
+      static_cast<int>(m.size()),
+      [&](int i, int j) {
+        return pair_distance_std(points[m[i]].observations, points[m[j]].observations, c0, k, binning.min_pair_samples);
+      },
+      binning);
+  outcome.comparisons = bins.comparisons;
+  GroupPlan kept;
+  kept.root = plan.root;
+  int anchors = 0, fresh = 0;
+  bool c_static = false;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (!bins.is_static[i]) {
+      outcome.dynamic.push_back(m[i]);
+      continue;
+    }
+    kept.members.push_back(m[i]);
+    kept.anchor.push_back(plan.anchor[i]);
+    (plan.anchor[i] ? anchors : fresh) += 1;
+    c_static = c_static || m[i] == c;
+  }
+  outcome.binning_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  plan = std::move(kept);
+  // Enough static points left (spec A21): c itself, three anchors to register, NextGroupMin new.
+  return c_static && (plan.root || anchors >= 3) && fresh >= level.next_min;
+}
+
+PlanOutcome GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& level, const std::vector<RltPoint>& points,
+                               RltPointCharting& charting, const PointSlamOptions& options) {
+  PlanOutcome outcome;
   const GroupLevelOptions& o = *level.options;
   const int ahead = c0 + o.look_ahead;
   const int need = o.look_ahead - o.accuracy_reduction;
@@ -64,6 +96,7 @@ std::optional<GroupPlan> GroupPlanner::plan(PointId c, int c0, int k, const Leve
 
   GroupPlan plan;
   plan.root = !level.level_mapped && c0 == level.first_iteration;
+  auto no_group = [&outcome] { return std::move(outcome); };
 
   // Previously mapped candidates seen around c0, most observed first (thesis 6.4.3 step 3).
   scratch_.clear();
@@ -76,7 +109,7 @@ std::optional<GroupPlan> GroupPlanner::plan(PointId c, int c0, int k, const Leve
   rank(plan.members);
   if (static_cast<int>(plan.members.size()) > o.prev_max) plan.members.resize(o.prev_max);
   const std::size_t anchors = plan.members.size();
-  if (!plan.root && static_cast<int>(anchors) < o.prev_min) return std::nullopt;
+  if (!plan.root && static_cast<int>(anchors) < o.prev_min) return no_group();
 
   // Still-ungrouped points seen in [c0, c0 + A], c itself included (step 4).
   scratch_.clear();
@@ -92,22 +125,24 @@ std::optional<GroupPlan> GroupPlanner::plan(PointId c, int c0, int k, const Leve
     has_c = has_c || id == c;
     ranked_.push_back({n, id});
   }
-  if (!has_c || static_cast<int>(ranked_.size()) < o.next_min) return std::nullopt;
+  if (!has_c || static_cast<int>(ranked_.size()) < o.next_min) return no_group();
   rank(plan.members);
   plan.anchor.assign(plan.members.size(), false);
   std::fill(plan.anchor.begin(), plan.anchor.begin() + static_cast<std::ptrdiff_t>(anchors), true);
+  if (o.binning && !keep_static(plan, c, c0, k, o, points, options.binning, outcome)) return no_group();
 
   if (plan.root) {  // the map frame comes from the first observations: three are needed
     const auto seen_first = std::count_if(plan.members.begin(), plan.members.end(), [&](PointId id) {
       return points[id].first_observation.iteration == level.first_iteration;
     });
-    if (seen_first < 3) return std::nullopt;
+    if (seen_first < 3) return no_group();
   }
 
-  const auto basis = select_basis(basis_positions(plan.members, points, c0, k), selection, min_basis_ratio);
-  if (!basis) return std::nullopt;
+  const auto basis = select_basis(basis_positions(plan.members, points, c0, k), options.basis, options.min_basis_ratio);
+  if (!basis) return no_group();
   plan.basis = *basis;
-  return plan;
+  outcome.plan = std::move(plan);
+  return outcome;
 }
 
 }  // namespace relslam::point

@@ -1,5 +1,6 @@
 #include "relslam/point/options.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace relslam::point {
@@ -26,7 +27,15 @@ std::vector<OptionIssue> check(const PointSlamOptions& o) {
   require_above(issues, "motion_outlier_cut", o.motion_outlier_cut, 1.0);
   require_above(issues, "global_bound", o.global_bound, 0.0);
   require_at_least(issues, "local_cell_size", o.local_cell_size, o.local_bound);
-  require_at_least(issues, "global_cell_size", o.global_cell_size, o.global_bound);
+  require_at_least(issues, "global_cell_size", o.global_cell_size, std::max(o.global_bound, o.merge_bound));
+  require_at_least(issues, "octree_cell_size", o.octree_cell_size, o.local_bound);
+  require_at_least(issues, "merge_delay", o.merge_delay, 1);
+  require_above(issues, "merge_bound", o.merge_bound, 0.0);
+  require_at_least(issues, "binning.abs_gap", o.binning.abs_gap, 0.0);
+  require_at_least(issues, "binning.rel_gap", o.binning.rel_gap, 0.0);
+  require_at_least(issues, "binning.min_pair_samples", o.binning.min_pair_samples, 2);
+  require_above(issues, "binning.majority_fraction", o.binning.majority_fraction, 0.0);
+  require_at_most(issues, "binning.majority_fraction", o.binning.majority_fraction, 1.0);
   check_level(issues, "temporary_group", o.temporary_group);
   check_level(issues, "final_group", o.final_group);
   require_above(issues, "min_basis_ratio", o.min_basis_ratio, 0.0);

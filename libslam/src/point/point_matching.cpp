@@ -18,7 +18,11 @@ const Eigen::Vector3d* global_match_position(const RltPoint& p, bool match_unmap
 }
 
 PointMatcher::PointMatcher(const PointSlamOptions& options)
-    : options_(options), local_(options.local_cell_size, options.local_bound) {}
+    : options_(options),
+      local_(spatial::make_local_index(options.local_index,
+                                       options.local_index == spatial::LocalIndexKind::Octree ? options.octree_cell_size
+                                                                                               : options.local_cell_size,
+                                       options.local_bound)) {}
 
 Rigid3 PointMatcher::predicted_motion(int from, int to) const {
   // Compose the stored steps from+1 .. to; a step without an estimate repeats the newest one
@@ -44,7 +48,7 @@ void PointMatcher::prepare(const std::vector<LocalCandidate>& candidates, int k)
     slot_[c.id] = static_cast<int>(predicted_.size());
     predicted_.push_back({c.id, p});
   }
-  local_.build(predicted_);
+  local_->build(predicted_);
 }
 
 void PointMatcher::assign_greedily(int& counter) {
@@ -73,7 +77,7 @@ void PointMatcher::match_local(const std::vector<Eigen::Vector3d>& observations,
   result_.local = 0;
   pairs_.clear();
   for (int i = 0; i < static_cast<int>(observations.size()); ++i)
-    for (const spatial::IndexedPoint& c : local_.query(observations[i])) {
+    for (const spatial::IndexedPoint& c : local_->query(observations[i])) {
       const double d = (observations[i] - c.p).norm();
       if (d <= bound) pairs_.push_back({d, i, c.id});
     }
@@ -102,7 +106,7 @@ std::optional<Rigid3> PointMatcher::robust_motion(const std::vector<Eigen::Vecto
 }
 
 const MatchResult& PointMatcher::match(const std::vector<Eigen::Vector3d>& observations, int k,
-                                       const spatial::IncrementalOVLPQuadTree& global,
+                                       spatial::GlobalIndex& global,
                                        const std::vector<RltPoint>& points, const Rigid3& world_T_previous) {
   // Local, untransformed (thesis 6.2.5): the candidates predicted by the recent motion.
   match_local(observations, options_.local_bound);
@@ -114,7 +118,7 @@ const MatchResult& PointMatcher::match(const std::vector<Eigen::Vector3d>& obser
     // landmarks closer together than a frame's motion can then no longer swap.
     if (const auto correction = robust_motion(observations)) {
       for (spatial::IndexedPoint& p : predicted_) p.p = *correction * p.p;
-      local_.build(predicted_);
+      local_->build(predicted_);
       match_local(observations, options_.compensated_bound);
       result_.motion = *correction * result_.motion;
       result_.motion_estimated = true;

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <stdexcept>
 
 namespace relslam::point {
@@ -18,8 +17,6 @@ double ms_since(Clock::time_point& t) {
   return ms;
 }
 
-constexpr double kBasisEpsilon = 1e-6;  // relative degeneracy tolerance of one iteration's basis [C]
-
 const PointSlamOptions& checked(const PointSlamOptions& options) {
   const auto issues = check(options);
   if (!issues.empty())
@@ -32,8 +29,12 @@ const PointSlamOptions& checked(const PointSlamOptions& options) {
 RltMapper::RltMapper(const PointSlamOptions& options)
     : options_(checked(options)),
       charting_(options.charting_capacity),
-      global_index_(options.global_cell_size, options.global_bound),
+      global_index_(spatial::make_global_index(options.global_index, options.global_cell_size,
+                                               std::max(options.global_bound, options.merge_bound))),
       matcher_(options_) {}
+
+RltMapper::RltMapper(RltMapper&&) noexcept = default;
+RltMapper::~RltMapper() = default;
 
 StepResult RltMapper::step(const ObservationFrame& frame) {
   const int k = frame.iteration;
@@ -49,13 +50,15 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   changed_ = &result.changed;
   auto clock = Clock::now();
 
-  // [init] Local candidates: latest observations of points seen in the last few iterations.
+  // [init] Local candidates: latest observations of points seen in the last few iterations;
+  // a non-incremental global index reloads the whole map here (Fig 110).
   charting_.begin_iteration(k);
   build_local_index(k);
+  global_index_->prepare();
   result.timings.init_ms = ms_since(clock);
 
   // [load] Local, then global matching, then new RltPoints (thesis 6.2.5).
-  const MatchResult& match = matcher_.match(frame.points, k, global_index_, points_, pose_);
+  const MatchResult& match = matcher_.match(frame.points, k, *global_index_, points_, pose_);
   result.assignment = match.assigned;
   result.local_matches = match.local;
   result.global_matches = match.global;
@@ -70,6 +73,10 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
     }
   }
   result.timings.load_ms = ms_since(clock);
+
+  // [merge] New points that turned out to be old ones (thesis 6.5.2).
+  if (options_.merge_points) merge_due(k, result);
+  result.timings.merge_ms = ms_since(clock);
 
   // [compute] Groups with a new observation, oldest first so anchors are fresh (spec 5.5).
   compute_groups(k);
@@ -108,6 +115,7 @@ PointId RltMapper::create_point(const Eigen::Vector3d& p, int k) {
   point.creation_iteration = k;
   point.first_observation = {p, k};
   record(id, p, k, true);
+  if (options_.merge_points) merge_checks_.emplace_back(k + options_.merge_delay, id);
   return id;
 }
 
@@ -131,34 +139,13 @@ void RltMapper::record(PointId id, const Eigen::Vector3d& p, int k, bool returne
   }
 }
 
-void RltMapper::compute_groups(int k) {
-  std::sort(queued_groups_.begin(), queued_groups_.end());
-  for (GroupId g : queued_groups_) {
-    RltGroup& group = groups_[g];
-    if (group.accumulate(points_, k, k, kBasisEpsilon)) anchor(group);
-  }
-  queued_groups_.clear();
-}
-
-void RltMapper::anchor(RltGroup& group) {
-  const auto world_T_group = group.registration(points_, first_iteration_);
-  if (!world_T_group) return;
-  for (std::size_t i = 0; i < group.members().size(); ++i) {
-    const PointId id = group.members()[i];
-    const RltPoint& p = points_[id];
-    // Anchors are registration sources and never rewritten by this group (spec 5.5).
-    if (group.anchor(static_cast<int>(i)) || p.owner != group.id() || p.dynamic || p.merged) continue;
-    set_global(id, *world_T_group * group.relative(static_cast<int>(i)));
-  }
-}
-
 void RltMapper::set_global(PointId id, const Eigen::Vector3d& g) {
   RltPoint& p = points_[id];
   p.global = g;
   p.has_global = true;
   p.has_provisional = false;
   any_mapped_ = true;
-  global_index_.place(id, g);
+  global_index_->place(id, g);
   mark_changed(id);
 }
 
@@ -168,89 +155,6 @@ void RltMapper::mark_changed(PointId id) {
   if (changed_at_[id] == last_iteration_) return;
   changed_at_[id] = last_iteration_;
   changed_->push_back(id);
-}
-
-void RltMapper::create_groups(int k, StepResult& result) {
-  for (GroupLevel level : {GroupLevel::Temporary, GroupLevel::Final}) {
-    RltUngroupedList& waiting = list(level);
-    const int look_ahead = level_options(level).look_ahead;
-    // Process every entry that is ready; the list is in start order (spec 5.6, A40).
-    while (!waiting.empty() && k >= waiting.front().start + look_ahead) {
-      const RltUngroupedList::Entry entry = waiting.front();
-      waiting.pop_front();
-      if (try_create(level, entry, k)) ++result.groups_created;
-    }
-  }
-  // Every point of the first iteration has had its chance to root the map and none could: the
-  // map frame (the first observations, thesis 6.3.3) can never be fixed.
-  const bool first_iteration_tried = temporary_list_.empty() || temporary_list_.front().start > first_iteration_;
-  if (!any_mapped_ && failure_.empty() && first_iteration_tried)
-    failure_ = "no group could be anchored to the first iteration's observations (the map frame): fewer than 3 points "
-               "were seen there often enough";
-}
-
-bool RltMapper::try_create(GroupLevel level, const RltUngroupedList::Entry& entry, int k) {
-  const RltPoint& c = points_[entry.id];
-  if (c.dynamic || c.merged) return false;
-  LevelContext context;
-  context.level = level;
-  context.options = &level_options(level);
-  context.ungrouped = &list(level);
-  context.level_mapped = level == GroupLevel::Temporary ? any_mapped_ : stats_.final_created > 0;
-  context.first_iteration = first_iteration_;
-  auto plan = planner_.plan(entry.id, entry.start, k, context, points_, charting_, options_.basis, options_.min_basis_ratio);
-  if (!plan) return false;
-
-  const auto id = static_cast<GroupId>(groups_.size());
-  groups_.emplace_back(id, level, entry.start, k, plan->members, plan->anchor, plan->basis, plan->root);
-  ++stats_.created;
-  ++stats_.alive;
-  if (level == GroupLevel::Final) ++stats_.final_created;
-  if (level == GroupLevel::Temporary) {
-    ++stats_.temporary_alive;
-    temporary_to_review_.push_back(id);
-  }
-
-  for (std::size_t i = 0; i < plan->members.size(); ++i) {
-    RltPoint& p = points_[plan->members[i]];
-    p.groups.push_back({id, static_cast<int>(i)});
-    if (plan->anchor[i]) continue;
-    list(level).remove(p.id);
-    // Ownership (spec 5.6): a final group always takes its new members; a temporary group
-    // only those no final group owns. Final groups thus map everything they hold (6.5.5).
-    if (level == GroupLevel::Final) {
-      p.final_grouped = true;
-      p.owner = id;
-    } else {
-      p.temporary_grouped = true;
-      if (!p.final_grouped) p.owner = id;
-    }
-  }
-  RltGroup& group = groups_.back();
-  if (group.accumulate(points_, entry.start, k, kBasisEpsilon)) anchor(group);
-  return true;
-}
-
-void RltMapper::retire_redundant_temporary_groups(int k) {
-  // A temporary group's new members are offered to final groups within the final look-ahead;
-  // after that, a group that owns none of its members maps nothing and only costs time.
-  const int settled = k - options_.final_group.look_ahead - options_.temporary_group.look_ahead;
-  while (!temporary_to_review_.empty() && groups_[temporary_to_review_.front()].built_at() <= settled) {
-    RltGroup& group = groups_[temporary_to_review_.front()];
-    temporary_to_review_.pop_front();
-    const bool owns_any = std::any_of(group.members().begin(), group.members().end(), [&](PointId id) {
-      return points_[id].owner == group.id();
-    });
-    if (owns_any) continue;  // it still maps a point no final group took: kept for good
-    group.retire();
-    --stats_.alive;
-    --stats_.temporary_alive;
-    for (PointId id : group.members()) {
-      auto& refs = points_[id].groups;
-      refs.erase(std::remove_if(refs.begin(), refs.end(), [&](const RltGroupRef& r) { return r.group == group.id(); }),
-                 refs.end());
-    }
-  }
 }
 
 void RltMapper::update_pose(int k, StepResult& result) {
@@ -292,7 +196,7 @@ void RltMapper::update_pose(int k, StepResult& result) {
       if (p.has_global || p.dynamic || p.merged) continue;
       p.provisional = pose_ * p.observations.latest().p;
       p.has_provisional = true;
-      if (options_.match_unmapped) global_index_.place(id, p.provisional);
+      if (options_.match_unmapped) global_index_->place(id, p.provisional);
     }
 }
 

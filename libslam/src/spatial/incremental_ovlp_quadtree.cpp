@@ -62,11 +62,11 @@ bool IncrementalOVLPQuadTree::contains(int id) const {
   return id >= 0 && static_cast<std::size_t>(id) < members_.size() && members_[id].count > 0;
 }
 
-const std::vector<int>& IncrementalOVLPQuadTree::query(const Eigen::Vector3d& q) const {
-  static const std::vector<int> none;
+std::span<const int> IncrementalOVLPQuadTree::query(const Eigen::Vector3d& q) {
   const auto it = cells_.find(key(static_cast<std::int64_t>(std::floor(q.x() / cell_)),
                                   static_cast<std::int64_t>(std::floor(q.z() / cell_))));
-  return it == cells_.end() ? none : it->second;
+  if (it == cells_.end()) return {};
+  return it->second;
 }
 
 }  // namespace relslam::spatial

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace relslam::spatial {
 namespace {
@@ -13,52 +14,75 @@ constexpr double kMaxCells = 4.0e6;
 
 }  // namespace
 
-OVLPQuadTree::OVLPQuadTree(double cell_size, double overlap)
+template <int Axes>
+OverlappingGrid<Axes>::OverlappingGrid(double cell_size, double overlap)
     : base_cell_(cell_size), cell_(cell_size), overlap_(overlap) {
   if (!(cell_size > 0) || !(overlap >= 0) || overlap > cell_size)
-    throw std::logic_error("OVLPQuadTree: need 0 <= overlap <= cell size, got overlap " + std::to_string(overlap) +
+    throw std::logic_error("OverlappingGrid: need 0 <= overlap <= cell size, got overlap " + std::to_string(overlap) +
                            ", cell " + std::to_string(cell_size));
 }
 
-int OVLPQuadTree::cell_index(double x, double z) const {
-  const int ix = std::clamp(static_cast<int>(std::floor((x - x0_) / cell_)), 0, columns_ - 1);
-  const int iz = std::clamp(static_cast<int>(std::floor((z - z0_) / cell_)), 0, rows_ - 1);
-  return iz * columns_ + ix;
+template <int Axes>
+int OverlappingGrid<Axes>::cell_of(const Eigen::Vector3d& p, std::array<int, Axes>* index) const {
+  int flat = 0;
+  for (int a = Axes - 1; a >= 0; --a) {
+    const int i = std::clamp(static_cast<int>(std::floor((p[kAxis[a]] - origin_[a]) / cell_)), 0, extent_[a] - 1);
+    if (index) (*index)[a] = i;
+    flat = flat * extent_[a] + i;
+  }
+  return flat;
 }
 
 // Calls visit(cell) for the home cell of p and each neighbour whose overlap reaches p.
+template <int Axes>
 template <class Visit>
-void OVLPQuadTree::for_each_cell_of(const Eigen::Vector3d& p, Visit visit) const {
-  const int ix = std::clamp(static_cast<int>(std::floor((p.x() - x0_) / cell_)), 0, columns_ - 1);
-  const int iz = std::clamp(static_cast<int>(std::floor((p.z() - z0_) / cell_)), 0, rows_ - 1);
-  const double fx = p.x() - (x0_ + ix * cell_), fz = p.z() - (z0_ + iz * cell_);
-  const int lo_x = (ix > 0 && fx <= overlap_) ? -1 : 0, hi_x = (ix + 1 < columns_ && cell_ - fx <= overlap_) ? 1 : 0;
-  const int lo_z = (iz > 0 && fz <= overlap_) ? -1 : 0, hi_z = (iz + 1 < rows_ && cell_ - fz <= overlap_) ? 1 : 0;
-  for (int dz = lo_z; dz <= hi_z; ++dz)
-    for (int dx = lo_x; dx <= hi_x; ++dx) visit((iz + dz) * columns_ + ix + dx);
+void OverlappingGrid<Axes>::for_each_cell_of(const Eigen::Vector3d& p, Visit visit) const {
+  std::array<int, Axes> home{}, lo{}, hi{};
+  cell_of(p, &home);
+  for (int a = 0; a < Axes; ++a) {
+    const double f = p[kAxis[a]] - (origin_[a] + home[a] * cell_);
+    lo[a] = (home[a] > 0 && f <= overlap_) ? -1 : 0;
+    hi[a] = (home[a] + 1 < extent_[a] && cell_ - f <= overlap_) ? 1 : 0;
+  }
+  std::array<int, Axes> d = lo;
+  for (;;) {
+    int flat = 0;
+    for (int a = Axes - 1; a >= 0; --a) flat = flat * extent_[a] + home[a] + d[a];
+    visit(flat);
+    int a = 0;
+    while (a < Axes && d[a] == hi[a]) d[a] = lo[a], ++a;  // odometer over the offsets
+    if (a == Axes) break;
+    ++d[a];
+  }
 }
 
-void OVLPQuadTree::build(const std::vector<IndexedPoint>& points) {
+template <int Axes>
+void OverlappingGrid<Axes>::build(const std::vector<IndexedPoint>& points) {
   entries_.clear();
   if (points.empty()) {
-    columns_ = rows_ = 0;
+    extent_.fill(0);
     start_.assign(1, 0);
     return;
   }
-  double x1 = points[0].p.x(), z1 = points[0].p.z();
-  x0_ = x1, z0_ = z1;
-  for (const IndexedPoint& e : points) {
-    x0_ = std::min(x0_, e.p.x()), x1 = std::max(x1, e.p.x());
-    z0_ = std::min(z0_, e.p.z()), z1 = std::max(z1, e.p.z());
-  }
+  std::array<double, Axes> top{};
+  for (int a = 0; a < Axes; ++a) origin_[a] = top[a] = points[0].p[kAxis[a]];
+  for (const IndexedPoint& e : points)
+    for (int a = 0; a < Axes; ++a) {
+      origin_[a] = std::min(origin_[a], e.p[kAxis[a]]);
+      top[a] = std::max(top[a], e.p[kAxis[a]]);
+    }
   cell_ = base_cell_;
-  const double area_cells = ((x1 - x0_) / cell_ + 1.0) * ((z1 - z0_) / cell_ + 1.0);
-  if (area_cells > kMaxCells) cell_ *= std::sqrt(area_cells / kMaxCells);  // overlap <= cell still holds
-  columns_ = static_cast<int>(std::floor((x1 - x0_) / cell_)) + 1;
-  rows_ = static_cast<int>(std::floor((z1 - z0_) / cell_)) + 1;
+  double cells = 1;
+  for (int a = 0; a < Axes; ++a) cells *= (top[a] - origin_[a]) / cell_ + 1.0;
+  if (cells > kMaxCells) cell_ *= std::pow(cells / kMaxCells, 1.0 / Axes);  // overlap <= cell still holds
+  std::size_t total = 1;
+  for (int a = 0; a < Axes; ++a) {
+    extent_[a] = static_cast<int>(std::floor((top[a] - origin_[a]) / cell_)) + 1;
+    total *= static_cast<std::size_t>(extent_[a]);
+  }
 
   // Counting sort into compressed rows: count, prefix sum, fill.
-  start_.assign(static_cast<std::size_t>(columns_) * rows_ + 1, 0);
+  start_.assign(total + 1, 0);
   for (const IndexedPoint& e : points) for_each_cell_of(e.p, [&](int c) { ++start_[c + 1]; });
   for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
   entries_.resize(static_cast<std::size_t>(start_.back()));
@@ -66,10 +90,14 @@ void OVLPQuadTree::build(const std::vector<IndexedPoint>& points) {
   for (const IndexedPoint& e : points) for_each_cell_of(e.p, [&](int c) { entries_[fill_[c]++] = e; });
 }
 
-std::span<const IndexedPoint> OVLPQuadTree::query(const Eigen::Vector3d& q) const {
-  if (columns_ == 0) return {};
-  const int c = cell_index(q.x(), q.z());
+template <int Axes>
+std::span<const IndexedPoint> OverlappingGrid<Axes>::query(const Eigen::Vector3d& q) {
+  if (extent_[0] == 0) return {};
+  const int c = cell_of(q);
   return {entries_.data() + start_[c], static_cast<std::size_t>(start_[c + 1] - start_[c])};
 }
+
+template class OverlappingGrid<2>;
+template class OverlappingGrid<3>;
 
 }  // namespace relslam::spatial

@@ -2,6 +2,7 @@
 // An experiment definition: what to simulate, which algorithms to run, what to write.
 // Loaded from scenarios/*.json; every key and its default are listed by scenario_keys().
 
+#include "relslam/eval/binning_bench.hpp"
 #include "relslam/eval/input_error.hpp"
 #include "relslam/point/options.hpp"
 #include "relslam/sim/options.hpp"
@@ -48,6 +49,7 @@ struct Scenario {
   sim::SimOptions sim;
   std::vector<std::string> algorithms;
   point::PointSlamOptions relative_point;  // the Relative Point algorithm's constants
+  BinningBenchOptions binning_bench;       // S-BIN only (kind binning_benchmark)
   OutputOptions output;
   std::vector<SweepAxis> sweep;
 };

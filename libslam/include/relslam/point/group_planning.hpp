@@ -6,6 +6,7 @@
 #include "relslam/point/rlt_point_charting.hpp"
 #include "relslam/point/rlt_ungrouped_list.hpp"
 
+#include <chrono>
 #include <optional>
 #include <vector>
 
@@ -16,6 +17,13 @@ struct GroupPlan {
   std::vector<bool> anchor;      // previously mapped: registration sources, never rewritten
   std::array<int, 3> basis{};
   bool root = false;
+};
+
+struct PlanOutcome {
+  std::optional<GroupPlan> plan;
+  std::vector<PointId> dynamic;  // members RltBinning found moving: flag them either way
+  int comparisons = 0;
+  double binning_ms = 0;
 };
 
 // What the planner needs to know about the map at one level.
@@ -30,13 +38,17 @@ struct LevelContext {
 class GroupPlanner {
  public:
   // The group for ungrouped point c whose visible run began at c0, planned at iteration k;
-  // nothing when c is not a good point for this level (too few previously mapped or new points,
-  // c itself too rarely seen, or no usable basis).
-  std::optional<GroupPlan> plan(PointId c, int c0, int k, const LevelContext& level, const std::vector<RltPoint>& points,
-                                RltPointCharting& charting, BasisSelection selection, double min_basis_ratio);
+  // no plan when c is not a good point for this level (too few previously mapped or new
+  // points, c itself too rarely seen or dynamic, or no usable basis).
+  PlanOutcome plan(PointId c, int c0, int k, const LevelContext& level, const std::vector<RltPoint>& points,
+                   RltPointCharting& charting, const PointSlamOptions& options);
 
  private:
   bool previously_mapped(const RltPoint& p, const LevelContext& level, int c0) const;
+  // Thesis 6.4.3 step 5: keeps the static members (order kept), reports the dynamic ones;
+  // false when too few static ones remain (spec A21).
+  bool keep_static(GroupPlan& plan, PointId c, int c0, int k, const GroupLevelOptions& level,
+                   const std::vector<RltPoint>& points, const BinningOptions& binning, PlanOutcome& outcome) const;
   std::vector<Eigen::Vector3d> basis_positions(const std::vector<PointId>& members, const std::vector<RltPoint>& points,
                                                int c0, int k) const;
   std::vector<PointId> scratch_;

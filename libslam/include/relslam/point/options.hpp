@@ -4,6 +4,9 @@
 
 #include "relslam/core/option_issue.hpp"
 #include "relslam/point/basis.hpp"
+#include "relslam/point/rlt_binning.hpp"
+#include "relslam/spatial/global_index.hpp"
+#include "relslam/spatial/local_index.hpp"
 
 #include <vector>
 
@@ -21,13 +24,15 @@ struct GroupLevelOptions {
   int prev_min = 20;  // fewer previously mapped candidates: c is not a good point, no group
   int prev_max = 20;  // the best (most observed) previously mapped candidates kept
   int next_min = 1;   // ungrouped members needed, c included; 1 is the thesis's best (Fig 125)
+  // Run RltBinning on the members and leave out the dynamic ones (thesis 6.4.3 step 5).
+  bool binning = true;
 };
 
 // Temporary level: a short look-ahead so new points are mapped within a few iterations
-// (thesis 6.5.5 "a few iterations") [C values, spec A11].
-inline GroupLevelOptions temporary_level_defaults() { return {10, 10, 2, 6, 20, 1}; }
-// Final level: the thesis's constants, with NextGroupMin at its best value 1 [T].
-inline GroupLevelOptions final_level_defaults() { return {60, 60, 10, 20, 20, 1}; }
+// (thesis 6.5.5 "a few iterations"); too short a window to bin [C values, spec A11, I].
+inline GroupLevelOptions temporary_level_defaults() { return {10, 10, 2, 6, 20, 1, false}; }
+// Final level: the thesis's constants, with NextGroupMin at its best value 1, binned [T].
+inline GroupLevelOptions final_level_defaults() { return {60, 60, 10, 20, 20, 1, true}; }
 
 struct PointSlamOptions {
   // Local matching compares with the latest observation of points seen in the last
@@ -55,8 +60,25 @@ struct PointSlamOptions {
   // Local OVLPQuadTree cell, units; the thesis's "small quads" variant uses 1.5 [C, A32].
   // Must be at least local_bound (the cell overlap).
   double local_cell_size = 5.0;
-  // Global (incremental) grid cell, units; at least global_bound [C, A32].
+  // Global grid cell, units; at least global_bound and merge_bound [C, A32].
   double global_cell_size = 4.0;
+  // Local index (thesis 6.6.2): the overlapping quadtree, its 3-D octree variant (faster
+  // matching, slower building; Fig 145) or a k-d tree (slower at both, the side experiment).
+  spatial::LocalIndexKind local_index = spatial::LocalIndexKind::Quadtree;
+  double octree_cell_size = 1.5;  // units, near the minimum the noise allows [C, A32]
+  // Global index: incremental (thesis 6.5.1) or rebuilt from the whole map every iteration
+  // (Fig 110's baseline, O(map)).
+  spatial::GlobalIndexKind global_index = spatial::GlobalIndexKind::Incremental;
+
+  // Dynamic-point detection at group creation (thesis 6.5.3); levels switch it on or off.
+  BinningOptions binning;
+
+  // RltPoint merging (thesis 6.5.2): merge_delay iterations after its creation, a mapped point
+  // whose map position lies within merge_bound of an older, temporally disjoint mapped point is
+  // merged into it, and the groups recompute over the copied iterations [C values, spec 5.9].
+  bool merge_points = true;
+  int merge_delay = 20;
+  double merge_bound = 2.0;
 
   GroupLevelOptions temporary_group = temporary_level_defaults();
   GroupLevelOptions final_group = final_level_defaults();

@@ -6,10 +6,11 @@
 #include "relslam/core/rigid.hpp"
 #include "relslam/point/options.hpp"
 #include "relslam/point/rlt_point.hpp"
-#include "relslam/spatial/incremental_ovlp_quadtree.hpp"
-#include "relslam/spatial/ovlp_quadtree.hpp"
+#include "relslam/spatial/global_index.hpp"
+#include "relslam/spatial/local_index.hpp"
 
 #include <deque>
+#include <memory>
 #include <vector>
 
 namespace relslam::point {
@@ -38,13 +39,13 @@ class PointMatcher {
  public:
   explicit PointMatcher(const PointSlamOptions& options);
 
-  // Stage 1 (the thesis's "init"): the local OVLPQuadTree over the candidates, each predicted
+  // Stage 1 (the thesis's "init"): the local index over the candidates, each predicted
   // into the current frame (see PointSlamOptions::compensate_motion).
   void prepare(const std::vector<LocalCandidate>& candidates, int k);
   // Stage 2 ("load"): local matches, then global ones through world_T_previous composed with
   // the motion found locally.
   const MatchResult& match(const std::vector<Eigen::Vector3d>& observations, int k,
-                           const spatial::IncrementalOVLPQuadTree& global, const std::vector<RltPoint>& points,
+                           spatial::GlobalIndex& global, const std::vector<RltPoint>& points,
                            const Rigid3& world_T_previous);
 
  private:
@@ -60,7 +61,7 @@ class PointMatcher {
   bool taken(PointId id) const { return id < static_cast<PointId>(taken_.size()) && taken_[id] == stamp_; }
 
   PointSlamOptions options_;
-  spatial::OVLPQuadTree local_;
+  std::unique_ptr<spatial::LocalIndex> local_;
   std::vector<spatial::IndexedPoint> predicted_;    // candidates moved into the current frame
   std::vector<int> slot_;                           // per point id: its index in predicted_
   std::deque<std::pair<int, Rigid3>> motions_;      // (k, robot_k_T_robot_{k-1}), recent first

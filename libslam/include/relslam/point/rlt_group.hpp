@@ -20,7 +20,8 @@ enum class GroupLevel : unsigned char {
 
 // Invariant: members, anchor flags and basis never change after construction (a change means a
 // new group, thesis 6.3.3), so running sums stay valid; sums only ever include iterations in
-// which every member was observed.
+// which every member was observed. The one exception is a merge (thesis 6.5.2), which swaps a
+// member for a point holding the very same observations.
 class RltGroup {
  public:
   RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vector<PointId> members, std::vector<bool> anchor,
@@ -44,6 +45,11 @@ class RltGroup {
   bool root() const { return root_; }
   bool alive() const { return alive_; }
   void retire() { alive_ = false; }
+  // A merge: the member becomes `id`, an anchor (it keeps its own map position).
+  void replace_member(int member, PointId id) {
+    members_[member] = id;
+    anchor_[member] = true;
+  }
   const std::vector<PointId>& members() const { return members_; }
   bool anchor(int member) const { return anchor_[member]; }
   const std::array<int, 3>& basis() const { return basis_; }

@@ -11,11 +11,12 @@
 #include "relslam/point/rlt_point.hpp"
 #include "relslam/point/rlt_point_charting.hpp"
 #include "relslam/point/rlt_ungrouped_list.hpp"
-#include "relslam/spatial/incremental_ovlp_quadtree.hpp"
-#include "relslam/spatial/ovlp_quadtree.hpp"
+#include "relslam/spatial/global_index.hpp"
 
 #include <deque>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace relslam::point {
@@ -32,9 +33,11 @@ struct StepTimings {
   double init_ms = 0;     // local candidates and the local OVLPQuadTree
   double load_ms = 0;     // matching observations, creating RltPoints
   double compute_ms = 0;  // group averages and RltICP anchoring
-  double create_ms = 0;   // group creation (and clean-up)
+  double merge_ms = 0;    // RltPoint merging (thesis 6.5.2), including the groups it recomputes
+  double create_ms = 0;   // group creation (and clean-up), binning included
+  double binning_ms = 0;  // of which dynamic-point detection (thesis 6.5.3, Fig 117)
   double pose_ms = 0;     // current position
-  double total_ms() const { return init_ms + load_ms + compute_ms + create_ms + pose_ms; }
+  double total_ms() const { return init_ms + load_ms + compute_ms + merge_ms + create_ms + pose_ms; }
 };
 
 struct StepResult {
@@ -47,6 +50,9 @@ struct StepResult {
   int local_matches = 0;
   int global_matches = 0;
   int groups_created = 0;
+  int dynamic_flagged = 0;  // points RltBinning flagged this iteration
+  int merges = 0;           // RltPoints merged into older ones this iteration
+  int binning_comparisons = 0;
   StepTimings timings;
 };
 
@@ -54,7 +60,9 @@ struct GroupStats {
   int created = 0;          // every group ever built
   int alive = 0;
   int temporary_alive = 0;
-  int final_created = 0;    // final groups (never retired)
+  int final_created = 0;
+  int dynamic_points = 0;   // flagged so far
+  int merged_points = 0;    // merged so far
 };
 
 class RltMapper {
@@ -65,6 +73,9 @@ class RltMapper {
   // One iteration (thesis 6.2–6.5 as ordered in spec 5.3). Iterations must increase; points
   // are robot-frame observations in any order. The first frame defines the world frame.
   StepResult step(const ObservationFrame& frame);
+
+  RltMapper(RltMapper&&) noexcept;
+  ~RltMapper();
 
   const std::vector<RltPoint>& points() const { return points_; }
   const std::vector<RltGroup>& groups() const { return groups_; }
@@ -82,8 +93,12 @@ class RltMapper {
   void compute_groups(int k);
   void anchor(RltGroup& group);
   void create_groups(int k, StepResult& result);
-  bool try_create(GroupLevel level, const RltUngroupedList::Entry& entry, int k);
+  bool try_create(GroupLevel level, const RltUngroupedList::Entry& entry, int k, StepResult& result);
+  void mark_dynamic(PointId id, StepResult& result);
+  void retire(RltGroup& group);
   void retire_redundant_temporary_groups(int k);
+  void merge_due(int k, StepResult& result);
+  void merge(PointId newer, PointId older, int k);
   void update_pose(int k, StepResult& result);
   void set_global(PointId id, const Eigen::Vector3d& g);
   void mark_changed(PointId id);
@@ -96,11 +111,12 @@ class RltMapper {
   std::vector<RltPoint> points_;
   std::vector<RltGroup> groups_;
   RltPointCharting charting_;
-  spatial::IncrementalOVLPQuadTree global_index_;
+  std::unique_ptr<spatial::GlobalIndex> global_index_;
   RltUngroupedList temporary_list_, final_list_;
   PointMatcher matcher_;
   GroupPlanner planner_;
   std::deque<GroupId> temporary_to_review_;  // temporary groups in creation order, for clean-up
+  std::deque<std::pair<int, PointId>> merge_checks_;  // (iteration due, point), in due order
 
   Rigid3 pose_;
   int first_iteration_ = kNone;

@@ -2,7 +2,7 @@
 // The incremental OVLPQuadTree of thesis 6.5.1: points are inserted, moved and removed one at
 // a time, so global matching never reloads the whole map. Eigen only.
 
-#include <Eigen/Core>
+#include "relslam/spatial/global_index.hpp"
 
 #include <array>
 #include <cstdint>
@@ -11,21 +11,17 @@
 
 namespace relslam::spatial {
 
-// The same overlapping-cell rule as OVLPQuadTree over x and z, on an unbounded sparse grid
-// (a hash map of cells: the map's extent is not known in advance, spec A33). Stores ids only;
-// callers test exact distances against the live positions they own.
-// Invariant: query(q) contains every stored id whose position (as last inserted or moved) is
-// within L∞ distance `overlap` of q in x and z.
-class IncrementalOVLPQuadTree {
+// The overlapping-cell rule of OVLPQuadTree over x and z, on an unbounded sparse grid (a
+// hash map of cells: the map's extent is not known in advance, spec A33). Stores ids only.
+class IncrementalOVLPQuadTree final : public GlobalIndex {
  public:
   IncrementalOVLPQuadTree(double cell_size, double overlap);
 
-  // Inserts, or moves when the id is present. Ids are small non-negative integers.
-  void place(int id, const Eigen::Vector3d& p);
-  void remove(int id);
-  bool contains(int id) const;
-  const std::vector<int>& query(const Eigen::Vector3d& q) const;
-  std::size_t size() const { return count_; }
+  void place(int id, const Eigen::Vector3d& p) override;
+  void remove(int id) override;
+  bool contains(int id) const override;
+  std::span<const int> query(const Eigen::Vector3d& q) override;
+  std::size_t size() const override { return count_; }
 
  private:
   struct Membership {

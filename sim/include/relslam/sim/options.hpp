@@ -27,6 +27,9 @@ struct DynamicOptions {
   // Number of points made dynamic, chosen among the points visible at iteration 0 (the
   // thesis's dynamic RltPoints 18 and 24 were seen early) [T count 2 for S-DYN, I choice].
   int count = 0;
+  // ...and still in view this many iterations later (anchor positions, noise-free), so each
+  // is seen long enough to be put in a final group and tested (thesis Figs 157-162) [C].
+  int count_visible_for = 100;
   // Share of all points made dynamic, chosen uniformly; used instead of `count` [T 3 % in Fig 117].
   double fraction = 0.0;
   double amplitude = 4.0;       // units; several matching bounds, well above the noise [C]
