@@ -1,6 +1,6 @@
 #include "relslam/eval/landmark_error.hpp"
 
-#include <nanoflann.hpp>
+#include "relslam/spatial/kd_tree_index.hpp"
 
 #include <cmath>
 #include <limits>
@@ -10,47 +10,29 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// nanoflann reads the static true landmarks through this adaptor.
-struct StaticPoints {
-  std::vector<Eigen::Vector3d> points;
-  std::vector<int> ids;
-  std::size_t kdtree_get_point_count() const { return points.size(); }
-  double kdtree_get_pt(std::size_t i, std::size_t dim) const { return points[i][static_cast<int>(dim)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const {
-    return false;
-  }
-};
-
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, StaticPoints>, StaticPoints, 3, std::uint32_t>;
-
 }  // namespace
 
 struct LandmarkErrorTracker::Index {
-  StaticPoints data;
-  std::unique_ptr<Tree> tree;
+  spatial::KdTreeIndex tree{0.0};
+  bool empty = true;
 };
 
 LandmarkErrorTracker::LandmarkErrorTracker(LandmarkTruth truth) : truth_(std::move(truth)), index_(std::make_unique<Index>()) {
   std::vector<bool> moving(truth_.positions.size(), false);
   for (int id : truth_.dynamic_ids) moving[id] = true;
+  std::vector<spatial::IndexedPoint> fixed;
   for (std::size_t id = 0; id < truth_.positions.size(); ++id)
-    if (!moving[id]) {
-      index_->data.points.push_back(truth_.positions[id]);
-      index_->data.ids.push_back(static_cast<int>(id));
-    }
-  index_->tree = std::make_unique<Tree>(3, index_->data, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-  index_->tree->buildIndex();
+    if (!moving[id]) fixed.push_back({static_cast<int>(id), truth_.positions[id]});
+  index_->tree.build(fixed);
+  index_->empty = fixed.empty();
 }
 
 LandmarkErrorTracker::~LandmarkErrorTracker() = default;
 
 std::pair<int, double> LandmarkErrorTracker::nearest_static(const Eigen::Vector3d& p) const {
-  if (index_->data.points.empty()) return {-1, std::numeric_limits<double>::infinity()};
-  std::uint32_t i = 0;
-  double d2 = 0;
-  index_->tree->knnSearch(p.data(), 1, &i, &d2);
-  return {index_->data.ids[i], std::sqrt(d2)};
+  const auto nearest = index_->tree.nearest(p);
+  if (!nearest) return {-1, std::numeric_limits<double>::infinity()};
+  return {nearest->id, (nearest->p - p).norm()};
 }
 
 std::pair<int, double> LandmarkErrorTracker::nearest(const Eigen::Vector3d& p, int k) const {

@@ -12,18 +12,14 @@
 namespace relslam::eval {
 
 void add_bench_binning(CLI::App& app, BenchBinningArgs& args) {
-  CLI::App* cmd = app.add_subcommand("bench-binning", "Run the synthetic RltBinning benchmark S-BIN (thesis Figs 111-116)");
-  cmd->description(
+  add_scenario_command(
+      app, args, "bench-binning", "Run the synthetic RltBinning benchmark S-BIN (thesis Figs 111-116)",
       "Bin synthetic points (static ones plus a share of uncorrelated movers, and Fig 114's mix of\n"
       "correlated groups) and count the pairwise comparisons, for every grid cell of the scenario's\n"
       "binning_bench keys, both pairing rules and with and without the priority heuristic. Writes\n"
       "binning_bench.csv (one row per binning) and binning_bench_means.csv (means over seeds, with\n"
-      "the n-1, n ln n, n log2 n, 3n ln n and n^2/2 reference curves).");
-  cmd->add_option("scenario", args.scenario, "Scenario file of kind binning_benchmark, e.g. scenarios/s-bin.json")->required();
-  cmd->add_option("--out,-o", args.out, "Run folder to create")->required();
-  cmd->add_option("--set", args.set, "Override a scenario key, e.g. --set binning_bench.seeds=3 (repeatable)");
-  cmd->add_flag("--force", args.force, "Replace an earlier run in the --out folder");
-  cmd->add_flag("--quiet,-q", args.quiet, "Print nothing but errors");
+      "the n-1, n ln n, n log2 n, 3n ln n and n^2/2 reference curves).",
+      "scenarios/s-bin.json");
 }
 
 int run_bench_binning(const BenchBinningArgs& args, const std::vector<std::string>& command_line) {

@@ -13,16 +13,12 @@
 namespace relslam::eval {
 
 void add_run(CLI::App& app, RunArgs& args) {
-  CLI::App* cmd = app.add_subcommand("run", "Simulate a scenario and run its algorithms on the same observations");
-  cmd->description(
+  add_scenario_command(
+      app, args, "run", "Simulate a scenario and run its algorithms on the same observations",
       "Simulate a scenario and feed every frame to each algorithm the scenario lists (key `algorithms`),\n"
       "scoring them against the truth as they go. Writes the simulation files of `relslam simulate`, one\n"
-      "folder per algorithm (iterations.csv, landmarks.csv, trajectory.tum) and summary.csv.");
-  cmd->add_option("scenario", args.scenario, "Scenario file, e.g. scenarios/s-f8.json")->required();
-  cmd->add_option("--out,-o", args.out, "Run folder to create (refused if it exists and is not empty)")->required();
-  cmd->add_option("--set", args.set, "Override a scenario key, e.g. --set sim.density=50 (repeatable)");
-  cmd->add_flag("--force", args.force, "Replace an earlier run in the --out folder");
-  cmd->add_flag("--quiet,-q", args.quiet, "Print nothing but errors");
+      "folder per algorithm (iterations.csv, landmarks.csv, trajectory.tum) and summary.csv.",
+      "scenarios/s-f8.json");
 }
 
 int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {

@@ -12,17 +12,13 @@
 namespace relslam::eval {
 
 void add_simulate(CLI::App& app, SimulateArgs& args) {
-  CLI::App* cmd = app.add_subcommand("simulate", "Simulate a scenario and write ground truth and observations");
-  cmd->description(
+  add_scenario_command(
+      app, args, "simulate", "Simulate a scenario and write ground truth and observations",
       "Simulate a scenario: the robot follows its path, sees the noisy landmarks inside its frustum,\n"
       "and everything is written to one run folder: ground_truth_path.tum (evo reads it),\n"
       "ground_truth_landmarks.csv, sim_iterations.csv, observations.csv, observations.rawlog (MRPT)\n"
-      "and manifest.json. The same scenario and seed always give the same bytes.");
-  cmd->add_option("scenario", args.scenario, "Scenario file, e.g. scenarios/s-f8.json")->required();
-  cmd->add_option("--out,-o", args.out, "Run folder to create (refused if it exists and is not empty)")->required();
-  cmd->add_option("--set", args.set, "Override a scenario key, e.g. --set sim.density=50 (repeatable)");
-  cmd->add_flag("--force", args.force, "Replace an earlier run in the --out folder");
-  cmd->add_flag("--quiet,-q", args.quiet, "Print nothing but errors");
+      "and manifest.json. The same scenario and seed always give the same bytes.",
+      "scenarios/s-f8.json");
 }
 
 int run_simulate(const SimulateArgs& args, const std::vector<std::string>& command_line) {

@@ -45,4 +45,12 @@ std::span<const IndexedPoint> KdTreeIndex::query(const Eigen::Vector3d& q) {
   return found_;
 }
 
+std::optional<IndexedPoint> KdTreeIndex::nearest(const Eigen::Vector3d& q) const {
+  if (tree_->data.points.empty()) return std::nullopt;
+  std::uint32_t i = 0;
+  double d2 = 0;
+  tree_->index->knnSearch(q.data(), 1, &i, &d2);
+  return tree_->data.points[i];
+}
+
 }  // namespace relslam::spatial

@@ -15,7 +15,7 @@ namespace relslam::eval {
 
 // Keeps each map landmark's error and their sum, updating only what changed: the sum costs
 // O(changed) per iteration on a static world (plus O(map · movers) when landmarks move), so
-// scoring a 152,000-iteration run stays cheap. Nearest true landmark by k-d tree (nanoflann).
+// scoring a 152,000-iteration run stays cheap. Nearest true landmark by k-d tree.
 class LandmarkErrorTracker {
  public:
   explicit LandmarkErrorTracker(LandmarkTruth truth);

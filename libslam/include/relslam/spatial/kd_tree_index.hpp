@@ -5,6 +5,7 @@
 #include "relslam/spatial/local_index.hpp"
 
 #include <memory>
+#include <optional>
 
 namespace relslam::spatial {
 
@@ -15,6 +16,8 @@ class KdTreeIndex final : public LocalIndex {
   ~KdTreeIndex() override;
   void build(const std::vector<IndexedPoint>& points) override;
   std::span<const IndexedPoint> query(const Eigen::Vector3d& q) override;
+  // The built point closest to q (nothing when empty); the evaluation's nearest-truth lookups.
+  std::optional<IndexedPoint> nearest(const Eigen::Vector3d& q) const;
 
  private:
   struct Tree;

@@ -1,6 +1,8 @@
 #pragma once
 // `relslam run`: simulate a scenario and run its algorithms on the same observations.
 
+#include "relslam/eval/commands/scenario_command.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -8,13 +10,7 @@
 
 namespace relslam::eval {
 
-struct RunArgs {
-  std::string scenario;
-  std::string out;
-  std::vector<std::string> set;
-  bool force = false;
-  bool quiet = false;
-};
+using RunArgs = ScenarioCommandArgs;
 
 void add_run(CLI::App& app, RunArgs& args);
 int run_run(const RunArgs& args, const std::vector<std::string>& command_line);

@@ -1,6 +1,8 @@
 #pragma once
 // `relslam simulate`: run the simulator and write ground truth and observations.
 
+#include "relslam/eval/commands/scenario_command.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -8,13 +10,7 @@
 
 namespace relslam::eval {
 
-struct SimulateArgs {
-  std::string scenario;          // path to scenarios/*.json
-  std::string out;               // run folder
-  std::vector<std::string> set;  // --set key=value, in order
-  bool force = false;            // replace an earlier run in `out`
-  bool quiet = false;            // no summary on stdout
-};
+using SimulateArgs = ScenarioCommandArgs;
 
 void add_simulate(CLI::App& app, SimulateArgs& args);
 int run_simulate(const SimulateArgs& args, const std::vector<std::string>& command_line);
