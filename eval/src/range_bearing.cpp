@@ -18,4 +18,10 @@ Eigen::Vector3d point_of(const RangeBearing& m) {
   return {horizontal * std::cos(m.yaw_rad), horizontal * std::sin(m.yaw_rad), -m.range * std::sin(m.pitch_rad)};
 }
 
+Rigid3 robot_axes_from_mrpt(const Rigid3& mrpt_pose) {
+  Eigen::Matrix3d a;  // p_ours = A p_mrpt: x_ours = y_m, y_ours = z_m, z_ours = x_m
+  a << 0, 1, 0, 0, 0, 1, 1, 0, 0;
+  return {a * mrpt_pose.rotation * a.transpose(), a * mrpt_pose.translation};
+}
+
 }  // namespace relslam::eval

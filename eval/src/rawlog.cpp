@@ -2,6 +2,7 @@
 
 #include "relslam/eval/input_error.hpp"
 #include "relslam/eval/range_bearing.hpp"
+#include "mrpt_observation.hpp"
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -45,6 +46,18 @@ std::optional<Rigid3> odometry_of(const CActionCollection& actions) {
 
 // A NaN or infinite measurement would poison every estimate downstream; reject it here,
 // naming the record and the measurement, instead of producing silently wrong numbers.
+RangeBearingSensor sensor_of(const CObservationBearingRange& obs) {
+  RangeBearingSensor s;
+  s.min_range = obs.minSensorDistance;
+  s.max_range = obs.maxSensorDistance;
+  s.field_of_view_yaw_rad = obs.fieldOfView_yaw;
+  s.field_of_view_pitch_rad = obs.fieldOfView_pitch;
+  s.std_range = obs.sensor_std_range;
+  s.std_yaw_rad = obs.sensor_std_yaw;
+  s.std_pitch_rad = obs.sensor_std_pitch;
+  return s;
+}
+
 RawlogFrame frame_of(const CObservationBearingRange& obs, int index, const std::string& file, int record) {
   RawlogFrame frame;
   frame.index = index;
@@ -134,11 +147,13 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
         continue;
       }
       log.skipped_observations += static_cast<int>(sf->size()) - 1;
+      if (log.frames.empty()) log.sensor = sensor_of(*obs);
       RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()), name, record);
       frame.odometry = pending_odometry;
       pending_odometry.reset();
       log.frames.push_back(std::move(frame));
     } else if (auto obs = std::dynamic_pointer_cast<CObservationBearingRange>(object)) {
+      if (log.frames.empty()) log.sensor = sensor_of(*obs);
       log.format = Rawlog::Format::ObservationsOnly;
       RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()), name, record);
       frame.odometry = pending_odometry;
@@ -204,10 +219,23 @@ RawlogWriter::~RawlogWriter() = default;
 
 void RawlogWriter::write(const ObservationFrame& frame, const std::vector<int>& landmark_ids, double timestamp_s) {
   if (!impl_->stream) throw std::logic_error(impl_->name + ": write after close");
+  CSensoryFrame sf;
+  sf.insert(bearing_range_observation(frame, landmark_ids, impl_->sensor, timestamp_s));
+  CActionCollection no_odometry;  // action first: kf-slam then pairs step k with frame k
+  impl_->record.clear();
+  auto archive = mrpt::serialization::archiveFrom(impl_->record);
+  archive << no_odometry << sf;
+  const auto bytes = static_cast<std::size_t>(impl_->record.getPosition());  // bytes written since clear()
+  if (impl_->stream->Write(impl_->record.getRawBufferData(), bytes) != bytes)
+    throw std::runtime_error(impl_->name + ": write failed (disk full?)");
+}
+
+std::shared_ptr<CObservationBearingRange> bearing_range_observation(const ObservationFrame& frame,
+                                                                    const std::vector<int>& landmark_ids,
+                                                                    const RangeBearingSensor& sensor, double timestamp_s) {
   if (!landmark_ids.empty() && landmark_ids.size() != frame.points.size())
-    throw std::logic_error("RawlogWriter::write: " + std::to_string(landmark_ids.size()) + " ids for " +
+    throw std::logic_error("bearing_range_observation: " + std::to_string(landmark_ids.size()) + " ids for " +
                            std::to_string(frame.points.size()) + " points");
-  const RangeBearingSensor& sensor = impl_->sensor;
   auto obs = std::make_shared<CObservationBearingRange>();
   obs->sensorLabel = "RELSLAM_SIM";
   obs->timestamp = mrpt::Clock::fromDouble(timestamp_s);
@@ -218,8 +246,6 @@ void RawlogWriter::write(const ObservationFrame& frame, const std::vector<int>& 
   obs->sensor_std_range = static_cast<float>(sensor.std_range);
   obs->sensor_std_yaw = static_cast<float>(sensor.std_yaw_rad);
   obs->sensor_std_pitch = static_cast<float>(sensor.std_pitch_rad);
-  // sensorLocationOnRobot stays the identity: MRPT 2.5.8's analytic 6D observation Jacobian is
-  // wrong for any other sensor pose (spec mrpt §0.2).
   obs->sensedData.resize(frame.points.size());
   for (std::size_t i = 0; i < frame.points.size(); ++i) {
     const RangeBearing m = range_bearing_of(mrpt_from_robot(frame.points[i]));
@@ -229,15 +255,7 @@ void RawlogWriter::write(const ObservationFrame& frame, const std::vector<int>& 
     out.pitch = static_cast<float>(m.pitch_rad);
     out.landmarkID = landmark_ids.empty() ? -1 : landmark_ids[i];
   }
-  CSensoryFrame sf;
-  sf.insert(obs);
-  CActionCollection no_odometry;  // action first: kf-slam then pairs step k with frame k
-  impl_->record.clear();
-  auto archive = mrpt::serialization::archiveFrom(impl_->record);
-  archive << no_odometry << sf;
-  const auto bytes = static_cast<std::size_t>(impl_->record.getPosition());  // bytes written since clear()
-  if (impl_->stream->Write(impl_->record.getRawBufferData(), bytes) != bytes)
-    throw std::runtime_error(impl_->name + ": write failed (disk full?)");
+  return obs;
 }
 
 void RawlogWriter::close() { impl_->stream.reset(); }

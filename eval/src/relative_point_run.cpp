@@ -1,5 +1,6 @@
 // The Relative Point algorithm (libslam's RltMapper) as one algorithm of a run.
 #include "relslam/eval/algorithm_run.hpp"
+#include "ekf6d_run.hpp"
 #include "relslam/eval/csv_writer.hpp"
 #include "relslam/eval/run_scorer.hpp"
 #include "relslam/eval/scenario.hpp"
@@ -7,6 +8,7 @@
 #include "relslam/point/rlt_mapper.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 namespace relslam::eval {
 namespace {
@@ -41,8 +43,16 @@ class RelativePointRun final : public AlgorithmRun {
   const std::string& name() const override { return name_; }
 
   void step(const ObservationFrame& observation, const TruthFrame& truth) override {
+    digest_.add(observation);
+    if (!failure_.empty()) return;
     const auto start = std::chrono::steady_clock::now();
-    const point::StepResult r = mapper_.step(observation);
+    point::StepResult r;
+    try {
+      r = mapper_.step(observation);
+    } catch (const std::exception& e) {  // a bad frame ends this algorithm's run, not the batch
+      failure_ = "failed at iteration " + std::to_string(observation.iteration) + ": " + e.what();
+      return;
+    }
     const double runtime_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     // Scoring, outside the timed region.
@@ -84,13 +94,19 @@ class RelativePointRun final : public AlgorithmRun {
                     p.merged ? std::optional(p.merged_into) : std::nullopt);
     }
     landmarks.close();
-    SummaryRow row;
-    row.algorithm = name_;
-    row.status = mapper_.failure().empty() ? "ok" : "failed: " + mapper_.failure();
-    scorer_.fill(row);
+    SummaryRow row = summary_over(static_cast<int>(scorer_.scored()));
     row.landmarks_on_map = static_cast<int>(on_map.size());
     row.duplicates = scorer_.duplicates(on_map);
     row.peak_rss_mb = peak_rss_mb();
+    return row;
+  }
+
+  SummaryRow summary_over(int iterations) const override {
+    SummaryRow row;
+    row.algorithm = name_;
+    row.status = !failure_.empty() ? failure_ : mapper_.failure().empty() ? "ok" : "failed: " + mapper_.failure();
+    scorer_.fill(row, static_cast<std::size_t>(iterations));
+    row.input_digest = digest_.hex();
     return row;
   }
 
@@ -112,14 +128,35 @@ class RelativePointRun final : public AlgorithmRun {
   RunScorer scorer_;
   CsvWriter iterations_;
   TumWriter trajectory_;
+  FrameDigest digest_;
+  std::string failure_;  // an exception ended the run
 };
 
 }  // namespace
 
+
+void FrameDigest::add(const ObservationFrame& frame) {
+  // FNV-1a over the iteration and the raw bytes of the points.
+  auto mix = [this](const void* data, std::size_t n) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) state_ = (state_ ^ bytes[i]) * 0x100000001b3ULL;
+  };
+  mix(&frame.iteration, sizeof frame.iteration);
+  for (const Eigen::Vector3d& p : frame.points) mix(p.data(), 3 * sizeof(double));
+}
+
+std::string FrameDigest::hex() const {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(state_));
+  return text;
+}
+
 std::unique_ptr<AlgorithmRun> make_algorithm_run(const std::string& name, const Scenario& scenario,
-                                                 const LandmarkTruth& truth, const std::filesystem::path& dir) {
+                                                 const LandmarkTruth& truth, const RangeBearingSensor& sensor,
+                                                 const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir / name);
   if (name == "relative_point") return std::make_unique<RelativePointRun>(scenario, truth, dir / name);
+  if (name == "ekf6d") return make_ekf6d_run(scenario.ekf6d, sensor, truth, dir / name);
   throw std::logic_error("make_algorithm_run: unknown algorithm " + name);
 }
 

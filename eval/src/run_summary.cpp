@@ -3,6 +3,7 @@
 #include "relslam/eval/csv_writer.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <sys/resource.h>
 
@@ -20,15 +21,48 @@ RuntimeStats runtime_stats(std::vector<double> t) {
   return s;
 }
 
-void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows) {
+void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
+                   const std::optional<SummaryRow>& ratio) {
   CsvWriter csv(file, {"algorithm", "status", "iterations", "final_landmark_error", "final_mean_landmark_error",
-                       "mean_landmark_error", "final_position_error", "ate_rmse", "landmarks_on_map", "duplicates",
-                       "runtime_median_ms", "runtime_p95_ms", "runtime_max_ms", "runtime_mean_ms", "peak_rss_mb"});
+                       "mean_landmark_error", "final_position_error", "ate_rmse", "ate_rmse_aligned",
+                       "rpe_translation_rmse", "rpe_rotation_rmse_deg", "landmarks_on_map", "duplicates",
+                       "runtime_median_ms", "runtime_p95_ms", "runtime_max_ms", "runtime_mean_ms", "peak_rss_mb",
+                       "input_digest"});
   for (const SummaryRow& r : rows)
     csv.row(r.algorithm, r.status, r.iterations, r.final_landmark_error, r.final_mean_landmark_error, r.mean_landmark_error,
-            r.final_position_error, r.ate_rmse, r.landmarks_on_map, r.duplicates, r.runtime.median_ms, r.runtime.p95_ms,
-            r.runtime.max_ms, r.runtime.mean_ms, r.peak_rss_mb);
+            r.final_position_error, r.trajectory.ate_rmse, r.trajectory.ate_rmse_aligned, r.trajectory.rpe_translation_rmse,
+            r.trajectory.rpe_rotation_rmse_deg, r.landmarks_on_map, r.duplicates, r.runtime.median_ms, r.runtime.p95_ms,
+            r.runtime.max_ms, r.runtime.mean_ms, r.peak_rss_mb, r.input_digest);
+  if (ratio) {
+    const SummaryRow& r = *ratio;
+    const std::optional<double> none;
+    csv.row(r.algorithm, r.status, r.iterations, r.final_landmark_error, r.final_mean_landmark_error, r.mean_landmark_error,
+            r.final_position_error, r.trajectory.ate_rmse, r.trajectory.ate_rmse_aligned, r.trajectory.rpe_translation_rmse,
+            r.trajectory.rpe_rotation_rmse_deg, none, none, r.runtime.median_ms, r.runtime.p95_ms, r.runtime.max_ms,
+            r.runtime.mean_ms, none, "");
+  }
   csv.close();
+}
+
+SummaryRow ratio_row(const SummaryRow& a, const SummaryRow& b) {
+  auto q = [](double x, double y) { return y != 0 ? x / y : std::numeric_limits<double>::quiet_NaN(); };
+  SummaryRow r;
+  r.algorithm = a.algorithm + "/" + b.algorithm;
+  r.status = "ratio";
+  r.iterations = std::min(a.iterations, b.iterations);
+  r.final_landmark_error = q(a.final_landmark_error, b.final_landmark_error);
+  r.final_mean_landmark_error = q(a.final_mean_landmark_error, b.final_mean_landmark_error);
+  r.mean_landmark_error = q(a.mean_landmark_error, b.mean_landmark_error);
+  r.final_position_error = q(a.final_position_error, b.final_position_error);
+  r.trajectory.ate_rmse = q(a.trajectory.ate_rmse, b.trajectory.ate_rmse);
+  r.trajectory.ate_rmse_aligned = q(a.trajectory.ate_rmse_aligned, b.trajectory.ate_rmse_aligned);
+  r.trajectory.rpe_translation_rmse = q(a.trajectory.rpe_translation_rmse, b.trajectory.rpe_translation_rmse);
+  r.trajectory.rpe_rotation_rmse_deg = q(a.trajectory.rpe_rotation_rmse_deg, b.trajectory.rpe_rotation_rmse_deg);
+  r.runtime.median_ms = q(a.runtime.median_ms, b.runtime.median_ms);
+  r.runtime.p95_ms = q(a.runtime.p95_ms, b.runtime.p95_ms);
+  r.runtime.max_ms = q(a.runtime.max_ms, b.runtime.max_ms);
+  r.runtime.mean_ms = q(a.runtime.mean_ms, b.runtime.mean_ms);
+  return r;
 }
 
 double peak_rss_mb() {

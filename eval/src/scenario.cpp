@@ -137,6 +137,7 @@ void check_semantics(const LoadedScenario& loaded) {
   for (const OptionIssue& issue : sim::check(loaded.scenario.sim)) errors.push_back(loaded.error("sim." + issue.field, issue.problem));
   for (const OptionIssue& issue : point::check(loaded.scenario.relative_point))
     errors.push_back(loaded.error("relative_point." + issue.field, issue.problem));
+  for (const OptionIssue& issue : check(loaded.scenario.ekf6d)) errors.push_back(loaded.error("ekf6d." + issue.field, issue.problem));
   for (const OptionIssue& issue : check(loaded.scenario.binning_bench))
     errors.push_back(loaded.error("binning_bench." + issue.field, issue.problem));
   if (errors.empty()) return;
@@ -197,7 +198,7 @@ json to_json(const Scenario& scenario) {
 }
 
 const std::vector<std::string>& known_algorithms() {
-  static const std::vector<std::string> names = {"relative_point"};
+  static const std::vector<std::string> names = {"relative_point", "ekf6d"};
   return names;
 }
 

@@ -388,6 +388,26 @@ std::vector<ScenarioKey> build_keys() {
       boolean<&Scenario::output, &OutputOptions::rawlog_gzip>("output.rawlog_gzip", "gzip-compress the rawlog"),
   };
   for (ScenarioKey& k : relative_point_keys()) keys.push_back(std::move(k));
+  constexpr auto ekf_method_name = static_cast<std::string_view (*)(EkfMethod)>(&to_string);
+  constexpr auto ekf_association_name = static_cast<std::string_view (*)(EkfAssociation)>(&to_string);
+  const std::vector<ScenarioKey> ekf = {
+      choice<ekf_method_name, parse_ekf_method, &Scenario::ekf6d, &Ekf6dOptions::method>(
+          "ekf6d.method", "EKF update: davison (thesis 6.7) or full", {"davison", "full"}),
+      choice<ekf_association_name, parse_ekf_association, &Scenario::ekf6d, &Ekf6dOptions::association>(
+          "ekf6d.association", "known (true ids, as the thesis), or ids withheld: jcbb or nn", {"known", "jcbb", "nn"}),
+      number<&Scenario::ekf6d, &Ekf6dOptions::std_range>("ekf6d.std_range", "sensor model range std. deviation, units"),
+      degrees<&Scenario::ekf6d, &Ekf6dOptions::std_yaw_rad>("ekf6d.std_yaw_deg", "sensor model yaw std. deviation"),
+      degrees<&Scenario::ekf6d, &Ekf6dOptions::std_pitch_rad>("ekf6d.std_pitch_deg", "sensor model pitch std. deviation"),
+      number_list<&Scenario::ekf6d, &Ekf6dOptions::stds_q>("ekf6d.stds_q",
+                                                           "motion noise without odometry: x, y, z, qr, qx, qy, qz"),
+      number<&Scenario::ekf6d, &Ekf6dOptions::chi2_threshold>("ekf6d.chi2_threshold",
+                                                              "data association individual compatibility (jcbb, nn)"),
+      number<&Scenario::ekf6d, &Ekf6dOptions::time_budget_ms>("ekf6d.time_budget_ms",
+                                                              "stop the EKF past this time per iteration (thesis: 1 s)"),
+      integer<&Scenario::ekf6d, &Ekf6dOptions::budget_iterations>("ekf6d.budget_iterations",
+                                                                  "...once that many consecutive iterations exceed it"),
+  };
+  keys.insert(keys.end(), ekf.begin(), ekf.end());
   using B = BinningBenchOptions;
   const std::vector<ScenarioKey> bench = {
       integer_list<&Scenario::binning_bench, &B::points>("binning_bench.points", "S-BIN: points per binning (Fig 111's x)"),

@@ -2,10 +2,23 @@
 
 namespace relslam::eval {
 
-LoadedScenario load_with_overrides(const std::string& file, const std::vector<std::string>& set) {
+namespace {
+
+std::vector<Override> overrides_of(const std::vector<std::string>& set) {
   std::vector<Override> overrides;
   for (const std::string& text : set) overrides.push_back(parse_override(text));
-  return load_scenario(file, overrides);
+  return overrides;
+}
+
+}  // namespace
+
+LoadedScenario load_with_overrides(const std::string& file, const std::vector<std::string>& set) {
+  return load_scenario(file, overrides_of(set));
+}
+
+LoadedScenario parse_scenario_with_overrides(const std::string& text, const std::string& name,
+                                             const std::vector<std::string>& set) {
+  return parse_scenario(text, name, overrides_of(set));
 }
 
 sim::Simulator build_simulator(const LoadedScenario& loaded) {
@@ -16,6 +29,16 @@ sim::Simulator build_simulator(const LoadedScenario& loaded) {
   } catch (const OptionError& e) {
     throw loaded.error("sim." + e.field(), e.problem());
   }
+}
+
+RangeBearingSensor sensor_of(const sim::SimOptions& o) {
+  RangeBearingSensor s;
+  s.min_range = o.frustum.near;
+  s.max_range = o.frustum.max_range();
+  s.field_of_view_yaw_rad = 2.0 * o.frustum.half_angle_rad;
+  s.field_of_view_pitch_rad = o.frustum.vertical_field_of_view_rad();
+  s.std_range = o.noise_sigma;
+  return s;
 }
 
 LandmarkTruth landmark_truth(const sim::World& world) {

@@ -1,6 +1,7 @@
 #include "relslam/eval/simulation_recorder.hpp"
 
 #include "relslam/eval/csv_writer.hpp"
+#include "relslam/eval/scenario_loading.hpp"
 #include "relslam/eval/rawlog.hpp"
 #include "relslam/eval/tum_writer.hpp"
 
@@ -10,21 +11,6 @@
 
 namespace relslam::eval {
 namespace fs = std::filesystem;
-
-namespace {
-
-// What MRPT's filters need to know about the simulated sensor (they gate predictions with it).
-RangeBearingSensor sensor_of(const sim::SimOptions& o) {
-  RangeBearingSensor s;
-  s.min_range = o.frustum.near;
-  s.max_range = o.frustum.max_range();
-  s.field_of_view_yaw_rad = 2.0 * o.frustum.half_angle_rad;
-  s.field_of_view_pitch_rad = o.frustum.vertical_field_of_view_rad();
-  s.std_range = o.noise_sigma;
-  return s;
-}
-
-}  // namespace
 
 struct SimulationRecorder::Files {
   TumWriter path;

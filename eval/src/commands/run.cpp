@@ -1,74 +1,64 @@
 #include "relslam/eval/commands/run.hpp"
 
-#include "relslam/eval/algorithm_run.hpp"
-#include "relslam/eval/frame_stream.hpp"
-#include "relslam/eval/progress.hpp"
+#include "relslam/eval/experiment.hpp"
+#include "relslam/eval/input_error.hpp"
 #include "relslam/eval/run_folder.hpp"
 #include "relslam/eval/scenario_loading.hpp"
-#include "relslam/eval/simulation_recorder.hpp"
 
-#include <chrono>
 #include <cstdio>
 
 namespace relslam::eval {
 
 void add_run(CLI::App& app, RunArgs& args) {
-  add_scenario_command(
-      app, args, "run", "Simulate a scenario and run its algorithms on the same observations",
-      "Simulate a scenario and feed every frame to each algorithm the scenario lists (key `algorithms`),\n"
-      "scoring them against the truth as they go. Writes the simulation files of `relslam simulate`, one\n"
-      "folder per algorithm (iterations.csv, landmarks.csv, trajectory.tum) and summary.csv.",
-      "scenarios/s-f8.json");
+  CLI::App* cmd = app.add_subcommand("run", "Run a scenario's algorithms on simulated or recorded observations");
+  cmd->description(
+      "Feed every frame of one observation stream to each algorithm the scenario lists (key `algorithms`),\n"
+      "scoring them against the truth as they go. The stream is the scenario's simulation, or with --rawlog\n"
+      "an MRPT rawlog (any range-bearing landmark data set), optionally scored against ground truth in\n"
+      "MRPT's text formats. Writes one folder per algorithm (iterations.csv, landmarks.csv, trajectory.tum),\n"
+      "summary.csv (with the relative_point/ekf6d ratios when both ran) and manifest.json.");
+  cmd->add_option("scenario", args.scenario, "Scenario file, e.g. scenarios/s-ekf-f8.json (optional with --rawlog)");
+  cmd->add_option("--out,-o", args.out, "Run folder to create (refused if it exists and is not empty)")->required();
+  cmd->add_option("--set", args.set, "Override a scenario key, e.g. --set sim.density=50 (repeatable)");
+  cmd->add_option("--rawlog", args.rawlog, "Read the observations from this MRPT rawlog instead of simulating");
+  cmd->add_option("--truth-path", args.truth_path, "With --rawlog: robot path, rows x y z yaw pitch roll (MRPT)");
+  cmd->add_option("--truth-landmarks", args.truth_landmarks, "With --rawlog: landmarks, rows x y z ... id (MRPT)");
+  cmd->add_flag("--force", args.force, "Replace an earlier run in the --out folder");
+  cmd->add_flag("--quiet,-q", args.quiet, "Print nothing but errors");
 }
 
 int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
-  const LoadedScenario loaded = load_with_overrides(args.scenario, args.set);
-  const Scenario& scenario = loaded.scenario;
-  if (scenario.algorithms.empty())
-    throw loaded.error("algorithms", "the scenario lists no algorithm to run; add one, e.g. --set algorithms=relative_point");
-  const sim::Simulator simulator = build_simulator(loaded);
+  if (args.scenario.empty() && args.rawlog.empty())
+    throw InputError("", 0, "scenario", "give a scenario file, or --rawlog to run on recorded observations");
+  if (args.rawlog.empty() && (!args.truth_path.empty() || !args.truth_landmarks.empty()))
+    throw InputError("", 0, "--truth-path", "ground-truth files go with --rawlog");
+  // Without a scenario file, the defaults with both algorithms.
+  std::vector<std::string> set = args.set;
+  if (args.scenario.empty()) set.insert(set.begin(), "algorithms=relative_point,ekf6d");
+  const LoadedScenario loaded =
+      args.scenario.empty() ? parse_scenario_with_overrides("{}", "(defaults)", set) : load_with_overrides(args.scenario, set);
   prepare_run_folder(args.out, args.force);
 
-  const auto start = std::chrono::steady_clock::now();
-  const LandmarkTruth truth = landmark_truth(simulator.world());
-  SimulationRecorder recorder(args.out, scenario, simulator);
-  std::vector<std::unique_ptr<AlgorithmRun>> runs;
-  for (const std::string& name : scenario.algorithms) runs.push_back(make_algorithm_run(name, scenario, truth, args.out));
-
-  Progress progress("run " + scenario.name, simulator.iterations(), !args.quiet);
-  stream_frames(simulator, [&](const sim::SimFrame& frame) {
-    recorder.record(frame);
-    for (auto& run : runs) run->step(frame.observation, frame.truth);
-    progress.update(frame.observation.iteration + 1);
-  });
-  const SimulationSummary simulated = recorder.finish();
-  std::vector<SummaryRow> rows;
-  for (auto& run : runs) rows.push_back(run->finish());
-  progress.finish();
-  write_summary(std::filesystem::path(args.out) / "summary.csv", rows);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
+  ExperimentResult result;
+  if (args.rawlog.empty()) {
+    result = simulate_and_run(loaded, args.out, !args.quiet);
+  } else {
+    RawlogSource source{args.rawlog, std::nullopt, std::nullopt};
+    if (!args.truth_path.empty()) source.truth_path = args.truth_path;
+    if (!args.truth_landmarks.empty()) source.truth_landmarks = args.truth_landmarks;
+    result = run_on_rawlog(loaded, source, args.out, !args.quiet);
+  }
   nlohmann::json results = nlohmann::json::array();
-  for (const SummaryRow& r : rows)
+  for (const SummaryRow& r : result.rows)
     results.push_back({{"algorithm", r.algorithm}, {"status", r.status}, {"final_mean_landmark_error", r.final_mean_landmark_error},
                        {"final_position_error", r.final_position_error}, {"runtime_median_ms", r.runtime.median_ms}});
-  write_manifest(args.out, scenario, {"run", command_line, args.scenario, args.set},
-                 {{"simulation_summary", {{"iterations", simulated.iterations}, {"landmarks", simulated.landmarks},
-                                          {"visible_mean", simulated.visible_mean}}},
-                  {"results", results},
-                  {"wall_time_s", seconds}});
+  nlohmann::json extra = result.source;
+  extra["results"] = results;
+  extra["wall_time_s"] = result.seconds;
+  write_manifest(args.out, loaded.scenario, {"run", command_line, args.scenario, set}, extra);
   if (!args.quiet) {
-    std::printf("%s: %d iterations, %d landmarks, %.1f visible per iteration\n", scenario.name.c_str(), simulated.iterations,
-                simulated.landmarks, simulated.visible_mean);
-    std::printf("%-16s %-8s %12s %14s %12s %12s %10s\n", "algorithm", "status", "map points", "mean lm err", "pos err",
-                "median ms", "p95 ms");
-    for (const SummaryRow& r : rows)
-      std::printf("%-16s %-8s %12d %14.4g %12.4g %12.4g %10.4g\n", r.algorithm.c_str(),
-                  r.status.substr(0, r.status.find(':')).c_str(), r.landmarks_on_map, r.final_mean_landmark_error,
-                  r.final_position_error, r.runtime.median_ms, r.runtime.p95_ms);
-    for (const SummaryRow& r : rows)
-      if (r.status != "ok") std::printf("%s %s\n", r.algorithm.c_str(), r.status.c_str());
-    std::printf("wrote %s in %.1f s\n", args.out.c_str(), seconds);
+    print_results(result, args.rawlog.empty() ? loaded.scenario.name : args.rawlog);
+    std::printf("wrote %s in %.1f s\n", args.out.c_str(), result.seconds);
   }
   return 0;
 }

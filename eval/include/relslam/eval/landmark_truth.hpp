@@ -9,6 +9,7 @@
 namespace relslam::eval {
 
 struct LandmarkTruth {
+  bool known = true;  // false: no ground-truth landmarks, landmark errors are left empty
   // Landmark id i: its position (for a dynamic landmark, at iteration 0).
   std::vector<Eigen::Vector3d> positions;
   std::vector<int> dynamic_ids;  // ascending

@@ -3,6 +3,8 @@
 // Ours (thesis): +x left, +y up, +z forward. MRPT's sensor frame: +x forward, +y left, +z up.
 // (x_m, y_m, z_m) = (z_r, x_r, y_r) is a proper rotation (a cyclic permutation of the axes).
 
+#include "relslam/core/rigid.hpp"
+
 #include <Eigen/Core>
 
 namespace relslam::eval {
@@ -17,6 +19,8 @@ struct RangeBearing {
 
 inline Eigen::Vector3d mrpt_from_robot(const Eigen::Vector3d& p_robot) { return {p_robot.z(), p_robot.x(), p_robot.y()}; }
 inline Eigen::Vector3d robot_from_mrpt(const Eigen::Vector3d& p_mrpt) { return {p_mrpt.y(), p_mrpt.z(), p_mrpt.x()}; }
+// A pose between two frames that both use MRPT's axes, re-expressed with ours: A · pose · A^-1.
+Rigid3 robot_axes_from_mrpt(const Rigid3& mrpt_pose);
 
 // p in MRPT's sensor frame -> measurement; range 0 gives yaw = pitch = 0.
 RangeBearing range_bearing_of(const Eigen::Vector3d& p_mrpt);

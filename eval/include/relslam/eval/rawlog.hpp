@@ -53,6 +53,7 @@ struct Rawlog {
   bool sensory_frame_first = false;
   int records = 0;                // serialized objects read
   int skipped_observations = 0;   // observations of other types, ignored
+  RangeBearingSensor sensor;      // as the first bearing-range observation describes it
   std::vector<RawlogFrame> frames;
 };
 

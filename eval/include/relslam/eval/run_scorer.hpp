@@ -7,6 +7,7 @@
 #include "relslam/eval/landmark_error.hpp"
 #include "relslam/eval/run_summary.hpp"
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <vector>
@@ -23,7 +24,7 @@ struct IterationScore {
 
 class RunScorer {
  public:
-  explicit RunScorer(const LandmarkTruth& truth) : errors_(truth) {}
+  explicit RunScorer(const LandmarkTruth& truth) : errors_(truth), truth_known_(truth.known) {}
 
   // Which true landmark each observation was (assignment[i] is the estimate it went to).
   void associate(const std::vector<int>& assignment, const std::vector<int>& true_ids);
@@ -36,16 +37,20 @@ class RunScorer {
   double error_of(int id) const { return errors_.error_of(id); }
   // Map landmarks beyond one per true landmark, among `ids` (the estimates on the map).
   int duplicates(const std::vector<int>& ids) const;
-  // Fills the row's scores (everything but algorithm, status and landmarks_on_map).
-  void fill(SummaryRow& row) const;
+  // Fills the row's scores (everything but algorithm, status and landmarks_on_map) over the
+  // first `iterations` scored iterations (all of them by default): a run can then be compared
+  // with one that stopped earlier, at the same point.
+  void fill(SummaryRow& row, std::size_t iterations = SIZE_MAX) const;
+  std::size_t scored() const { return history_.size(); }
 
  private:
   LandmarkErrorTracker errors_;
   std::vector<std::map<int, int>> votes_;  // per estimate: true id -> observations
   std::vector<double> runtimes_;
-  double squared_position_errors_ = 0;
-  double mean_error_sum_ = 0;
-  IterationScore last_;
+  std::vector<IterationScore> history_;
+  std::vector<Rigid3> estimates_, truths_;
+  bool truth_known_;
+  bool poses_known_ = true;
 };
 
 }  // namespace relslam::eval

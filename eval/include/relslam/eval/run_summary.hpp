@@ -1,7 +1,10 @@
 #pragma once
 // summary.csv: one row per algorithm of a run (issue #3 harness).
 
+#include "relslam/eval/trajectory_error.hpp"
+
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,14 +27,21 @@ struct SummaryRow {
   double final_mean_landmark_error = 0;  // per landmark on the map
   double mean_landmark_error = 0;        // per landmark, averaged over iterations
   double final_position_error = 0;
-  double ate_rmse = 0;                   // frames coincide by construction: no alignment
+  TrajectoryError trajectory;            // ATE (unaligned: the frames coincide; and aligned), RPE
   int landmarks_on_map = 0;
   int duplicates = 0;                    // map landmarks sharing their true landmark with another
   RuntimeStats runtime;
   double peak_rss_mb = 0;                // the whole process, at the end of this algorithm's run
+  std::string input_digest;              // hash of the observation frames it was given
 };
 
-void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows);
+// One row per algorithm; then, when both relative_point and ekf6d ran, a row
+// "relative_point/ekf6d" (status "ratio") holding their ratios, compared over the iterations
+// both processed (the EKF may have stopped early): `ratio` is that row, computed by the caller.
+void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
+                   const std::optional<SummaryRow>& ratio = std::nullopt);
+// Element-wise a / b of the scores (landmark, position, trajectory errors and run times).
+SummaryRow ratio_row(const SummaryRow& a, const SummaryRow& b);
 
 // Peak resident memory of this process so far, megabytes.
 double peak_rss_mb();

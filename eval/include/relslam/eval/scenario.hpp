@@ -3,6 +3,7 @@
 // Loaded from scenarios/*.json; every key and its default are listed by scenario_keys().
 
 #include "relslam/eval/binning_bench.hpp"
+#include "relslam/eval/ekf6d_options.hpp"
 #include "relslam/eval/input_error.hpp"
 #include "relslam/point/options.hpp"
 #include "relslam/sim/options.hpp"
@@ -49,6 +50,7 @@ struct Scenario {
   sim::SimOptions sim;
   std::vector<std::string> algorithms;
   point::PointSlamOptions relative_point;  // the Relative Point algorithm's constants
+  Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
   BinningBenchOptions binning_bench;       // S-BIN only (kind binning_benchmark)
   OutputOptions output;
   std::vector<SweepAxis> sweep;

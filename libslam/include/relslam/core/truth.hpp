@@ -11,7 +11,8 @@ namespace relslam {
 struct TruthFrame {
   int iteration = 0;
   Rigid3 world_T_robot;            // true pose; identity at iteration 0 by construction
-  std::vector<int> landmark_ids;   // true landmark id of ObservationFrame::points[i]
+  bool pose_known = true;          // false for data without a ground-truth path
+  std::vector<int> landmark_ids;   // true landmark id of ObservationFrame::points[i]; -1 unknown
 };
 
 }  // namespace relslam

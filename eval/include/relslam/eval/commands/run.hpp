@@ -10,7 +10,11 @@
 
 namespace relslam::eval {
 
-using RunArgs = ScenarioCommandArgs;
+struct RunArgs : ScenarioCommandArgs {
+  std::string rawlog;           // observations from this rawlog instead of the simulator
+  std::string truth_path;       // optional, with rawlog
+  std::string truth_landmarks;  // optional, with rawlog
+};
 
 void add_run(CLI::App& app, RunArgs& args);
 int run_run(const RunArgs& args, const std::vector<std::string>& command_line);
