@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <fstream>
 #include <sstream>
@@ -14,7 +15,8 @@ namespace relslam::test {
 ScratchDir::ScratchDir() {
   static std::atomic<int> counter{0};
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "relslam";
+  std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "relslam";
+  std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests: "Prefix/Suite.Test/0"
   path_ = std::filesystem::temp_directory_path() /
           ("relslam-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++) + "-" + name);
   std::filesystem::remove_all(path_);
@@ -43,6 +45,49 @@ std::vector<std::string> read_lines(const std::filesystem::path& path) {
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
+}
+
+namespace {
+
+// Splits on commas, honouring RFC 4180 quotes.
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      fields.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+}  // namespace
+
+int CsvTable::column(const std::string& name) const {
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) return static_cast<int>(i);
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
+CsvTable read_csv(const std::filesystem::path& file) {
+  CsvTable t;
+  const auto lines = read_lines(file);
+  if (lines.empty()) {
+    ADD_FAILURE() << file << " is empty or missing";
+    return t;
+  }
+  t.header = split_csv(lines[0]);
+  for (std::size_t i = 1; i < lines.size(); ++i) t.rows.push_back(split_csv(lines[i]));
+  return t;
 }
 
 std::filesystem::path source_path(const std::string& relative) { return std::filesystem::path(RELSLAM_SOURCE_DIR) / relative; }

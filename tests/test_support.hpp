@@ -24,6 +24,17 @@ class ScratchDir {
 std::string read_file(const std::filesystem::path& path);
 void write_file(const std::filesystem::path& path, const std::string& text);
 std::vector<std::string> read_lines(const std::filesystem::path& path);
+// A CSV file as text fields (no quoting support beyond what our writers need in tests).
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  // Index of a column; a missing column is a test failure (and index 0).
+  int column(const std::string& name) const;
+  const std::string& text(std::size_t row, const std::string& name) const { return rows.at(row).at(column(name)); }
+  double number(std::size_t row, const std::string& name) const { return std::stod(text(row, name)); }
+};
+CsvTable read_csv(const std::filesystem::path& file);
+
 // Path of a file in the source tree (RELSLAM_SOURCE_DIR is set by CMake).
 std::filesystem::path source_path(const std::string& relative);
 

@@ -5,6 +5,8 @@
 #include "relslam/eval/commands/rawlog_info.hpp"
 #include "relslam/eval/commands/run.hpp"
 #include "relslam/eval/commands/simulate.hpp"
+#include "relslam/eval/commands/sweep.hpp"
+#include "relslam/eval/commands/tune_ekf.hpp"
 #include "relslam/eval/input_error.hpp"
 #include "relslam/eval/scenario_keys.hpp"
 #include "relslam/eval/scenario_loading.hpp"
@@ -24,6 +26,10 @@ one-loop figure eight). Every key has a default; `relslam keys` lists them and
 
 Examples:
   relslam run scenarios/s-f8.json --out runs/f8              # simulate and run the Relative Point algorithm
+  relslam run scenarios/s-ekf-f8.json --out runs/ekf-f8       # Relative Point and the MRPT 6D EKF on one stream
+  relslam sweep scenarios/s-dens-q.json --out runs/density --seeds 5 --jobs 2
+  relslam sweep scenarios/s-f8.json --out runs/sigma --param sim.noise_sigma=0.01,0.05 --seeds 3
+  relslam tune-ekf scenarios/s-ekf-f8.json --out runs/tune     # the EKF's sensor std. deviations
   relslam simulate scenarios/s-f8.json --out runs/f8-sim
   relslam simulate scenarios/s-f8.json --out runs/f8-dense --set sim.density=550
   relslam scenario scenarios/s-dyn.json --set sim.dynamic.count=3
@@ -65,6 +71,10 @@ int run_cli(int argc, const char* const* argv) {
   add_scenario(app, scenario);
   RawlogArgs rawlog;
   add_rawlog(app, rawlog);
+  SweepArgs sweep;
+  add_sweep(app, sweep);
+  TuneEkfArgs tune_ekf;
+  add_tune_ekf(app, tune_ekf);
   BenchBinningArgs bench_binning;
   add_bench_binning(app, bench_binning);
   bool markdown = false;
@@ -81,6 +91,8 @@ int run_cli(int argc, const char* const* argv) {
   try {
     if (app.got_subcommand("simulate")) return run_simulate(simulate, command_line);
     if (app.got_subcommand("run")) return run_run(run, command_line);
+    if (app.got_subcommand("sweep")) return run_sweep(sweep, command_line);
+    if (app.got_subcommand("tune-ekf")) return run_tune_ekf(tune_ekf, command_line);
     if (app.got_subcommand("scenario")) return run_scenario(scenario);
     if (app.got_subcommand("rawlog")) return run_rawlog(rawlog);
     if (app.got_subcommand("bench-binning")) return run_bench_binning(bench_binning, command_line);

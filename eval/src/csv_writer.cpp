@@ -12,6 +12,30 @@ CsvWriter::CsvWriter(const std::filesystem::path& path, std::vector<std::string>
   out += '\n';
 }
 
+void CsvWriter::check_width(std::size_t fields) const {
+  if (fields != columns_.size())
+    throw std::logic_error(file_.path().string() + ": row has " + std::to_string(fields) + " fields for " +
+                           std::to_string(columns_.size()) + " columns");
+}
+
+void CsvWriter::row_fields(const std::vector<std::string>& texts, const std::vector<std::optional<double>>& numbers) {
+  check_width(texts.size() + numbers.size());
+  std::string& out = file_.buffer();
+  bool first = true;
+  for (const std::string& t : texts) {
+    out += first ? "" : ",";
+    first = false;
+    append_text(out, t);
+  }
+  for (const std::optional<double>& v : numbers) {
+    out += first ? "" : ",";
+    first = false;
+    append_field(out, v);
+  }
+  out += '\n';
+  file_.maybe_flush();
+}
+
 // RFC 4180 quoting, only when needed.
 void CsvWriter::append_text(std::string& out, std::string_view text) {
   if (text.find_first_of(",\"\n\r") == std::string_view::npos) {

@@ -4,6 +4,7 @@
 
 #include "mrpt_observation.hpp"
 #include "relslam/eval/csv_writer.hpp"
+#include "relslam/eval/iteration_table.hpp"
 #include "relslam/eval/range_bearing.hpp"
 #include "relslam/eval/run_scorer.hpp"
 #include "relslam/eval/tum_writer.hpp"
@@ -21,6 +22,17 @@ namespace {
 
 using mrpt::slam::CRangeBearingKFSLAM;
 
+// The filter with its landmark-id table readable: with known association that table is the
+// authority on which state slot holds which landmark (MRPT keeps it protected).
+class Filter final : public CRangeBearingKFSLAM {
+ public:
+  // State slot of landmark `id`, -1 when the filter has not added it.
+  int slot_of(int id) const {
+    unsigned int slot = 0;
+    return m_IDs.direct(id, slot) ? static_cast<int>(slot) : -1;
+  }
+};
+
 std::string first_line(const std::string& what) {
   const std::size_t start = what.find("Message:");
   std::string line = start == std::string::npos ? what : what.substr(start + 8);
@@ -37,8 +49,7 @@ class Ekf6dRun final : public AlgorithmRun {
         sensor_(sensor),
         dir_(dir),
         scorer_(truth),
-        iterations_(dir / "iterations.csv", {"iteration", "landmark_error", "mean_landmark_error", "position_error", "ex",
-                                             "ey", "ez", "runtime_ms", "landmarks_in_map", "visible_points"}),
+        iterations_(dir / "iterations.csv", {}),
         trajectory_(dir / "trajectory.tum") {
     // Fixed in code and logged with the run (spec mrpt §6.2).
     filter_.KF_options.method = options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
@@ -95,8 +106,7 @@ class Ekf6dRun final : public AlgorithmRun {
     all_ids_.resize(n);
     for (std::size_t i = 0; i < n; ++i) all_ids_[i] = static_cast<int>(i);  // an EKF update moves every landmark
     const IterationScore s = scorer_.score(k, pose, truth, all_ids_, [&](int id) { return std::optional(map_[id]); }, runtime_ms);
-    iterations_.row(k, s.landmark_error, s.mean_landmark_error, s.position_error, s.axis_error.x(), s.axis_error.y(),
-                    s.axis_error.z(), runtime_ms, n, observation.points.size());
+    iterations_.row(k, s, runtime_ms, observation.points.size());
     trajectory_.write(static_cast<double>(k), pose);
 
     over_budget_ = runtime_ms > options_.time_budget_ms ? over_budget_ + 1 : 0;
@@ -140,17 +150,13 @@ class Ekf6dRun final : public AlgorithmRun {
     return Rigid3::from(rotation, {q.x(), q.y(), q.z()});
   }
 
-  // Map index of each observation row: rows with a known landmark keep it; new landmarks are
-  // appended in row order (CKalmanFilterCapable's "add new landmarks" step).
+  // Map index of each observation row. Known association: the filter's own id table. Otherwise
+  // its data association; rows it left unassociated became new landmarks, appended in row order
+  // (CKalmanFilterCapable's "add new landmarks" step).
   std::vector<int> assignment(std::size_t rows, std::size_t before, const std::vector<int>& true_ids) {
     std::vector<int> out(rows, -1);
     if (options_.association == EkfAssociation::Known) {
-      std::size_t next = before;
-      for (std::size_t r = 0; r < rows; ++r) {
-        auto [it, added] = index_of_id_.emplace(true_ids[r], static_cast<int>(next));
-        if (added) ++next;
-        out[r] = it->second;
-      }
+      for (std::size_t r = 0; r < rows; ++r) out[r] = filter_.slot_of(true_ids[r]);
       return out;
     }
     for (const auto& [row, index] : filter_.getLastDataAssociation().results.associations) out[row] = static_cast<int>(index);
@@ -164,13 +170,12 @@ class Ekf6dRun final : public AlgorithmRun {
   Ekf6dOptions options_;
   RangeBearingSensor sensor_;
   std::filesystem::path dir_;
-  CRangeBearingKFSLAM filter_;
+  Filter filter_;
   RunScorer scorer_;
-  CsvWriter iterations_;
+  IterationTable iterations_;
   TumWriter trajectory_;
   std::vector<Eigen::Vector3d> map_;
   std::vector<int> all_ids_;
-  std::map<int, int> index_of_id_;
   int over_budget_ = 0;
   std::string status_;
   FrameDigest digest_;

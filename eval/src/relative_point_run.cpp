@@ -2,6 +2,7 @@
 #include "relslam/eval/algorithm_run.hpp"
 #include "ekf6d_run.hpp"
 #include "relslam/eval/csv_writer.hpp"
+#include "relslam/eval/iteration_table.hpp"
 #include "relslam/eval/run_scorer.hpp"
 #include "relslam/eval/scenario.hpp"
 #include "relslam/eval/tum_writer.hpp"
@@ -31,11 +32,10 @@ class RelativePointRun final : public AlgorithmRun {
         mapper_(scenario.relative_point),
         scorer_(truth),
         iterations_(dir / "iterations.csv",
-                    {"iteration", "landmark_error", "mean_landmark_error", "position_error", "ex", "ey", "ez",
-                     "runtime_ms", "t_init_ms", "t_load_ms", "t_compute_ms", "t_create_ms", "t_pose_ms",
-                     "visible_points", "rlt_points", "mapped_points", "groups", "final_groups", "groups_alive",
-                     "temporary_groups_alive", "new_points", "local_matches", "global_matches", "pose_source",
-                     "t_merge_ms", "t_binning_ms", "binning_comparisons", "dynamic_flagged", "merges"}),
+                    {"t_init_ms", "t_load_ms", "t_compute_ms", "t_create_ms", "t_pose_ms", "rlt_points", "groups",
+                     "final_groups", "groups_alive", "temporary_groups_alive", "new_points", "local_matches",
+                     "global_matches", "pose_source", "t_merge_ms", "t_binning_ms", "binning_comparisons",
+                     "dynamic_flagged", "merges"}),
         trajectory_(dir / "trajectory.tum") {
     for (int id : truth.dynamic_ids) truth_dynamic_[id] = true;
   }
@@ -66,10 +66,8 @@ class RelativePointRun final : public AlgorithmRun {
                                            runtime_ms);
     const point::GroupStats g = mapper_.group_stats();
     const point::StepTimings& t = r.timings;
-    iterations_.row(r.iteration, s.landmark_error, s.mean_landmark_error, s.position_error, s.axis_error.x(),
-                    s.axis_error.y(), s.axis_error.z(), runtime_ms, t.init_ms, t.load_ms, t.compute_ms, t.create_ms,
-                    t.pose_ms, observation.points.size(), points.size(), s.landmarks_on_map, g.created, g.final_created,
-                    g.alive, g.temporary_alive, r.new_points, r.local_matches, r.global_matches, pose_source(r.pose_source),
+    iterations_.row(r.iteration, s, runtime_ms, observation.points.size(), t.init_ms, t.load_ms, t.compute_ms,
+                    t.create_ms, t.pose_ms, points.size(), g.created, g.final_created, g.alive, g.temporary_alive, r.new_points, r.local_matches, r.global_matches, pose_source(r.pose_source),
                     t.merge_ms, t.binning_ms, r.binning_comparisons, g.dynamic_points, g.merged_points);
     trajectory_.write(static_cast<double>(r.iteration), r.world_T_robot);
   }
@@ -90,7 +88,7 @@ class RelativePointRun final : public AlgorithmRun {
       const int truth = scorer_.majority_truth(p.id);
       landmarks.row(p.id, x, y, z, truth, scorer_.error_of(p.id), level_of(p, mapper_), p.interval.total(),
                     p.interval.first(), p.interval.last(), p.owner >= 0 ? std::optional(p.owner) : std::nullopt,
-                    p.dynamic, truth >= 0 && truth_dynamic_[truth],
+                    p.dynamic, is_truly_dynamic(truth),
                     p.merged ? std::optional(p.merged_into) : std::nullopt);
     }
     landmarks.close();
@@ -99,6 +97,11 @@ class RelativePointRun final : public AlgorithmRun {
     row.duplicates = scorer_.duplicates(on_map);
     row.peak_rss_mb = peak_rss_mb();
     return row;
+  }
+
+  // Without truth landmarks (a rawlog run) the ids are the log's own, and nothing is known to move.
+  bool is_truly_dynamic(int truth) const {
+    return truth >= 0 && static_cast<std::size_t>(truth) < truth_dynamic_.size() && truth_dynamic_[truth];
   }
 
   SummaryRow summary_over(int iterations) const override {
@@ -126,7 +129,7 @@ class RelativePointRun final : public AlgorithmRun {
   std::vector<bool> truth_dynamic_;  // by true landmark id
   RltMapper mapper_;
   RunScorer scorer_;
-  CsvWriter iterations_;
+  IterationTable iterations_;
   TumWriter trajectory_;
   FrameDigest digest_;
   std::string failure_;  // an exception ended the run

@@ -55,8 +55,9 @@ class Loader {
 
   void apply_override(const Override& o) {
     const std::string where = "--set";
-    if (o.key == "sweep" || o.key.rfind("sweep.", 0) == 0)
-      throw InputError(where, 0, o.key, "sweeps are set in the scenario file or with relslam sweep --param");
+    for (const char* grid : {"sweep", "variants"})
+      if (o.key == grid || o.key.rfind(std::string(grid) + ".", 0) == 0)
+        throw InputError(where, 0, o.key, "sweeps and variants are set in the scenario file or with relslam sweep --param");
     const ScenarioKey* key = find_scenario_key(o.key);
     if (!key) throw InputError(where, 0, o.key, unknown_key_problem(o.key));
     store(*key, override_value(*key, o.value), {where, 0});
@@ -71,6 +72,8 @@ class Loader {
       const int line = doc.line_of(path);
       if (path == "sweep") {
         read_sweep(doc, value);
+      } else if (path == "variants") {
+        read_variants(doc, value);
       } else if (const ScenarioKey* key = find_scenario_key(path)) {
         store(*key, value, {doc.file, line});
       } else if (is_group(path)) {
@@ -90,16 +93,39 @@ class Loader {
     for (const auto& [name, values] : sweep.items()) {
       const std::string path = "sweep." + name;
       const int line = doc.line_of(path);
-      const ScenarioKey* key = find_scenario_key(name);
-      if (!key || name == "seed" || name == "name") throw InputError(doc.file, line, path, "not a key that can be swept");
       if (!values.is_array() || values.empty()) throw InputError(doc.file, line, path, "expected a non-empty list of values");
-      for (const json& v : values) {
-        Scenario probe = s_;
-        const std::string problem = key->write(probe, v);
-        if (!problem.empty()) throw InputError(doc.file, line, path, problem);
-      }
+      for (const json& v : values) check_grid_value(doc.file, line, path, name, v);
       s_.sweep.push_back({name, values.get<std::vector<json>>()});
     }
+  }
+
+  // "variants": {"ar1": {"relative_point.final_group.accuracy_reduction": 1}, ...}
+  void read_variants(const JsonDocument& doc, const json& variants) {
+    if (!variants.is_object())
+      throw InputError(doc.file, doc.line_of("variants"), "variants", "expected an object of name: {key: value}");
+    for (const auto& [name, settings] : variants.items()) {
+      const std::string path = "variants." + name;
+      const int line = doc.line_of(path);
+      if (!settings.is_object()) throw InputError(doc.file, line, path, "expected an object of key: value");
+      Variant variant{name, {}};
+      for (const auto& [key, value] : settings.items()) {
+        check_grid_value(doc.file, line, path + "." + key, key, value);
+        variant.settings.emplace_back(key, value);
+      }
+      s_.variants.push_back(variant);
+    }
+  }
+
+  // A value a sweep or variant gives `key` must be one the key accepts, so a bad grid fails
+  // when the file is loaded, not hours into a batch.
+  void check_grid_value(const std::string& file, int line, const std::string& path, const std::string& key_name,
+                        const json& value) const {
+    const ScenarioKey* key = find_scenario_key(key_name);
+    if (!key || key_name == "seed" || key_name == "name")
+      throw InputError(file, line, path, "'" + key_name + "' is not a key that can be varied");
+    Scenario probe = s_;
+    const std::string problem = key->write(probe, value);
+    if (!problem.empty()) throw InputError(file, line, path, problem);
   }
 
   static json override_value(const ScenarioKey& key, const std::string& raw) {
@@ -194,6 +220,12 @@ json to_json(const Scenario& scenario) {
   json sweep = json::object();
   for (const SweepAxis& axis : scenario.sweep) sweep[axis.key] = axis.values;
   out["sweep"] = sweep;
+  json variants = json::object();
+  for (const Variant& v : scenario.variants) {
+    variants[v.name] = json::object();
+    for (const auto& [key, value] : v.settings) variants[v.name][key] = value;
+  }
+  out["variants"] = variants;
   return out;
 }
 

@@ -450,6 +450,7 @@ std::string scenario_keys_markdown() {
     out << "| `" << k.key << "` | " << k.type << " | `" << value << "` | " << k.help << " |\n";
   }
   out << "| `sweep` | object | `{}` | parameter grid for `relslam sweep`: key → list of values |\n";
+  out << "| `variants` | object | `{}` | named settings for `relslam sweep` (axis `variant`): name → {key: value} |\n";
   return out.str();
 }
 

@@ -12,12 +12,14 @@ import matplotlib.pyplot as plt
 
 import relslam_plot as rp
 
-COLUMNS = ["iteration", "landmark_error", "mean_landmark_error", "position_error", "ex", "ey", "ez", "runtime_ms"]
+COLUMNS = ["iteration", "landmark_error", "mean_landmark_error", "position_error", "ex", "ey", "ez", "runtime_ms",
+           "landmarks_in_map"]
 
 
 def algorithms(run):
     with open(os.path.join(run, "summary.csv"), newline="") as f:
-        return [row["algorithm"] for row in csv.DictReader(f)]
+        # The relative_point/ekf6d row holds ratios, not a run of its own.
+        return [row["algorithm"] for row in csv.DictReader(f) if row["status"] != "ratio"]
 
 
 def moving_average(values, width):
@@ -67,9 +69,20 @@ def main():
         ax.plot(d["iteration"], moving_average(d["runtime_ms"], 12), lw=0.8, label=f"{a} (12-iteration mean)")
     ax.set_xlabel("iteration")
     ax.set_ylabel("run time per iteration (ms)")
+    if len(data) > 1:
+        ax.set_yscale("log")  # the EKF is orders of magnitude slower (thesis Fig 148)
     ax.legend(fontsize=8)
-    ax.set_title(f"{name}: run time (algorithm only)")
+    ax.set_title(f"{name}: run time (algorithm only; thesis Figs 136, 148)")
     written.append(rp.save(fig, out, "runtime"))
+
+    fig, ax = plt.subplots(figsize=(10, 3.5))
+    for a, d in data.items():
+        ax.plot(d["iteration"], d["landmarks_in_map"], lw=1, label=a)
+    ax.set_xlabel("iteration")
+    ax.set_ylabel("landmarks on the map")
+    ax.legend(fontsize=8)
+    ax.set_title(f"{name}: map size (thesis Fig 149)")
+    written.append(rp.save(fig, out, "map_size"))
 
     for p in written:
         print(f"plot: wrote {p}")

@@ -13,33 +13,8 @@ namespace {
 
 using test::run_relslam;
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream in(line);
-  for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
-  if (!line.empty() && line.back() == ',') fields.push_back("");
-  return fields;
-}
-
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  int column(const std::string& name) const {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return static_cast<int>(i);
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-  double number(std::size_t row, const std::string& name) const { return std::stod(rows.at(row).at(column(name))); }
-};
-
-Table read_table(const std::filesystem::path& file) {
-  Table t;
-  const auto lines = test::read_lines(file);
-  t.header = split(lines.at(0));
-  for (std::size_t i = 1; i < lines.size(); ++i) t.rows.push_back(split(lines[i]));
-  return t;
-}
+using Table = test::CsvTable;
+using test::read_csv;
 
 // Measured times differ from run to run; everything else must not.
 bool is_timing(const std::string& column) {
@@ -59,17 +34,17 @@ TEST(RunCommand, WritesTheAlgorithmFolderAndSummary) {
   test::ScratchDir dir;
   const auto r = run_relslam(run_args(dir / "run"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const Table iterations = read_table(dir / "run/relative_point/iterations.csv");
+  const Table iterations = read_csv(dir / "run/relative_point/iterations.csv");
   for (const char* column : {"iteration", "landmark_error", "mean_landmark_error", "position_error", "ex", "ey", "ez",
                              "runtime_ms", "t_init_ms", "t_load_ms", "t_compute_ms", "t_create_ms", "t_pose_ms",
-                             "visible_points", "rlt_points", "mapped_points", "groups", "final_groups"})
+                             "visible_points", "landmarks_in_map", "rlt_points", "groups", "final_groups"})
     iterations.column(column);
   EXPECT_EQ(iterations.rows.size(), 400u);
   EXPECT_EQ(test::read_lines(dir / "run/relative_point/trajectory.tum").size(), 400u);
-  const Table landmarks = read_table(dir / "run/relative_point/landmarks.csv");
+  const Table landmarks = read_csv(dir / "run/relative_point/landmarks.csv");
   EXPECT_EQ(std::vector<std::string>(landmarks.header.begin(), landmarks.header.begin() + 7),
             (std::vector<std::string>{"id", "x", "y", "z", "true_id", "error", "level"}));
-  const Table summary = read_table(dir / "run/summary.csv");
+  const Table summary = read_csv(dir / "run/summary.csv");
   ASSERT_EQ(summary.rows.size(), 1u);
   EXPECT_EQ(summary.rows[0][summary.column("algorithm")], "relative_point");
   EXPECT_EQ(summary.rows[0][summary.column("status")], "ok");
@@ -82,9 +57,9 @@ TEST(RunCommand, WritesTheAlgorithmFolderAndSummary) {
 TEST(RunCommand, FinalLandmarkErrorIsTheSumOfTheMapLandmarksErrors) {
   test::ScratchDir dir;
   ASSERT_EQ(run_relslam(run_args(dir / "run")).exit_code, 0);
-  const Table iterations = read_table(dir / "run/relative_point/iterations.csv");
-  const Table landmarks = read_table(dir / "run/relative_point/landmarks.csv");
-  const Table truth = read_table(dir / "run/ground_truth_landmarks.csv");
+  const Table iterations = read_csv(dir / "run/relative_point/iterations.csv");
+  const Table landmarks = read_csv(dir / "run/relative_point/landmarks.csv");
+  const Table truth = read_csv(dir / "run/ground_truth_landmarks.csv");
   double sum = 0;
   int on_map = 0;
   for (std::size_t i = 0; i < landmarks.rows.size(); ++i) {
@@ -100,7 +75,7 @@ TEST(RunCommand, FinalLandmarkErrorIsTheSumOfTheMapLandmarksErrors) {
     EXPECT_NEAR(landmarks.number(i, "error"), nearest, 1e-12);
   }
   const std::size_t last = iterations.rows.size() - 1;
-  EXPECT_EQ(iterations.number(last, "mapped_points"), on_map);
+  EXPECT_EQ(iterations.number(last, "landmarks_in_map"), on_map);
   EXPECT_NEAR(iterations.number(last, "landmark_error"), sum, 1e-9 * sum);
 }
 
@@ -111,7 +86,7 @@ TEST(RunCommand, SameSeedGivesIdenticalResultsApartFromMeasuredTimes) {
   for (const char* file : {"relative_point/landmarks.csv", "relative_point/trajectory.tum", "ground_truth_path.tum"})
     EXPECT_EQ(test::read_file(dir / "a" / file), test::read_file(dir / "b" / file)) << file;
   for (const char* file : {"relative_point/iterations.csv", "summary.csv"}) {
-    const Table a = read_table(dir / "a" / file), b = read_table(dir / "b" / file);
+    const Table a = read_csv(dir / "a" / file), b = read_csv(dir / "b" / file);
     ASSERT_EQ(a.header, b.header);
     ASSERT_EQ(a.rows.size(), b.rows.size());
     for (std::size_t r = 0; r < a.rows.size(); ++r)
@@ -128,7 +103,7 @@ TEST(RunCommand, NoiseFreeRunScoresZeroErrors) {
                                                "--set", "relative_point.global_bound=0.001"}))
                 .exit_code,
             0);
-  const Table iterations = read_table(dir / "run/relative_point/iterations.csv");
+  const Table iterations = read_csv(dir / "run/relative_point/iterations.csv");
   for (std::size_t r = 0; r < iterations.rows.size(); ++r) {
     ASSERT_LT(iterations.number(r, "mean_landmark_error"), 1e-9) << "row " << r;
     ASSERT_LT(iterations.number(r, "position_error"), 1e-9) << "row " << r;

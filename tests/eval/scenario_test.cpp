@@ -119,9 +119,26 @@ TEST(Scenario, SweepAxesAreCheckedAgainstTheirKeys) {
   EXPECT_EQ(s.sweep[0].values.size(), 2u);
   EXPECT_EQ(error_of("{\"sweep\": {\"sim.density\": [100, \"x\"]}}"),
             "scenarios/t.json:1: sweep.sim.density: expected a number, got \"x\"");
-  EXPECT_EQ(error_of("{\"sweep\": {\"sim.bogus\": [1]}}"), "scenarios/t.json:1: sweep.sim.bogus: not a key that can be swept");
+  EXPECT_EQ(error_of("{\"sweep\": {\"sim.bogus\": [1]}}"), "scenarios/t.json:1: sweep.sim.bogus: 'sim.bogus' is not a key that can be varied");
   EXPECT_EQ(error_of("{\"sweep\": {\"sim.density\": []}}"),
             "scenarios/t.json:1: sweep.sim.density: expected a non-empty list of values");
+}
+
+TEST(Scenario, VariantsAreNamedSettingsCheckedAgainstTheirKeys) {
+  const Scenario s = parse_scenario(R"({"variants": {"base": {}, "ar1": {"relative_point.final_group.accuracy_reduction": 1,
+      "sim.noise_sigma": 0.2}}})", "t.json").scenario;
+  ASSERT_EQ(s.variants.size(), 2u);
+  EXPECT_EQ(s.variants[0].name, "ar1");  // JSON objects are unordered: variants come sorted by name
+  ASSERT_EQ(s.variants[0].settings.size(), 2u);
+  EXPECT_EQ(s.variants[0].settings[0].first, "relative_point.final_group.accuracy_reduction");
+  EXPECT_TRUE(s.variants[1].settings.empty());
+  EXPECT_EQ(to_json(s)["variants"]["ar1"]["sim.noise_sigma"], 0.2);
+  EXPECT_TRUE(to_json(s)["variants"]["base"].is_object());
+  EXPECT_EQ(error_of(R"({"variants": {"x": {"sim.density": "many"}}})"),
+            "scenarios/t.json:1: variants.x.sim.density: expected a number, got \"many\"");
+  EXPECT_EQ(error_of(R"({"variants": {"x": {"seed": 3}}})"),
+            "scenarios/t.json:1: variants.x.seed: 'seed' is not a key that can be varied");
+  EXPECT_EQ(error_of(R"({"variants": {"x": 3}})"), "scenarios/t.json:1: variants.x: expected an object of key: value");
 }
 
 TEST(Scenario, UnknownAlgorithmIsRejected) {

@@ -19,15 +19,16 @@ class CsvWriter {
   // One row; the number of fields must equal the number of columns.
   template <class... Fields>
   void row(const Fields&... fields) {
-    if (sizeof...(Fields) != columns_.size())
-      throw std::logic_error(file_.path().string() + ": row has " + std::to_string(sizeof...(Fields)) +
-                             " fields for " + std::to_string(columns_.size()) + " columns");
+    check_width(sizeof...(Fields));
     std::string& out = file_.buffer();
     bool first = true;
     ((out += first ? "" : ",", first = false, append_field(out, fields)), ...);
     out += '\n';
     file_.maybe_flush();
   }
+  // A row whose width is known only at run time (tables with caller-chosen label columns):
+  // the text fields first, then the numbers; missing numbers are empty fields.
+  void row_fields(const std::vector<std::string>& texts, const std::vector<std::optional<double>>& numbers);
   void close() { file_.close(); }
 
  private:
@@ -45,6 +46,7 @@ class CsvWriter {
     if (v) append_field(out, *v);
   }
   static void append_text(std::string& out, std::string_view text);
+  void check_width(std::size_t fields) const;
 
   TextFile file_;
   std::vector<std::string> columns_;

@@ -42,6 +42,13 @@ struct SweepAxis {
   std::vector<nlohmann::json> values;
 };
 
+// A named set of key values (a row of the thesis's constant-comparison figures, 120-126):
+// `relslam sweep` runs each variant as one value of the axis "variant".
+struct Variant {
+  std::string name;
+  std::vector<std::pair<std::string, nlohmann::json>> settings;  // scenario key -> value
+};
+
 struct Scenario {
   std::string name;         // defaults to the file name without extension
   std::string description;  // what the experiment is for (thesis figures)
@@ -54,6 +61,7 @@ struct Scenario {
   BinningBenchOptions binning_bench;       // S-BIN only (kind binning_benchmark)
   OutputOptions output;
   std::vector<SweepAxis> sweep;
+  std::vector<Variant> variants;
 };
 
 // A `--set key=value` from the command line. The value is JSON where it parses as JSON
