@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -91,6 +92,13 @@ CsvTable read_csv(const std::filesystem::path& file) {
 }
 
 std::filesystem::path source_path(const std::string& relative) { return std::filesystem::path(RELSLAM_SOURCE_DIR) / relative; }
+
+std::filesystem::path victoria_park_data() {
+  const char* env = std::getenv("RELSLAM_VICTORIA_PARK");
+  const std::filesystem::path dir =
+      env && *env ? std::filesystem::path(env) : source_path("../shared/datasets/victoria_park");
+  return std::filesystem::exists(dir / "measurements.dat") ? dir : std::filesystem::path();
+}
 
 CliResult run_relslam(const std::vector<std::string>& arguments) {
   std::vector<const char*> argv = {"relslam"};

@@ -38,6 +38,12 @@ CsvTable read_csv(const std::filesystem::path& file);
 // Path of a file in the source tree (RELSLAM_SOURCE_DIR is set by CMake).
 std::filesystem::path source_path(const std::string& relative);
 
+// The Victoria Park data: $RELSLAM_VICTORIA_PARK, else ../shared/datasets/victoria_park next
+// to the source tree; empty when it is not there (tests then GTEST_SKIP with this message).
+std::filesystem::path victoria_park_data();
+constexpr const char* kNoVictoriaPark =
+    "Victoria Park data not found: set RELSLAM_VICTORIA_PARK to the folder holding measurements.dat";
+
 // Runs the relslam command line in-process; stdout and stderr are captured.
 struct CliResult {
   int exit_code = -1;

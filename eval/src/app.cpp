@@ -7,6 +7,7 @@
 #include "relslam/eval/commands/simulate.hpp"
 #include "relslam/eval/commands/sweep.hpp"
 #include "relslam/eval/commands/tune_ekf.hpp"
+#include "relslam/eval/commands/victoria_park.hpp"
 #include "relslam/eval/input_error.hpp"
 #include "relslam/eval/scenario_keys.hpp"
 #include "relslam/eval/scenario_loading.hpp"
@@ -35,6 +36,8 @@ Examples:
   relslam scenario scenarios/s-dyn.json --set sim.dynamic.count=3
   relslam rawlog runs/f8/observations.rawlog --csv runs/f8/from_rawlog.csv
   relslam bench-binning scenarios/s-bin.json --out runs/s-bin
+  relslam victoria-park --window 1181:1642 --out runs/vp-1181  # Victoria Park against GPS (thesis 6.8)
+  relslam convert victoria-park --out runs/vp.rawlog           # Victoria Park as an MRPT rawlog
 
 Exit codes: 0 ok, 2 bad input (the message names the file, line and key), 1 internal error.)";
 
@@ -75,6 +78,10 @@ int run_cli(int argc, const char* const* argv) {
   add_sweep(app, sweep);
   TuneEkfArgs tune_ekf;
   add_tune_ekf(app, tune_ekf);
+  VictoriaParkArgs victoria_park;
+  add_victoria_park(app, victoria_park);
+  ConvertVictoriaParkArgs convert;
+  add_convert(app, convert);
   BenchBinningArgs bench_binning;
   add_bench_binning(app, bench_binning);
   bool markdown = false;
@@ -93,6 +100,8 @@ int run_cli(int argc, const char* const* argv) {
     if (app.got_subcommand("run")) return run_run(run, command_line);
     if (app.got_subcommand("sweep")) return run_sweep(sweep, command_line);
     if (app.got_subcommand("tune-ekf")) return run_tune_ekf(tune_ekf, command_line);
+    if (app.got_subcommand("victoria-park")) return run_victoria_park_command(victoria_park, command_line);
+    if (app.got_subcommand("convert")) return run_convert_victoria_park(convert);
     if (app.got_subcommand("scenario")) return run_scenario(scenario);
     if (app.got_subcommand("rawlog")) return run_rawlog(rawlog);
     if (app.got_subcommand("bench-binning")) return run_bench_binning(bench_binning, command_line);

@@ -2,20 +2,13 @@
 // thesis's baseline (6.7), driven as spec mrpt §1.8 and §6 say to avoid MRPT 2.5.8's traps.
 #include "ekf6d_run.hpp"
 
+#include "filter_run.hpp"
 #include "mrpt_observation.hpp"
-#include "relslam/eval/csv_writer.hpp"
-#include "relslam/eval/iteration_table.hpp"
 #include "relslam/eval/range_bearing.hpp"
-#include "relslam/eval/run_scorer.hpp"
-#include "relslam/eval/tum_writer.hpp"
 
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/slam/CRangeBearingKFSLAM.h>
-
-#include <chrono>
-#include <cmath>
-#include <map>
 
 namespace relslam::eval {
 namespace {
@@ -33,24 +26,13 @@ class Filter final : public CRangeBearingKFSLAM {
   }
 };
 
-std::string first_line(const std::string& what) {
-  const std::size_t start = what.find("Message:");
-  std::string line = start == std::string::npos ? what : what.substr(start + 8);
-  line = line.substr(0, line.find('\n'));
-  const std::size_t first = line.find_first_not_of(' ');
-  return first == std::string::npos ? "" : line.substr(first);
-}
-
-class Ekf6dRun final : public AlgorithmRun {
+class Ekf6dRun final : public FilterRun {
  public:
   Ekf6dRun(const Ekf6dOptions& options, const RangeBearingSensor& sensor, const LandmarkTruth& truth,
            const std::filesystem::path& dir)
-      : options_(options),
-        sensor_(sensor),
-        dir_(dir),
-        scorer_(truth),
-        iterations_(dir / "iterations.csv", {}),
-        trajectory_(dir / "trajectory.tum") {
+      : FilterRun("ekf6d", {options.time_budget_ms, options.budget_iterations}, truth, dir),
+        options_(options),
+        sensor_(sensor) {
     // Fixed in code and logged with the run (spec mrpt §6.2).
     filter_.KF_options.method = options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
     filter_.options.force_ignore_odometry = true;  // belt and braces: the actions are empty anyway
@@ -64,121 +46,47 @@ class Ekf6dRun final : public AlgorithmRun {
     filter_.setMinLoggingLevel(mrpt::system::LVL_ERROR);  // not a warning per missed prediction
   }
 
-  const std::string& name() const override { return name_; }
-
-  void step(const ObservationFrame& observation, const TruthFrame& truth) override {
-    digest_.add(observation);
-    if (!status_.empty()) return;  // failed or stopped: the rest of the stream is not processed
-    const int k = observation.iteration;
+ private:
+  void process(const ObservationFrame& observation, const TruthFrame& truth) override {
     // Known association: every row carries its true id; otherwise none does (never mixed,
     // spec mrpt §1.8 item 4).
     static const std::vector<int> unknown;
     const std::vector<int>& ids = options_.association == EkfAssociation::Known ? truth.landmark_ids : unknown;
     mrpt::obs::CSensoryFrame::Ptr sf = std::make_shared<mrpt::obs::CSensoryFrame>();
-    sf->insert(bearing_range_observation(observation, ids, sensor_, 1.0e9 + k));
+    sf->insert(bearing_range_observation(observation, ids, sensor_, 1.0e9 + observation.iteration));
     mrpt::obs::CActionCollection::Ptr no_odometry = std::make_shared<mrpt::obs::CActionCollection>();  // never null (§1.8 item 2)
-
-    const std::size_t before = filter_.getNumberOfLandmarksInTheMap();
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      filter_.processActionObservation(no_odometry, sf);
-    } catch (const std::exception& e) {
-      status_ = "failed at iteration " + std::to_string(k) + ": " + first_line(e.what());
-      return;
-    }
-    const double runtime_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-
-    // Scoring, outside the timed region.
-    const Rigid3 pose = robot_axes_from_mrpt(mrpt_pose());
-    const std::size_t n = filter_.getNumberOfLandmarksInTheMap();
-    map_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      CRangeBearingKFSLAM::KFArray_FEAT mean;
-      filter_.getLandmarkMean(i, mean);
-      map_[i] = robot_from_mrpt(Eigen::Vector3d(mean[0], mean[1], mean[2]));
-    }
-    if (!pose.translation.allFinite() || !pose.rotation.allFinite() ||
-        std::any_of(map_.begin(), map_.end(), [](const Eigen::Vector3d& p) { return !p.allFinite(); })) {
-      status_ = "failed at iteration " + std::to_string(k) + ": the filter state became NaN";
-      return;
-    }
-    scorer_.associate(assignment(observation.points.size(), before, truth.landmark_ids), truth.landmark_ids);
-    all_ids_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) all_ids_[i] = static_cast<int>(i);  // an EKF update moves every landmark
-    const IterationScore s = scorer_.score(k, pose, truth, all_ids_, [&](int id) { return std::optional(map_[id]); }, runtime_ms);
-    iterations_.row(k, s, runtime_ms, observation.points.size());
-    trajectory_.write(static_cast<double>(k), pose);
-
-    over_budget_ = runtime_ms > options_.time_budget_ms ? over_budget_ + 1 : 0;
-    if (over_budget_ >= options_.budget_iterations)
-      status_ = "stopped at iteration " + std::to_string(k) + ": over the time budget (" +
-                std::to_string(static_cast<int>(options_.time_budget_ms)) + " ms) for " +
-                std::to_string(options_.budget_iterations) + " iterations";
+    filter_.processActionObservation(no_odometry, sf);
   }
 
-  SummaryRow finish() override {
-    iterations_.close();
-    trajectory_.close();
-    CsvWriter landmarks(dir_ / "landmarks.csv", {"id", "x", "y", "z", "true_id", "error", "level"});
-    std::vector<int> ids;
-    for (std::size_t i = 0; i < map_.size(); ++i) {
-      ids.push_back(static_cast<int>(i));
-      landmarks.row(i, map_[i].x(), map_[i].y(), map_[i].z(), scorer_.majority_truth(static_cast<int>(i)),
-                    scorer_.error_of(static_cast<int>(i)), "ekf");
-    }
-    landmarks.close();
-    SummaryRow row = summary_over(static_cast<int>(scorer_.scored()));
-    row.landmarks_on_map = static_cast<int>(map_.size());
-    row.duplicates = scorer_.duplicates(ids);
-    row.peak_rss_mb = peak_rss_mb();
-    return row;
-  }
+  std::size_t map_size() const override { return filter_.getNumberOfLandmarksInTheMap(); }
 
-  SummaryRow summary_over(int iterations) const override {
-    SummaryRow row;
-    row.algorithm = name_;
-    row.status = status_.empty() ? "ok" : status_;
-    scorer_.fill(row, static_cast<std::size_t>(iterations));
-    row.input_digest = digest_.hex();
-    return row;
-  }
-
- private:
-  Rigid3 mrpt_pose() const {
+  Rigid3 pose() const override {
     const mrpt::poses::CPose3DQuat q = filter_.getCurrentRobotPoseMean();
     const Eigen::Quaterniond rotation(q.quat().r(), q.quat().x(), q.quat().y(), q.quat().z());
-    return Rigid3::from(rotation, {q.x(), q.y(), q.z()});
+    return robot_axes_from_mrpt(Rigid3::from(rotation, {q.x(), q.y(), q.z()}));
   }
 
-  // Map index of each observation row. Known association: the filter's own id table. Otherwise
-  // its data association; rows it left unassociated became new landmarks, appended in row order
-  // (CKalmanFilterCapable's "add new landmarks" step).
-  std::vector<int> assignment(std::size_t rows, std::size_t before, const std::vector<int>& true_ids) {
+  Eigen::Vector3d landmark(std::size_t index) const override {
+    CRangeBearingKFSLAM::KFArray_FEAT mean;
+    filter_.getLandmarkMean(index, mean);
+    return robot_from_mrpt(Eigen::Vector3d(mean[0], mean[1], mean[2]));
+  }
+
+  // Known association: the filter's own id table. Otherwise its data association; rows it left
+  // unassociated became new landmarks, appended in row order (CKalmanFilterCapable's "add new
+  // landmarks" step).
+  std::vector<int> assignment(std::size_t rows, std::size_t before, const std::vector<int>& true_ids) const override {
     std::vector<int> out(rows, -1);
     if (options_.association == EkfAssociation::Known) {
       for (std::size_t r = 0; r < rows; ++r) out[r] = filter_.slot_of(true_ids[r]);
       return out;
     }
-    for (const auto& [row, index] : filter_.getLastDataAssociation().results.associations) out[row] = static_cast<int>(index);
-    std::size_t next = before;
-    for (std::size_t r = 0; r < rows; ++r)
-      if (out[r] < 0) out[r] = static_cast<int>(next++);
-    return out;
+    return unknown_association_slots(filter_.getLastDataAssociation().results.associations, rows, before);
   }
 
-  std::string name_ = "ekf6d";
   Ekf6dOptions options_;
   RangeBearingSensor sensor_;
-  std::filesystem::path dir_;
   Filter filter_;
-  RunScorer scorer_;
-  IterationTable iterations_;
-  TumWriter trajectory_;
-  std::vector<Eigen::Vector3d> map_;
-  std::vector<int> all_ids_;
-  int over_budget_ = 0;
-  std::string status_;
-  FrameDigest digest_;
 };
 
 }  // namespace

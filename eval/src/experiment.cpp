@@ -1,6 +1,6 @@
 #include "relslam/eval/experiment.hpp"
 
-#include "relslam/eval/algorithm_run.hpp"
+#include "algorithm_set.hpp"
 #include "relslam/eval/frame_stream.hpp"
 #include "relslam/eval/input_error.hpp"
 #include "relslam/eval/mrpt_ground_truth.hpp"
@@ -17,41 +17,6 @@
 namespace relslam::eval {
 namespace {
 
-// Every algorithm of the scenario, fed the same frames; finish() writes summary.csv.
-class Algorithms {
- public:
-  Algorithms(const Scenario& scenario, const LandmarkTruth& truth, const RangeBearingSensor& sensor,
-             const std::filesystem::path& out)
-      : out_(out) {
-    for (const std::string& name : scenario.algorithms) runs_.push_back(make_algorithm_run(name, scenario, truth, sensor, out));
-  }
-  void step(const ObservationFrame& observation, const TruthFrame& truth) {
-    for (auto& run : runs_) run->step(observation, truth);
-  }
-  void finish(ExperimentResult& result) {
-    for (auto& run : runs_) result.rows.push_back(run->finish());
-    result.ratio = relative_to_ekf(result.rows);
-    write_summary(out_ / "summary.csv", result.rows, result.ratio);
-  }
-
- private:
-  // The Relative Point / EKF ratios, over the iterations both processed.
-  std::optional<SummaryRow> relative_to_ekf(const std::vector<SummaryRow>& rows) const {
-    int rp = -1, ekf = -1;
-    for (std::size_t i = 0; i < runs_.size(); ++i) {
-      if (runs_[i]->name() == "relative_point") rp = static_cast<int>(i);
-      if (runs_[i]->name() == "ekf6d") ekf = static_cast<int>(i);
-    }
-    if (rp < 0 || ekf < 0) return std::nullopt;
-    const int common = std::min(rows[rp].iterations, rows[ekf].iterations);
-    if (common == 0) return std::nullopt;
-    return ratio_row(runs_[rp]->summary_over(common), runs_[ekf]->summary_over(common));
-  }
-
-  std::filesystem::path out_;
-  std::vector<std::unique_ptr<AlgorithmRun>> runs_;
-};
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -66,7 +31,7 @@ ExperimentResult simulate_and_run(const LoadedScenario& loaded, const std::files
   const auto start = std::chrono::steady_clock::now();
   const LandmarkTruth truth = landmark_truth(simulator.world());
   SimulationRecorder recorder(out, scenario, simulator);
-  Algorithms algorithms(scenario, truth, sensor_of(scenario.sim), out);
+  AlgorithmSet algorithms(scenario, truth, sensor_of(scenario.sim), out);
   Progress bar("run " + scenario.name, simulator.iterations(), progress);
   stream_frames(simulator, [&](const sim::SimFrame& frame) {
     recorder.record(frame);
@@ -122,7 +87,7 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogSource&
     }
   }
 
-  Algorithms algorithms(scenario, truth, log.sensor, out);
+  AlgorithmSet algorithms(scenario, truth, log.sensor, out);
   Progress bar("run " + source.rawlog.filename().string(), static_cast<long long>(log.frames.size()), progress);
   for (const RawlogFrame& frame : log.frames) {
     const ObservationFrame observation = observation_frame(frame);

@@ -16,6 +16,9 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
+#include <mrpt/poses/CPose3DQuat.h>
+
+#include <Eigen/Geometry>
 #include <mrpt/serialization/CArchive.h>
 
 #include <array>
@@ -35,6 +38,31 @@ Rigid3 rigid_of(const mrpt::poses::CPose3D& pose) {
   r.rotation = pose.getRotationMatrix().asEigen();
   r.translation = {pose.x(), pose.y(), pose.z()};
   return r;
+}
+
+// A frame's odometry as MRPT's odometry action, with MRPT's default Gaussian motion model for
+// its uncertainty: planar motions (about our +y, in our x-z plane) as a 2D action, which
+// both the 2D and 6D filters read, anything else as a 3D one.
+CActionCollection odometry_actions(const ObservationFrame& frame) {
+  CActionCollection actions;
+  if (!frame.odometry) return actions;
+  const Rigid3 m = mrpt_axes_from_robot(*frame.odometry);
+  const bool planar = std::abs(m.translation.z()) < 1e-12 && std::abs(m.rotation(2, 2) - 1.0) < 1e-12;
+  if (planar) {
+    mrpt::obs::CActionRobotMovement2D move;
+    const Pose2 p = planar_from_robot_pose(*frame.odometry);
+    move.computeFromOdometry(mrpt::poses::CPose2D(p.x, p.y, p.heading), mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+    actions.insert(move);
+  } else {
+    mrpt::obs::CActionRobotMovement3D move;
+    const Eigen::Quaterniond q(m.rotation);
+    move.computeFromOdometry(mrpt::poses::CPose3D(mrpt::poses::CPose3DQuat(m.translation.x(), m.translation.y(),
+                                                                           m.translation.z(),
+                                                                           mrpt::math::CQuaternionDouble(q.w(), q.x(), q.y(), q.z()))),
+                             mrpt::obs::CActionRobotMovement3D::TMotionModelOptions());
+    actions.insert(move);
+  }
+  return actions;
 }
 
 std::optional<Rigid3> odometry_of(const CActionCollection& actions) {
@@ -188,6 +216,7 @@ ObservationFrame observation_frame(const RawlogFrame& frame) {
     const Eigen::Vector3d p_sensor = point_of({m.range, m.yaw_rad, m.pitch_rad});
     out.points.push_back(robot_from_mrpt(frame.robot_T_sensor * p_sensor));
   }
+  if (frame.odometry) out.odometry = robot_axes_from_mrpt(*frame.odometry);
   return out;
 }
 
@@ -221,10 +250,11 @@ void RawlogWriter::write(const ObservationFrame& frame, const std::vector<int>& 
   if (!impl_->stream) throw std::logic_error(impl_->name + ": write after close");
   CSensoryFrame sf;
   sf.insert(bearing_range_observation(frame, landmark_ids, impl_->sensor, timestamp_s));
-  CActionCollection no_odometry;  // action first: kf-slam then pairs step k with frame k
+  // Action first: kf-slam then pairs step k with frame k. Empty without odometry.
+  const CActionCollection actions = odometry_actions(frame);
   impl_->record.clear();
   auto archive = mrpt::serialization::archiveFrom(impl_->record);
-  archive << no_odometry << sf;
+  archive << actions << sf;
   const auto bytes = static_cast<std::size_t>(impl_->record.getPosition());  // bytes written since clear()
   if (impl_->stream->Write(impl_->record.getRawBufferData(), bytes) != bytes)
     throw std::runtime_error(impl_->name + ": write failed (disk full?)");

@@ -1,5 +1,6 @@
 // The Relative Point algorithm (libslam's RltMapper) as one algorithm of a run.
 #include "relslam/eval/algorithm_run.hpp"
+#include "ekf2d_run.hpp"
 #include "ekf6d_run.hpp"
 #include "relslam/eval/csv_writer.hpp"
 #include "relslam/eval/iteration_table.hpp"
@@ -21,7 +22,12 @@ std::string level_of(const RltPoint& p, const RltMapper& mapper) {
   if (p.merged) return "merged";
   if (p.dynamic) return "dynamic";
   if (!p.has_global) return "none";
-  return mapper.groups()[p.owner].level() == point::GroupLevel::Final ? "final" : "temporary";
+  switch (mapper.groups()[p.owner].level()) {
+    case point::GroupLevel::Temporary: return "temporary";
+    case point::GroupLevel::Final: return "final";
+    case point::GroupLevel::Level3: return "level3";
+  }
+  return "?";
 }
 
 class RelativePointRun final : public AlgorithmRun {
@@ -104,6 +110,14 @@ class RelativePointRun final : public AlgorithmRun {
     return truth >= 0 && static_cast<std::size_t>(truth) < truth_dynamic_.size() && truth_dynamic_[truth];
   }
 
+  const std::vector<Rigid3>& trajectory() const override { return scorer_.estimates(); }
+  std::vector<Eigen::Vector3d> map() const override {
+    std::vector<Eigen::Vector3d> out;
+    for (const RltPoint& p : mapper_.points())
+      if (p.on_map()) out.push_back(p.global);
+    return out;
+  }
+
   SummaryRow summary_over(int iterations) const override {
     SummaryRow row;
     row.algorithm = name_;
@@ -120,6 +134,7 @@ class RelativePointRun final : public AlgorithmRun {
       case point::PoseSource::MappedPoints: return "mapped";
       case point::PoseSource::UnmappedPoints: return "unmapped";
       case point::PoseSource::Held: return "held";
+      case point::PoseSource::Odometry: return "odometry";
     }
     return "?";
   }
@@ -146,6 +161,10 @@ void FrameDigest::add(const ObservationFrame& frame) {
   };
   mix(&frame.iteration, sizeof frame.iteration);
   for (const Eigen::Vector3d& p : frame.points) mix(p.data(), 3 * sizeof(double));
+  if (frame.odometry) {
+    mix(frame.odometry->rotation.data(), 9 * sizeof(double));
+    mix(frame.odometry->translation.data(), 3 * sizeof(double));
+  }
 }
 
 std::string FrameDigest::hex() const {
@@ -160,6 +179,8 @@ std::unique_ptr<AlgorithmRun> make_algorithm_run(const std::string& name, const 
   std::filesystem::create_directories(dir / name);
   if (name == "relative_point") return std::make_unique<RelativePointRun>(scenario, truth, dir / name);
   if (name == "ekf6d") return make_ekf6d_run(scenario.ekf6d, sensor, truth, dir / name);
+  if (name == "ekf2d" || name == "ekf2d_no_odometry")
+    return make_ekf2d_run(scenario.ekf2d, name == "ekf2d", sensor, truth, dir / name);
   throw std::logic_error("make_algorithm_run: unknown algorithm " + name);
 }
 

@@ -164,6 +164,14 @@ void check_semantics(const LoadedScenario& loaded) {
   for (const OptionIssue& issue : point::check(loaded.scenario.relative_point))
     errors.push_back(loaded.error("relative_point." + issue.field, issue.problem));
   for (const OptionIssue& issue : check(loaded.scenario.ekf6d)) errors.push_back(loaded.error("ekf6d." + issue.field, issue.problem));
+  for (const OptionIssue& issue : check(loaded.scenario.ekf2d)) errors.push_back(loaded.error("ekf2d." + issue.field, issue.problem));
+  for (const OptionIssue& issue : check(loaded.scenario.victoria_park.filter))
+    errors.push_back(loaded.error("victoria_park." + issue.field, issue.problem));
+  try {
+    parse_scan_window(loaded.scenario.victoria_park.window, "victoria_park.window");
+  } catch (const InputError& e) {
+    errors.push_back(loaded.error("victoria_park.window", e.problem()));
+  }
   for (const OptionIssue& issue : check(loaded.scenario.binning_bench))
     errors.push_back(loaded.error("binning_bench." + issue.field, issue.problem));
   if (errors.empty()) return;
@@ -230,7 +238,7 @@ json to_json(const Scenario& scenario) {
 }
 
 const std::vector<std::string>& known_algorithms() {
-  static const std::vector<std::string> names = {"relative_point", "ekf6d"};
+  static const std::vector<std::string> names = {"relative_point", "ekf6d", "ekf2d", "ekf2d_no_odometry"};
   return names;
 }
 

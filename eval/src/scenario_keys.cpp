@@ -171,11 +171,16 @@ ScenarioKey choice(std::string key, std::string help, const std::vector<std::str
 }
 
 std::string_view kind_name(ScenarioKind kind) {
-  return kind == ScenarioKind::Simulation ? "simulation" : "binning_benchmark";
+  switch (kind) {
+    case ScenarioKind::Simulation: return "simulation";
+    case ScenarioKind::BinningBenchmark: return "binning_benchmark";
+    case ScenarioKind::VictoriaPark: return "victoria_park";
+  }
+  return "?";
 }
 std::optional<ScenarioKind> parse_kind(std::string_view name) {
-  if (name == "simulation") return ScenarioKind::Simulation;
-  if (name == "binning_benchmark") return ScenarioKind::BinningBenchmark;
+  for (ScenarioKind k : {ScenarioKind::Simulation, ScenarioKind::BinningBenchmark, ScenarioKind::VictoriaPark})
+    if (name == kind_name(k)) return k;
   return std::nullopt;
 }
 
@@ -203,6 +208,8 @@ void add_level_keys(std::vector<ScenarioKey>& keys, const std::string& level, co
   using point::GroupLevelOptions;
   using point::PointSlamOptions;
   const std::string p = "relative_point." + level + ".";
+  keys.push_back(boolean<&Scenario::relative_point, Level, &GroupLevelOptions::enabled>(
+      p + "enabled", what + ": formed at all (one level only: the thesis's early version, 6.8)"));
   keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::look_ahead>(
       p + "look_ahead", what + ": iterations waited before grouping; new members come from [c0, c0+A]"));
   keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::look_back>(
@@ -241,6 +248,15 @@ std::vector<ScenarioKey> relative_point_keys() {
   };
   add_level_keys<&PointSlamOptions::temporary_group>(keys, "temporary_group", "temporary groups");
   add_level_keys<&PointSlamOptions::final_group>(keys, "final_group", "final groups");
+  using point::Level3Options;
+  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::level3, &Level3Options::enabled>(
+      "relative_point.level3.enabled", "level-3 groups over a point's whole visible run, once out of view (6.5.5)"));
+  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::level3, &Level3Options::gap>(
+      "relative_point.level3.gap", "level 3: iterations unseen that end a visible run"));
+  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::level3, &Level3Options::prev_min>(
+      "relative_point.level3.prev_min", "level 3: already grouped members that register a new group"));
+  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::level3, &Level3Options::binning>(
+      "relative_point.level3.binning", "level 3: RltBinning removes dynamic members"));
   keys.push_back(choice<basis_name, parse_basis, &Scenario::relative_point, &PointSlamOptions::basis>(
       "relative_point.basis", "basis points: farthest (thesis 6.5.4) or first_three (Fig 119)", {"farthest", "first_three"}));
   keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::min_basis_ratio>(
@@ -251,6 +267,12 @@ std::vector<ScenarioKey> relative_point_keys() {
       "relative_point.match_unmapped", "global matching also finds unmapped points (beyond the thesis)"));
   keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::pose_from_unmapped>(
       "relative_point.pose_from_unmapped", "pose from unmapped points when < 3 mapped are seen (beyond the thesis)"));
+  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::provisional_root>(
+      "relative_point.provisional_root",
+      "temporary groups lacking mapped points in view register to provisional positions (beyond the thesis)"));
+  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::use_odometry>(
+      "relative_point.use_odometry",
+      "frames with odometry: predict local matches and bridge unregistrable frames with it (beyond the thesis)"));
   keys.push_back(choice<local_index_name, spatial::parse_local_index, &Scenario::relative_point, &PointSlamOptions::local_index>(
       "relative_point.local_index", "local matching index (thesis 6.6.2)", {"quadtree", "octree", "kdtree"}));
   keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::octree_cell_size>(
@@ -283,7 +305,7 @@ std::vector<ScenarioKey> relative_point_keys() {
   keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::ring_capacity>(
       "relative_point.ring_capacity", "observations kept per RltPoint"));
   keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::charting_capacity>(
-      "relative_point.charting_capacity", "iterations kept by RltPointCharting"));
+      "relative_point.charting_capacity", "iterations kept by RltPointCharting (2048 with level 3)"));
   return keys;
 }
 
@@ -333,7 +355,8 @@ std::vector<ScenarioKey> build_keys() {
       text<&Scenario::name>("name", "experiment name; defaults to the file name without .json"),
       text<&Scenario::description>("description", "what the experiment reproduces (thesis figures)"),
       choice<kind_name, parse_kind, &Scenario::kind>(
-          "kind", "simulation, or the synthetic binning benchmark S-BIN", {"simulation", "binning_benchmark"}),
+          "kind", "simulation, the synthetic binning benchmark S-BIN, or the Victoria Park data set",
+          {"simulation", "binning_benchmark", "victoria_park"}),
       seed_key(),
       choice<path_kind_name, sim::parse_path_kind, &Scenario::sim, &SimOptions::path>(
           "sim.path", "robot path (thesis 6.6.1, 6.7.2)", {"figure_eight", "line", "stationary"}),
@@ -405,9 +428,42 @@ std::vector<ScenarioKey> build_keys() {
       number<&Scenario::ekf6d, &Ekf6dOptions::time_budget_ms>("ekf6d.time_budget_ms",
                                                               "stop the EKF past this time per iteration (thesis: 1 s)"),
       integer<&Scenario::ekf6d, &Ekf6dOptions::budget_iterations>("ekf6d.budget_iterations",
-                                                                  "...once that many consecutive iterations exceed it"),
+                                                                  "...once its mean over this many iterations exceeds it"),
   };
   keys.insert(keys.end(), ekf.begin(), ekf.end());
+  const std::vector<ScenarioKey> ekf2d = {
+      choice<ekf_method_name, parse_ekf_method, &Scenario::ekf2d, &Ekf2dOptions::method>(
+          "ekf2d.method", "planar EKF update: davison or full", {"davison", "full"}),
+      choice<ekf_association_name, parse_ekf_association, &Scenario::ekf2d, &Ekf2dOptions::association>(
+          "ekf2d.association", "jcbb or nn (Victoria Park has no ids), or known", {"known", "jcbb", "nn"}),
+      number<&Scenario::ekf2d, &Ekf2dOptions::std_range>("ekf2d.std_range", "planar EKF: range std. deviation, m"),
+      degrees<&Scenario::ekf2d, &Ekf2dOptions::std_yaw_rad>("ekf2d.std_yaw_deg", "planar EKF: bearing std. deviation"),
+      number_list<&Scenario::ekf2d, &Ekf2dOptions::stds_q_no_odometry>(
+          "ekf2d.stds_q_no_odometry", "planar EKF without odometry: motion noise per scan x, y (m), heading (rad)"),
+      number<&Scenario::ekf2d, &Ekf2dOptions::odometry_std_xy>("ekf2d.odometry_std_xy",
+                                                               "odometry std. deviation per scan, m (floor)"),
+      number<&Scenario::ekf2d, &Ekf2dOptions::odometry_std_xy_ratio>("ekf2d.odometry_std_xy_ratio",
+                                                                     "...plus this share of the distance moved"),
+      degrees<&Scenario::ekf2d, &Ekf2dOptions::odometry_std_heading_rad>("ekf2d.odometry_std_heading_deg",
+                                                                         "odometry heading std. deviation per scan (floor)"),
+      number<&Scenario::ekf2d, &Ekf2dOptions::odometry_std_heading_ratio>("ekf2d.odometry_std_heading_ratio",
+                                                                          "...plus this share of the heading change"),
+      number<&Scenario::ekf2d, &Ekf2dOptions::chi2_threshold>("ekf2d.chi2_threshold",
+                                                              "planar EKF: data association compatibility"),
+      number<&Scenario::ekf2d, &Ekf2dOptions::time_budget_ms>("ekf2d.time_budget_ms",
+                                                              "stop the planar EKF past this time per scan"),
+      integer<&Scenario::ekf2d, &Ekf2dOptions::budget_iterations>("ekf2d.budget_iterations",
+                                                                  "...once its mean over this many scans exceeds it"),
+      text<&Scenario::victoria_park, &VictoriaParkOptions::window>(
+          "victoria_park.window", "scans FIRST:LAST (1-based, of 7249) or all; relslam victoria-park --window overrides"),
+      number<&Scenario::victoria_park, &VictoriaParkOptions::filter, &DetectionFilter::min_range>(
+          "victoria_park.min_range", "trees nearer than this are dropped, m"),
+      number<&Scenario::victoria_park, &VictoriaParkOptions::filter, &DetectionFilter::max_range>(
+          "victoria_park.max_range", "trees farther than this are dropped, m"),
+      number<&Scenario::victoria_park, &VictoriaParkOptions::filter, &DetectionFilter::min_diameter>(
+          "victoria_park.min_diameter", "trees thinner than this are dropped, m"),
+  };
+  keys.insert(keys.end(), ekf2d.begin(), ekf2d.end());
   using B = BinningBenchOptions;
   const std::vector<ScenarioKey> bench = {
       integer_list<&Scenario::binning_bench, &B::points>("binning_bench.points", "S-BIN: points per binning (Fig 111's x)"),

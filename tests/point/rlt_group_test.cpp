@@ -42,7 +42,7 @@ TEST(RltGroup, NoiseFreeRelativePositionsAreTheTrueBasisCoordinates) {
   const auto points = observed_points(world, 20, rng, &poses);
   std::vector<PointId> members(12);
   for (int i = 0; i < 12; ++i) members[i] = i;
-  RltGroup group(0, GroupLevel::Final, 0, 19, members, std::vector<bool>(12, false), {0, 5, 7}, true);
+  RltGroup group(0, GroupLevel::Final, 0, 19, members, std::vector<bool>(12, false), {0, 5, 7}, Registration::FirstObservations);
   ASSERT_TRUE(group.accumulate(points, 0, 19, 1e-6));
   EXPECT_EQ(group.iterations_used(), 20);
   const auto frame = basis_frame(world[0], world[5], world[7]);
@@ -57,7 +57,7 @@ TEST(RltGroup, RootRegistrationRecoversTheWorldFromTheFirstObservations) {
   const auto points = observed_points(world, 15, rng, &poses);
   std::vector<PointId> members(10);
   for (int i = 0; i < 10; ++i) members[i] = i;
-  RltGroup group(0, GroupLevel::Temporary, 0, 14, members, std::vector<bool>(10, false), {1, 2, 3}, true);
+  RltGroup group(0, GroupLevel::Temporary, 0, 14, members, std::vector<bool>(10, false), {1, 2, 3}, Registration::FirstObservations);
   group.accumulate(points, 0, 14, 1e-6);
   const auto world_T_group = group.registration(points, 0);
   ASSERT_TRUE(world_T_group);
@@ -76,7 +76,7 @@ TEST(RltGroup, AnchoredRegistrationUsesTheAnchorsMapPositions) {
     points[i].has_global = true;
   }
   std::vector<PointId> members = {0, 1, 2, 3, 4, 5, 6, 7};
-  RltGroup group(3, GroupLevel::Final, 0, 9, members, anchor, {0, 4, 6}, false);
+  RltGroup group(3, GroupLevel::Final, 0, 9, members, anchor, {0, 4, 6}, Registration::Anchors);
   group.accumulate(points, 0, 9, 1e-6);
   const auto world_T_group = group.registration(points, 0);
   ASSERT_TRUE(world_T_group);
@@ -95,7 +95,7 @@ TEST(RltGroup, IterationsWithAMissingMemberAreSkipped) {
     gappy.interval.add(k);
   }
   points.push_back(gappy);
-  RltGroup group(0, GroupLevel::Final, 0, 5, {0, 1, 2, 3, 4, 5}, std::vector<bool>(6, false), {0, 1, 2}, true);
+  RltGroup group(0, GroupLevel::Final, 0, 5, {0, 1, 2, 3, 4, 5}, std::vector<bool>(6, false), {0, 1, 2}, Registration::FirstObservations);
   group.accumulate(points, 0, 5, 1e-6);
   EXPECT_EQ(group.iterations_used(), 4);
   EXPECT_EQ(group.computed_on().count(0, 5), 4);

@@ -116,8 +116,8 @@ TEST(RltMapper, EmptyAndSparseFramesDoNotDisturbTheRun) {
 
 TEST(RltMapper, IterationsMustIncrease) {
   RltMapper mapper;
-  mapper.step({5, {}});
-  EXPECT_THROW(mapper.step({5, {}}), std::logic_error);
+  mapper.step({5, {}, {}});
+  EXPECT_THROW(mapper.step({5, {}, {}}), std::logic_error);
 }
 
 }  // namespace

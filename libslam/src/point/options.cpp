@@ -28,6 +28,12 @@ std::vector<OptionIssue> check(const PointSlamOptions& o) {
   require_above(issues, "global_bound", o.global_bound, 0.0);
   require_at_least(issues, "local_cell_size", o.local_cell_size, o.local_bound);
   require_at_least(issues, "global_cell_size", o.global_cell_size, std::max(o.global_bound, o.merge_bound));
+  if (!o.temporary_group.enabled && !o.final_group.enabled)
+    issues.push_back({"final_group.enabled", "temporary and final groups cannot both be off"});
+  require_at_least(issues, "level3.gap", o.level3.gap, 0);
+  require_at_least(issues, "level3.prev_min", o.level3.prev_min, 3);
+  if (o.provisional_root && !o.pose_from_unmapped)
+    issues.push_back({"provisional_root", "needs pose_from_unmapped (its groups register to provisional positions)"});
   require_at_least(issues, "octree_cell_size", o.octree_cell_size, o.local_bound);
   require_at_least(issues, "merge_delay", o.merge_delay, 1);
   require_above(issues, "merge_bound", o.merge_bound, 0.0);

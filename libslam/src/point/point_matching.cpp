@@ -30,17 +30,23 @@ Rigid3 PointMatcher::predicted_motion(int from, int to) const {
   Rigid3 total = Rigid3::identity();
   Rigid3 step = Rigid3::identity();
   for (int t = from + 1; t <= to; ++t) {
-    for (const auto& [iteration, motion] : motions_)
-      if (iteration <= t) {
-        step = motion;
-        break;
-      }
+    if (t == current_ && measured_step_) {
+      step = *measured_step_;
+    } else {
+      for (const auto& [iteration, motion] : motions_)
+        if (iteration <= t) {
+          step = motion;
+          break;
+        }
+    }
     total = step * total;
   }
   return total;
 }
 
-void PointMatcher::prepare(const std::vector<LocalCandidate>& candidates, int k) {
+void PointMatcher::prepare(const std::vector<LocalCandidate>& candidates, int k, const std::optional<Rigid3>& odometry) {
+  current_ = k;
+  measured_step_ = odometry ? std::optional(odometry->inverse()) : std::nullopt;
   predicted_.clear();
   for (const LocalCandidate& c : candidates) {
     const Eigen::Vector3d p = options_.compensate_motion ? predicted_motion(c.iteration, k) * c.p : c.p;
@@ -124,7 +130,7 @@ const MatchResult& PointMatcher::match(const std::vector<Eigen::Vector3d>& obser
       result_.motion_estimated = true;
     }
     while (!motions_.empty() && motions_.back().first <= k - options_.match_look_back - 1) motions_.pop_back();
-    if (result_.motion_estimated) motions_.emplace_front(k, result_.motion);
+    if (result_.motion_estimated || measured_step_) motions_.emplace_front(k, result_.motion);
   }
 
   // Global (thesis 6.5.1): the current position transforms the rest onto the map.

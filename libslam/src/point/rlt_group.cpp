@@ -7,7 +7,7 @@
 namespace relslam::point {
 
 RltGroup::RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vector<PointId> members,
-                   std::vector<bool> anchor, std::array<int, 3> basis, bool root)
+                   std::vector<bool> anchor, std::array<int, 3> basis, Registration registration)
     : id_(id),
       level_(level),
       c0_(c0),
@@ -15,7 +15,7 @@ RltGroup::RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vect
       members_(std::move(members)),
       anchor_(std::move(anchor)),
       basis_(basis),
-      root_(root),
+      registration_(registration),
       sum_(members_.size(), Eigen::Vector3d::Zero()) {
   if (anchor_.size() != members_.size()) throw std::logic_error("RltGroup: one anchor flag per member");
   for (int b : basis_)
@@ -48,10 +48,15 @@ std::optional<Rigid3> RltGroup::registration(const std::vector<RltPoint>& points
   std::vector<Eigen::Vector3d> from, to;
   for (std::size_t i = 0; i < members_.size(); ++i) {
     const RltPoint& p = points[members_[i]];
-    if (root_) {
+    if (registration_ == Registration::FirstObservations) {
       if (p.first_observation.iteration != first_iteration || p.dynamic || p.merged) continue;
       from.push_back(relative(static_cast<int>(i)));
       to.push_back(p.first_observation.p);  // robot frame at the first iteration = world frame
+    } else if (registration_ == Registration::WorldPositions) {
+      // Provisional positions until the group itself maps its members, then their map positions.
+      if (p.dynamic || p.merged || !(p.has_global || p.has_provisional)) continue;
+      from.push_back(relative(static_cast<int>(i)));
+      to.push_back(p.has_global ? p.global : p.provisional);
     } else if (anchor_[i] && p.on_map()) {
       from.push_back(relative(static_cast<int>(i)));
       to.push_back(p.global);

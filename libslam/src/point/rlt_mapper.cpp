@@ -53,7 +53,7 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   // [init] Local candidates: latest observations of points seen in the last few iterations;
   // a non-incremental global index reloads the whole map here (Fig 110).
   charting_.begin_iteration(k);
-  build_local_index(k);
+  build_local_index(k, frame.odometry);
   global_index_->prepare();
   result.timings.init_ms = ms_since(clock);
 
@@ -88,13 +88,13 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   result.timings.create_ms = ms_since(clock);
 
   // [pose] Current position (thesis 6.1): used for the next global matching and for metrics.
-  update_pose(k, result);
+  update_pose(frame, result);
   result.timings.pose_ms = ms_since(clock);
   changed_ = nullptr;
   return result;
 }
 
-void RltMapper::build_local_index(int k) {
+void RltMapper::build_local_index(int k, const std::optional<Rigid3>& odometry) {
   scratch_ids_.clear();
   charting_.enumerate_unique(k - options_.match_look_back, k - 1, scratch_ids_);
   local_candidates_.clear();
@@ -104,7 +104,7 @@ void RltMapper::build_local_index(int k) {
     const RltPoint& p = points_[id];
     if (!p.merged) local_candidates_.push_back({id, p.observations.latest().p, p.observations.latest().iteration});
   }
-  matcher_.prepare(local_candidates_, k);
+  matcher_.prepare(local_candidates_, k, options_.use_odometry ? odometry : std::nullopt);
 }
 
 PointId RltMapper::create_point(const Eigen::Vector3d& p, int k) {
@@ -115,6 +115,7 @@ PointId RltMapper::create_point(const Eigen::Vector3d& p, int k) {
   point.creation_iteration = k;
   point.first_observation = {p, k};
   record(id, p, k, true);
+  if (options_.level3.enabled) level3_waiting_.push_back(id);
   if (options_.merge_points) merge_checks_.emplace_back(k + options_.merge_delay, id);
   return id;
 }
@@ -127,8 +128,8 @@ void RltMapper::record(PointId id, const Eigen::Vector3d& p, int k, bool returne
   // A point starting a visible run while still ungrouped at a level waits in that level's list,
   // its run's start standing in for the creation iteration. New points always enter both.
   if (returned && !point.dynamic) {
-    if (!point.temporary_grouped && !point.final_grouped) temporary_list_.push(id, k);
-    if (!point.final_grouped) final_list_.push(id, k);
+    if (options_.temporary_group.enabled && !point.temporary_grouped && !point.final_grouped) temporary_list_.push(id, k);
+    if (options_.final_group.enabled && !point.final_grouped) final_list_.push(id, k);
   }
   // Notify its groups (thesis 6.3.3): each is computed once this iteration.
   if (group_queued_at_.size() < groups_.size()) group_queued_at_.resize(groups_.size(), kNone);
@@ -157,7 +158,8 @@ void RltMapper::mark_changed(PointId id) {
   changed_->push_back(id);
 }
 
-void RltMapper::update_pose(int k, StepResult& result) {
+void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
+  const int k = frame.iteration;
   const std::vector<PointId>& seen = charting_.at(k);
   auto register_to = [&](bool provisional) -> std::optional<Rigid3> {
     std::vector<Eigen::Vector3d> robot, world;
@@ -184,6 +186,9 @@ void RltMapper::update_pose(int k, StepResult& result) {
   } else if (options_.pose_from_unmapped && (pose = register_to(true))) {
     pose_ = *pose;
     result.pose_source = PoseSource::UnmappedPoints;
+  } else if (options_.use_odometry && frame.odometry) {
+    pose_ = pose_ * *frame.odometry;
+    result.pose_source = PoseSource::Odometry;
   } else {
     result.pose_source = PoseSource::Held;
   }

@@ -33,6 +33,7 @@ void RltMapper::anchor(RltGroup& group) {
 
 void RltMapper::create_groups(int k, StepResult& result) {
   for (GroupLevel level : {GroupLevel::Temporary, GroupLevel::Final}) {
+    if (!level_options(level).enabled) continue;
     RltUngroupedList& waiting = list(level);
     const int look_ahead = level_options(level).look_ahead;
     // Process every entry that is ready; the list is in start order (spec 5.6, A40).
@@ -42,10 +43,12 @@ void RltMapper::create_groups(int k, StepResult& result) {
       if (try_create(level, entry, k, result)) ++result.groups_created;
     }
   }
+  if (options_.level3.enabled) create_level3_groups(k, result);
   // Every point of the first iteration has had its chance to root the map and none could: the
   // map frame (the first observations, thesis 6.3.3) can never be fixed.
-  const bool first_iteration_tried = temporary_list_.empty() || temporary_list_.front().start > first_iteration_;
-  if (!any_mapped_ && failure_.empty() && first_iteration_tried)
+  const RltUngroupedList& lowest = list(options_.temporary_group.enabled ? GroupLevel::Temporary : GroupLevel::Final);
+  const bool first_iteration_tried = lowest.empty() || lowest.front().start > first_iteration_;
+  if (!any_mapped_ && failure_.empty() && first_iteration_tried && !options_.provisional_root)
     failure_ = "no group could be anchored to the first iteration's observations (the map frame): fewer than 3 points "
                "were seen there often enough";
 }
@@ -57,7 +60,9 @@ bool RltMapper::try_create(GroupLevel level, const RltUngroupedList::Entry& entr
   context.level = level;
   context.options = &level_options(level);
   context.ungrouped = &list(level);
-  context.level_mapped = level == GroupLevel::Temporary ? any_mapped_ : stats_.final_created > 0;
+  context.level_mapped = level == GroupLevel::Temporary || !options_.temporary_group.enabled ? any_mapped_
+                                                                                            : stats_.final_created > 0;
+  context.lowest = level == GroupLevel::Temporary || !options_.temporary_group.enabled;
   context.first_iteration = first_iteration_;
   PlanOutcome outcome = planner_.plan(entry.id, entry.start, k, context, points_, charting_, options_);
   result.timings.binning_ms += outcome.binning_ms;
@@ -66,11 +71,38 @@ bool RltMapper::try_create(GroupLevel level, const RltUngroupedList::Entry& entr
   if (!outcome.plan) return false;
   const GroupPlan& plan = *outcome.plan;
 
+  build_group(level, entry.start, k, plan);
+  return true;
+}
+
+void RltMapper::create_level3_groups(int k, StepResult& result) {
+  // A point is ready once out of view; it gets this one chance (spec 5.12).
+  std::size_t kept = 0;
+  for (PointId id : level3_waiting_) {
+    const RltPoint& p = points_[id];
+    if (p.dynamic || p.merged || p.level3_grouped) continue;
+    if (p.last_iteration() >= k - options_.level3.gap) {
+      level3_waiting_[kept++] = id;
+      continue;
+    }
+    PlanOutcome outcome = planner_.plan_level3(id, k, points_, charting_, options_);
+    result.timings.binning_ms += outcome.binning_ms;
+    result.binning_comparisons += outcome.comparisons;
+    for (PointId d : outcome.dynamic) mark_dynamic(d, result);
+    if (!outcome.plan) continue;
+    build_group(GroupLevel::Level3, p.interval.first(), k, *outcome.plan);
+    ++result.groups_created;
+  }
+  level3_waiting_.resize(kept);
+}
+
+void RltMapper::build_group(GroupLevel level, int c0, int k, const GroupPlan& plan) {
   const auto id = static_cast<GroupId>(groups_.size());
-  groups_.emplace_back(id, level, entry.start, k, plan.members, plan.anchor, plan.basis, plan.root);
+  groups_.emplace_back(id, level, c0, k, plan.members, plan.anchor, plan.basis, plan.registration);
   ++stats_.created;
   ++stats_.alive;
   if (level == GroupLevel::Final) ++stats_.final_created;
+  if (level == GroupLevel::Level3) ++stats_.level3_created;
   if (level == GroupLevel::Temporary) {
     ++stats_.temporary_alive;
     temporary_to_review_.push_back(id);
@@ -80,20 +112,28 @@ bool RltMapper::try_create(GroupLevel level, const RltUngroupedList::Entry& entr
     RltPoint& p = points_[plan.members[i]];
     p.groups.push_back({id, static_cast<int>(i)});
     if (plan.anchor[i]) continue;
-    list(level).remove(p.id);
-    // Ownership (spec 5.6): a final group always takes its new members; a temporary group
-    // only those no final group owns. Final groups thus map everything they hold (6.5.5).
-    if (level == GroupLevel::Final) {
-      p.final_grouped = true;
-      p.owner = id;
-    } else {
-      p.temporary_grouped = true;
-      if (!p.final_grouped) p.owner = id;
+    // Ownership (spec 5.6): level 3 and final groups always take their new members; a
+    // temporary group only those no final or level-3 group owns. The higher levels thus map
+    // everything they hold (6.5.5).
+    switch (level) {
+      case GroupLevel::Level3:
+        p.level3_grouped = true;
+        p.owner = id;
+        break;
+      case GroupLevel::Final:
+        list(level).remove(p.id);
+        p.final_grouped = true;
+        if (!p.level3_grouped) p.owner = id;
+        break;
+      case GroupLevel::Temporary:
+        list(level).remove(p.id);
+        p.temporary_grouped = true;
+        if (!p.final_grouped && !p.level3_grouped) p.owner = id;
+        break;
     }
   }
   RltGroup& group = groups_.back();
-  if (group.accumulate(points_, entry.start, k, kBasisEpsilon)) anchor(group);
-  return true;
+  if (group.accumulate(points_, c0, k, kBasisEpsilon)) anchor(group);
 }
 
 void RltMapper::mark_dynamic(PointId id, StepResult& result) {

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace relslam::eval {
 
@@ -39,6 +40,10 @@ class AlgorithmRun {
   // The scores over the first `iterations` iterations only (after finish()), to compare with a
   // run that stopped earlier.
   virtual SummaryRow summary_over(int iterations) const = 0;
+  // The estimated pose (world_T_robot, our axes) of every iteration processed so far.
+  virtual const std::vector<Rigid3>& trajectory() const = 0;
+  // The landmarks on its map now (world frame, our axes).
+  virtual std::vector<Eigen::Vector3d> map() const = 0;
 };
 
 // The run of algorithm `name` (one of known_algorithms()) writing into dir/name/; `sensor`

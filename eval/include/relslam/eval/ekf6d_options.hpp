@@ -42,8 +42,8 @@ struct Ekf6dOptions {
   // (0.35, 0.005) after tuning [C, spec 6.2, tuned].
   std::vector<double> stds_q = {0.175, 0.175, 0.175, 0.0025, 0.0025, 0.0025, 0.0025};
   double chi2_threshold = 0.99;  // individual compatibility test of JCBB / NN (MRPT's default)
-  // The thesis stopped the EKF past 1 s per iteration [T]; it stops once this many consecutive
-  // iterations exceed the budget, so one slow step does not end a run [C].
+  // The thesis stopped the EKF past 1 s per iteration [T]; it stops once the mean over the
+  // last budget_iterations iterations exceeds the budget, so one slow step does not end a run [C].
   double time_budget_ms = 1000.0;
   int budget_iterations = 20;
 };

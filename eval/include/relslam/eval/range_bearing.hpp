@@ -21,6 +21,18 @@ inline Eigen::Vector3d mrpt_from_robot(const Eigen::Vector3d& p_robot) { return 
 inline Eigen::Vector3d robot_from_mrpt(const Eigen::Vector3d& p_mrpt) { return {p_mrpt.y(), p_mrpt.z(), p_mrpt.x()}; }
 // A pose between two frames that both use MRPT's axes, re-expressed with ours: A · pose · A^-1.
 Rigid3 robot_axes_from_mrpt(const Rigid3& mrpt_pose);
+// The inverse: a pose in our axes re-expressed with MRPT's.
+Rigid3 mrpt_axes_from_robot(const Rigid3& pose);
+
+// A planar pose or motion in MRPT's axes (x forward, y left), heading counter-clockwise.
+struct Pose2 {
+  double x = 0, y = 0;  // m
+  double heading = 0;   // rad
+};
+// Between a planar MRPT pose and a pose in our axes (a rotation about our +y, up); the
+// vertical part of a Rigid3 is dropped.
+Rigid3 robot_pose_from_planar(const Pose2& pose);
+Pose2 planar_from_robot_pose(const Rigid3& pose);
 
 // p in MRPT's sensor frame -> measurement; range 0 gives yaw = pitch = 0.
 RangeBearing range_bearing_of(const Eigen::Vector3d& p_mrpt);

@@ -42,6 +42,7 @@ class RunScorer {
   // with one that stopped earlier, at the same point.
   void fill(SummaryRow& row, std::size_t iterations = SIZE_MAX) const;
   std::size_t scored() const { return history_.size(); }
+  const std::vector<Rigid3>& estimates() const { return estimates_; }
 
  private:
   LandmarkErrorTracker errors_;

@@ -3,7 +3,9 @@
 // Loaded from scenarios/*.json; every key and its default are listed by scenario_keys().
 
 #include "relslam/eval/binning_bench.hpp"
+#include "relslam/eval/ekf2d_options.hpp"
 #include "relslam/eval/ekf6d_options.hpp"
+#include "relslam/eval/victoria_park.hpp"
 #include "relslam/eval/input_error.hpp"
 #include "relslam/point/options.hpp"
 #include "relslam/sim/options.hpp"
@@ -21,6 +23,13 @@ namespace relslam::eval {
 enum class ScenarioKind {
   Simulation,        // simulate a path and run the algorithms on it
   BinningBenchmark,  // the synthetic RltBinning benchmark S-BIN (thesis Figs 111–116)
+  VictoriaPark,      // the Victoria Park data set (thesis 6.8), run by relslam victoria-park
+};
+
+// What relslam victoria-park reads of the data set.
+struct VictoriaParkOptions {
+  std::string window = "1181:1642";  // 1-based scans FIRST:LAST, or all (the thesis's first window)
+  DetectionFilter filter;            // detections kept
 };
 
 // What `relslam simulate` writes besides ground truth and the manifest.
@@ -58,6 +67,8 @@ struct Scenario {
   std::vector<std::string> algorithms;
   point::PointSlamOptions relative_point;  // the Relative Point algorithm's constants
   Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
+  Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
+  VictoriaParkOptions victoria_park;       // kind victoria_park only
   BinningBenchOptions binning_bench;       // S-BIN only (kind binning_benchmark)
   OutputOptions output;
   std::vector<SweepAxis> sweep;

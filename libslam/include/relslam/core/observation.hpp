@@ -1,7 +1,10 @@
 #pragma once
 // What an algorithm may see at one iteration. Part of relslam/core: Eigen only.
 
+#include "relslam/core/rigid.hpp"
+
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 namespace relslam {
@@ -14,6 +17,10 @@ namespace relslam {
 struct ObservationFrame {
   int iteration = 0;
   std::vector<Eigen::Vector3d> points;  // p_robot; order carries no meaning (the sensor shuffles)
+  // The motion since the previous frame, previous_T_current, as the robot's own motion sensors
+  // (wheel odometry) measured it, when it has any. The thesis's algorithms map without it; the
+  // EKF baselines use it, and Relative Point may bridge frames it cannot register with it.
+  std::optional<Rigid3> odometry;
 };
 
 }  // namespace relslam

@@ -16,7 +16,8 @@ struct GroupPlan {
   std::vector<PointId> members;  // previously mapped ones first, then new ones; each by count, most first
   std::vector<bool> anchor;      // previously mapped: registration sources, never rewritten
   std::array<int, 3> basis{};
-  bool root = false;
+  Registration registration = Registration::Anchors;
+  bool root() const { return registration != Registration::Anchors; }
 };
 
 struct PlanOutcome {
@@ -32,6 +33,7 @@ struct LevelContext {
   const GroupLevelOptions* options = nullptr;
   const RltUngroupedList* ungrouped = nullptr;  // this level's list
   bool level_mapped = false;  // some point is already mapped at this level (else a root group may form)
+  bool lowest = false;        // the lowest level switched on: the one a provisional root may form at
   int first_iteration = 0;
 };
 
@@ -42,6 +44,9 @@ class GroupPlanner {
   // points, c itself too rarely seen or dynamic, or no usable basis).
   PlanOutcome plan(PointId c, int c0, int k, const LevelContext& level, const std::vector<RltPoint>& points,
                    RltPointCharting& charting, const PointSlamOptions& options);
+  // Level 3 (spec 5.12) for point c, out of view at iteration k.
+  PlanOutcome plan_level3(PointId c, int k, const std::vector<RltPoint>& points,
+                          RltPointCharting& charting, const PointSlamOptions& options);
 
  private:
   bool previously_mapped(const RltPoint& p, const LevelContext& level, int c0) const;
@@ -51,6 +56,8 @@ class GroupPlanner {
                    const std::vector<RltPoint>& points, const BinningOptions& binning, PlanOutcome& outcome) const;
   std::vector<Eigen::Vector3d> basis_positions(const std::vector<PointId>& members, const std::vector<RltPoint>& points,
                                                int c0, int k) const;
+  // Orders ranked_ (count, id) most first, ties by a fixed hash of the id, into `out`.
+  void rank(std::vector<PointId>& out);
   std::vector<PointId> scratch_;
   std::vector<std::pair<int, PointId>> ranked_;
 };

@@ -16,6 +16,9 @@ namespace relslam::point {
 // c0 becomes ready (look_ahead iterations later), a group is formed from up to prev_max
 // already-mapped points and the still-ungrouped points seen around c0.
 struct GroupLevelOptions {
+  // A level can be switched off (the thesis's one-level version, timed in 6.8) [C]; at least
+  // one of temporary and final stays on.
+  bool enabled = true;
   int look_ahead = 60;  // iterations waited after c0; also the window [c0, c0+A] of new members
   int look_back = 60;   // previously mapped candidates come from [c0-B, c0+A]
   // A candidate needs look_ahead - accuracy_reduction observations in [c0, c0+A]: points first
@@ -30,9 +33,23 @@ struct GroupLevelOptions {
 
 // Temporary level: a short look-ahead so new points are mapped within a few iterations
 // (thesis 6.5.5 "a few iterations"); too short a window to bin [C values, spec A11, I].
-inline GroupLevelOptions temporary_level_defaults() { return {10, 10, 2, 6, 20, 1, false}; }
+inline GroupLevelOptions temporary_level_defaults() { return {true, 10, 10, 2, 6, 20, 1, false}; }
 // Final level: the thesis's constants, with NextGroupMin at its best value 1, binned [T].
-inline GroupLevelOptions final_level_defaults() { return {60, 60, 10, 20, 20, 1, true}; }
+inline GroupLevelOptions final_level_defaults() { return {true, 60, 60, 10, 20, 20, 1, true}; }
+
+// Level 3 (thesis 6.5.5, spec 5.12): a constant-free level. When a point has gone out of view,
+// a group is formed over its first visible run from the points seen in it: three mapped ones
+// to register it (level-3 grouped first, then final, then temporary [C: the spec falls back on
+// final only, which Victoria Park's sparse scans rarely form]), then every other one that adds
+// usable observations (iterations in which all members were seen) rather than losing them.
+struct Level3Options {
+  bool enabled = false;  // the thesis used it in the Victoria Park timing only
+  // A point unseen for more than `gap` iterations is out of view; a visible run may have gaps
+  // of up to this many iterations [C, spec 5.12].
+  int gap = 3;
+  int prev_min = 3;      // registering members (three fix a rigid motion) [T outline]
+  bool binning = true;   // RltBinning removes dynamic members
+};
 
 struct PointSlamOptions {
   // Local matching compares with the latest observation of points seen in the last
@@ -82,6 +99,7 @@ struct PointSlamOptions {
 
   GroupLevelOptions temporary_group = temporary_level_defaults();
   GroupLevelOptions final_group = final_level_defaults();
+  Level3Options level3;
 
   // Basis choice (thesis 6.5.4); FirstThree reproduces the early version of Fig 119.
   BasisSelection basis = BasisSelection::Farthest;
@@ -101,9 +119,21 @@ struct PointSlamOptions {
   // iterations, before any group exists), the pose is registered to the provisional positions
   // instead of being held, so every iteration has a pose.
   bool pose_from_unmapped = true;
+  // Deviation (beyond the thesis, which has no odometry): frames that carry odometry (dead
+  // reckoning) use it as the frame-to-frame motion prediction for local matching, and, when a
+  // frame cannot be registered (fewer than 3 known points in view), carry the pose forward by
+  // it instead of holding it. This bridges the Victoria Park scans with fewer than 3 trees.
+  bool use_odometry = false;
+  // Deviation (beyond the thesis): a temporary group that lacks prev_min mapped points in view
+  // (the first iteration's too few to root the map, or the map out of sight, as at Victoria
+  // Park's sparse scans) is registered to its members' world positions instead, provisional
+  // (pose_from_unmapped's pose chain) until mapped. The map then starts, or goes on, where the
+  // thesis's algorithm stalls: new points could never be grouped again. Off by default.
+  bool provisional_root = false;
 
   // Observations kept per RltPoint (ring buffer) and iterations kept by RltPointCharting;
-  // both must cover the final level's look_back + look_ahead [C, spec A26].
+  // both must cover the final level's look_back + look_ahead, and level 3's visible runs
+  // (2048 then, spec A26) [C].
   int ring_capacity = 1024;
   int charting_capacity = 512;
 };

@@ -16,6 +16,16 @@ namespace relslam::point {
 enum class GroupLevel : unsigned char {
   Temporary,  // short look-ahead: maps new points quickly (thesis 6.5.5)
   Final,      // long look-ahead: the groups the map's accuracy rests on
+  Level3,     // formed when a point leaves the view, over its whole visible run (spec 5.12)
+};
+
+// How a group finds its place on the map (thesis 6.3.3 step 4).
+enum class Registration : unsigned char {
+  Anchors,            // its previously mapped members (anchors) to their map positions
+  FirstObservations,  // the root group: its members seen at the first iteration to those
+                      // observations (the robot frame at the first iteration is the world frame)
+  WorldPositions,     // a provisional root (PointSlamOptions::provisional_root): its members to
+                      // whatever world position they have, provisional until mapped
 };
 
 // Invariant: members, anchor flags and basis never change after construction (a change means a
@@ -25,16 +35,14 @@ enum class GroupLevel : unsigned char {
 class RltGroup {
  public:
   RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vector<PointId> members, std::vector<bool> anchor,
-           std::array<int, 3> basis, bool root);
+           std::array<int, 3> basis, Registration registration);
 
   // Adds every iteration in [from, to] not yet used in which all members were observed
   // (thesis 6.3.3 steps 1–2); an iteration whose basis is degenerate is skipped. Returns
   // whether anything was added. O(members) per iteration.
   bool accumulate(const std::vector<RltPoint>& points, int from, int to, double basis_epsilon);
 
-  // world_T_group from the averaged positions (thesis 6.3.3 step 4): a root group registers
-  // the members seen at the first iteration to those first observations (the world frame is
-  // the first robot pose); any other group registers its anchors to their map positions.
+  // world_T_group from the averaged positions (thesis 6.3.3 step 4), as registration() says.
   // Nothing before the first accumulation or with fewer than 3 usable pairs.
   std::optional<Rigid3> registration(const std::vector<RltPoint>& points, int first_iteration) const;
 
@@ -42,7 +50,8 @@ class RltGroup {
   GroupLevel level() const { return level_; }
   int c0() const { return c0_; }
   int built_at() const { return built_at_; }
-  bool root() const { return root_; }
+  bool root() const { return registration_ != Registration::Anchors; }
+  Registration registration() const { return registration_; }
   bool alive() const { return alive_; }
   void retire() { alive_ = false; }
   // A merge: the member becomes `id`, an anchor (it keeps its own map position).
@@ -66,7 +75,7 @@ class RltGroup {
   std::vector<PointId> members_;
   std::vector<bool> anchor_;
   std::array<int, 3> basis_;
-  bool root_;
+  Registration registration_;
   bool alive_ = true;
   std::vector<Eigen::Vector3d> sum_;
   int used_ = 0;

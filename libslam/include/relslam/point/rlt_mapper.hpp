@@ -26,6 +26,7 @@ enum class PoseSource : unsigned char {
   MappedPoints,   // RltICP of this iteration's observations to their map positions (thesis 6.1)
   UnmappedPoints, // fewer than 3 mapped points visible: registered to provisional positions
   Held,           // no registration possible: the previous pose is kept
+  Odometry,       // no registration possible: the previous pose moved by the frame's odometry
 };
 
 // Wall time of the thesis's components (Figs 138–142), milliseconds.
@@ -61,6 +62,7 @@ struct GroupStats {
   int alive = 0;
   int temporary_alive = 0;
   int final_created = 0;
+  int level3_created = 0;
   int dynamic_points = 0;   // flagged so far
   int merged_points = 0;    // merged so far
 };
@@ -87,19 +89,22 @@ class RltMapper {
   const PointSlamOptions& options() const { return options_; }
 
  private:
-  void build_local_index(int k);
+  void build_local_index(int k, const std::optional<Rigid3>& odometry);
   void record(PointId id, const Eigen::Vector3d& p, int k, bool returned);
   PointId create_point(const Eigen::Vector3d& p, int k);
   void compute_groups(int k);
   void anchor(RltGroup& group);
   void create_groups(int k, StepResult& result);
   bool try_create(GroupLevel level, const RltUngroupedList::Entry& entry, int k, StepResult& result);
+  void create_level3_groups(int k, StepResult& result);
+  // Builds the planned group and hands its new members over (ownership by level, spec 5.6).
+  void build_group(GroupLevel level, int c0, int k, const GroupPlan& plan);
   void mark_dynamic(PointId id, StepResult& result);
   void retire(RltGroup& group);
   void retire_redundant_temporary_groups(int k);
   void merge_due(int k, StepResult& result);
   void merge(PointId newer, PointId older, int k);
-  void update_pose(int k, StepResult& result);
+  void update_pose(const ObservationFrame& frame, StepResult& result);
   void set_global(PointId id, const Eigen::Vector3d& g);
   void mark_changed(PointId id);
   RltUngroupedList& list(GroupLevel level) { return level == GroupLevel::Temporary ? temporary_list_ : final_list_; }
@@ -113,6 +118,7 @@ class RltMapper {
   RltPointCharting charting_;
   std::unique_ptr<spatial::GlobalIndex> global_index_;
   RltUngroupedList temporary_list_, final_list_;
+  std::vector<PointId> level3_waiting_;  // not yet level-3 grouped, creation order
   PointMatcher matcher_;
   GroupPlanner planner_;
   std::deque<GroupId> temporary_to_review_;  // temporary groups in creation order, for clean-up

@@ -74,6 +74,7 @@ struct RltPoint {
   GroupId owner = kNone;
   bool temporary_grouped = false;  // member of a temporary group (not as an anchor)
   bool final_grouped = false;      // member of a final group: mapped by final groups only (6.5.5)
+  bool level3_grouped = false;     // member of a level-3 group, which then maps it
 
   // Where the current pose puts an RltPoint no group has mapped yet; used only to recognise it
   // when it is seen again (Deviation: beyond the thesis, see PointSlamOptions).
