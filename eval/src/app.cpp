@@ -3,6 +3,7 @@
 #include "relslam/eval/build_info.hpp"
 #include "relslam/eval/commands/bench_binning.hpp"
 #include "relslam/eval/commands/rawlog_info.hpp"
+#include "relslam/eval/commands/render.hpp"
 #include "relslam/eval/commands/run.hpp"
 #include "relslam/eval/commands/simulate.hpp"
 #include "relslam/eval/commands/sweep.hpp"
@@ -38,6 +39,7 @@ Examples:
   relslam bench-binning scenarios/s-bin.json --out runs/s-bin
   relslam victoria-park --window 1181:1642 --out runs/vp-1181  # Victoria Park against GPS (thesis 6.8)
   relslam convert victoria-park --out runs/vp.rawlog           # Victoria Park as an MRPT rawlog
+  relslam render runs/f8 --iteration 1200 --out map.png        # top view of the map (thesis Fig 127)
 
 Exit codes: 0 ok, 2 bad input (the message names the file, line and key), 1 internal error.)";
 
@@ -84,6 +86,8 @@ int run_cli(int argc, const char* const* argv) {
   add_convert(app, convert);
   BenchBinningArgs bench_binning;
   add_bench_binning(app, bench_binning);
+  RenderArgs render;
+  add_render(app, render);
   bool markdown = false;
   CLI::App* keys = app.add_subcommand("keys", "List every scenario key with its type, default and meaning");
   keys->add_flag("--markdown", markdown, "Markdown table (the one in README.md)");
@@ -105,6 +109,7 @@ int run_cli(int argc, const char* const* argv) {
     if (app.got_subcommand("scenario")) return run_scenario(scenario);
     if (app.got_subcommand("rawlog")) return run_rawlog(rawlog);
     if (app.got_subcommand("bench-binning")) return run_bench_binning(bench_binning, command_line);
+    if (app.got_subcommand("render")) return run_render(render);
     if (app.got_subcommand("keys")) {
       if (markdown) {
         std::cout << scenario_keys_markdown();
