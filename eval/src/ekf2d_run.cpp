@@ -27,13 +27,14 @@ class Ekf2dRun final : public FilterRun {
                   dir),
         options_(options),
         use_odometry_(use_odometry),
+        association_(use_odometry ? options.association : options.association_no_odometry),
         sensor_(sensor) {
     filter_.KF_options.method = options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
     filter_.options.std_sensor_range = static_cast<float>(options.std_range);
     filter_.options.std_sensor_yaw = static_cast<float>(options.std_yaw_rad);
     filter_.options.stds_Q_no_odo.resize(3);
     for (int i = 0; i < 3; ++i) filter_.options.stds_Q_no_odo[i] = static_cast<float>(options.stds_q_no_odometry[i]);
-    filter_.options.data_assoc_method = options.association == EkfAssociation::Nn ? mrpt::slam::assocNN : mrpt::slam::assocJCBB;
+    filter_.options.data_assoc_method = association_ == EkfAssociation::Nn ? mrpt::slam::assocNN : mrpt::slam::assocJCBB;
     filter_.options.data_assoc_IC_chi2_thres = options.chi2_threshold;
     filter_.setMinLoggingLevel(mrpt::system::LVL_ERROR);
   }
@@ -41,7 +42,7 @@ class Ekf2dRun final : public FilterRun {
  private:
   void process(const ObservationFrame& observation, const TruthFrame& truth) override {
     static const std::vector<int> unknown;
-    const std::vector<int>& ids = options_.association == EkfAssociation::Known ? truth.landmark_ids : unknown;
+    const std::vector<int>& ids = association_ == EkfAssociation::Known ? truth.landmark_ids : unknown;
     mrpt::obs::CSensoryFrame::Ptr sf = std::make_shared<mrpt::obs::CSensoryFrame>();
     sf->insert(bearing_range_observation(observation, ids, sensor_, 1.0e9 + observation.iteration));
     mrpt::obs::CActionCollection::Ptr actions = std::make_shared<mrpt::obs::CActionCollection>();  // never null
@@ -85,6 +86,7 @@ class Ekf2dRun final : public FilterRun {
 
   Ekf2dOptions options_;
   bool use_odometry_;
+  EkfAssociation association_;
   RangeBearingSensor sensor_;
   CRangeBearingKFSLAM2D filter_;
 };

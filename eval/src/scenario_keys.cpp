@@ -436,6 +436,9 @@ std::vector<ScenarioKey> build_keys() {
           "ekf2d.method", "planar EKF update: davison or full", {"davison", "full"}),
       choice<ekf_association_name, parse_ekf_association, &Scenario::ekf2d, &Ekf2dOptions::association>(
           "ekf2d.association", "jcbb or nn (Victoria Park has no ids), or known", {"known", "jcbb", "nn"}),
+      choice<ekf_association_name, parse_ekf_association, &Scenario::ekf2d, &Ekf2dOptions::association_no_odometry>(
+          "ekf2d.association_no_odometry", "ekf2d_no_odometry's association: nn (bounded time per scan), jcbb or known",
+          {"known", "jcbb", "nn"}),
       number<&Scenario::ekf2d, &Ekf2dOptions::std_range>("ekf2d.std_range", "planar EKF: range std. deviation, m"),
       degrees<&Scenario::ekf2d, &Ekf2dOptions::std_yaw_rad>("ekf2d.std_yaw_deg", "planar EKF: bearing std. deviation"),
       number_list<&Scenario::ekf2d, &Ekf2dOptions::stds_q_no_odometry>(

@@ -141,6 +141,7 @@ VictoriaParkResult run_victoria_park(const LoadedScenario& loaded, const Victori
   CsvWriter gps_table(out / "gps_comparison.csv",
                       {"algorithm", "scans", "gps_pairs", "ate_rmse", "ate_max", "rotation_deg", "tx", "ty"});
   const AlgorithmRun* reference = nullptr;
+  PlanarAlignment reference_to_gps;
   for (const auto& run : algorithms.runs()) {
     GpsComparison c;
     write_gps_files(out, *run, gps, c);
@@ -148,7 +149,10 @@ VictoriaParkResult run_victoria_park(const LoadedScenario& loaded, const Victori
     gps_table.row(c.algorithm, c.scans, a.pairs, a.pairs ? std::optional(a.rmse) : std::nullopt,
                   a.pairs ? std::optional(a.max) : std::nullopt, a.rotation_deg(), a.translation.x(), a.translation.y());
     result.gps.push_back(c);
-    if (run->name() == "ekf2d") reference = run.get();
+    if (run->name() == "ekf2d") {
+      reference = run.get();
+      reference_to_gps = c.alignment;
+    }
   }
   gps_table.close();
   if (reference) {
@@ -162,6 +166,13 @@ VictoriaParkResult run_victoria_park(const LoadedScenario& loaded, const Victori
       for (const Eigen::Vector3d& l : run->map()) map.push_back(planar(l));
       // A tree matches within 5 m: above the maps' disagreement, below the trees' usual spacing [C].
       const MapComparison m = compare_maps(map, reference_map, 5.0);
+      // The map as stretched over the reference (thesis Figs 164, 166), shown in the GPS frame.
+      CsvWriter fitted(out / run->name() / "landmarks_similarity_fit.csv", {"x", "y"});
+      for (const Eigen::Vector2d& l : map) {
+        const Eigen::Vector2d p = reference_to_gps.apply(m.alignment.apply(l));
+        fitted.row(p.x(), p.y());
+      }
+      fitted.close();
       maps.row(run->name(), reference->name(), m.landmarks, m.reference_landmarks, m.matched, m.rms, m.median,
                m.alignment.scale, m.alignment.rotation_deg());
       result.maps.emplace_back(run->name(), m);

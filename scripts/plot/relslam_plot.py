@@ -1,6 +1,8 @@
 """Shared helpers for the plot scripts: read run-folder CSVs by column name, save figures.
 
 Plots read only CSV and manifest.json (style.md 2.10); they never rerun C++.
+
+Usage: import relslam_plot as rp; rp.read_table("runs/f8/relative_point/iterations.csv", ["iteration"])
 """
 import csv
 import json
@@ -11,28 +13,58 @@ import matplotlib
 
 matplotlib.use("Agg")  # headless: CI and servers have no display
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+class DataError(Exception):
+    """A run folder's file is missing or malformed; the message names the file (and column)."""
+
+
+def read_table(path, names, text=()):
+    """Returns {name: numpy array} for the requested columns: floats (empty fields are NaN), or
+    strings for the names in `text`. Raises DataError naming the file, line and column."""
+    if not os.path.exists(path):
+        raise DataError(f"{path}: file not found")
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader, None) or []
+        missing = [n for n in names if n not in header]
+        if missing:
+            raise DataError(f"{path}: missing column(s) {', '.join(missing)}")
+        index = {n: header.index(n) for n in names}
+        columns = {n: [] for n in names}
+        for line, row in enumerate(reader, start=2):
+            for n, i in index.items():
+                field = row[i] if i < len(row) else None
+                if field is None:
+                    raise DataError(f"{path}:{line}: column {n}: row too short")
+                columns[n].append(field if n in text else _number(field, path, line, n))
+    return {n: np.array(v, dtype=object if n in text else float) for n, v in columns.items()}
+
+
+def _number(field, path, line, name):
+    if field == "":
+        return float("nan")
+    try:
+        return float(field)
+    except ValueError:
+        raise DataError(f"{path}:{line}: column {name}: not a number: {field!r}") from None
 
 
 def read_columns(path, names):
     """Returns {name: [float, ...]} for the requested columns; empty fields become NaN.
 
     A missing file or column stops with a message naming it."""
-    if not os.path.exists(path):
-        sys.exit(f"plot: {path}: file not found")
-    with open(path, newline="") as f:
-        reader = csv.DictReader(f)
-        missing = [n for n in names if n not in (reader.fieldnames or [])]
-        if missing:
-            sys.exit(f"plot: {path}: missing column(s) {', '.join(missing)}")
-        columns = {n: [] for n in names}
-        for row in reader:
-            for n in names:
-                columns[n].append(float(row[n]) if row[n] != "" else float("nan"))
-    return columns
+    try:
+        return {n: list(v) for n, v in read_table(path, names).items()}
+    except DataError as e:
+        sys.exit(f"plot: {e}")
 
 
 def read_tum(path):
     """TUM trajectory -> {t, x, y, z} lists."""
+    if not os.path.exists(path):
+        raise DataError(f"{path}: file not found")
     cols = {k: [] for k in ("t", "x", "y", "z")}
     with open(path) as f:
         for line in f:
@@ -42,6 +74,15 @@ def read_tum(path):
             for k, value in zip(("t", "x", "y", "z"), v):
                 cols[k].append(value)
     return cols
+
+
+def moving_average(values, width):
+    """Mean of each value and the width - 1 before it (fewer at the start), so the curve keeps its
+    length and starts at the first iteration."""
+    v = np.asarray(values, dtype=float)
+    total = np.cumsum(v)
+    total[width:] = total[width:] - total[:-width]
+    return total / np.minimum(np.arange(1, len(v) + 1), width)
 
 
 def read_manifest(run):
@@ -57,3 +98,12 @@ def save(fig, out_dir, name):
     fig.savefig(os.path.join(out_dir, name + ".pdf"), bbox_inches="tight")
     plt.close(fig)
     return png
+
+
+def save_png(fig, path, dpi=100):
+    """Writes exactly one PNG of the figure's own size (no tight bounding box, so the pixel size is
+    figsize x dpi and tests can check it)."""
+    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+    return path

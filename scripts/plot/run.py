@@ -22,16 +22,6 @@ def algorithms(run):
         return [row["algorithm"] for row in csv.DictReader(f) if row["status"] != "ratio"]
 
 
-def moving_average(values, width):
-    out, total = [], 0.0
-    for i, v in enumerate(values):
-        total += v
-        if i >= width:
-            total -= values[i - width]
-        out.append(total / min(i + 1, width))
-    return out
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--run", required=True, help="run folder written by relslam run")
@@ -66,7 +56,7 @@ def main():
 
     fig, ax = plt.subplots(figsize=(10, 3.5))
     for a, d in data.items():
-        ax.plot(d["iteration"], moving_average(d["runtime_ms"], 12), lw=0.8, label=f"{a} (12-iteration mean)")
+        ax.plot(d["iteration"], rp.moving_average(d["runtime_ms"], 12), lw=0.8, label=f"{a} (12-iteration mean)")
     ax.set_xlabel("iteration")
     ax.set_ylabel("run time per iteration (ms)")
     if len(data) > 1:

@@ -74,7 +74,8 @@ TEST(VictoriaParkExperiment, TheRelativeMapAgreesWithTheMapOfTheEkfWithOdometry)
     EXPECT_LT(g.alignment.rmse, 5.0) << g.algorithm;
   }
   for (const char* file : {"scans.csv", "gps.tum", "gps_comparison.csv", "map_comparison.csv", "summary.csv",
-                           "relative_point/trajectory_gps_frame.csv", "ekf2d/landmarks_gps_frame.csv"})
+                           "relative_point/trajectory_gps_frame.csv", "ekf2d/landmarks_gps_frame.csv",
+                           "relative_point/landmarks_similarity_fit.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
 }
 

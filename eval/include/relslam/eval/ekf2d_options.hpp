@@ -15,6 +15,11 @@ struct Ekf2dOptions {
   EkfMethod method = EkfMethod::Davison;
   // Victoria Park's trees carry no ids: the filter associates them itself [C].
   EkfAssociation association = EkfAssociation::Jcbb;
+  // Without odometry the filter loses its pose on long runs; its covariance then makes every
+  // nearby landmark compatible with every tree and JCBB's search grows exponentially (measured:
+  // one scan of the whole log ran for over 25 minutes). Nearest neighbour costs O(trees x map)
+  // per scan, so the time budget can stop it [C].
+  EkfAssociation association_no_odometry = EkfAssociation::Nn;
   // Sensor model. A trunk's centre comes from a laser arc, so its range is uncertain by a good
   // part of the trunk's diameter (up to 1.5 m) [C].
   double std_range = 0.5;                                // m

@@ -1,0 +1,113 @@
+"""Thesis Chapter 6 figure captions and what the thesis says about each (spec relative_point.md §8).
+
+Captions are the thesis's own (shortened where they run on); statements are the spec's "thesis
+statements to check" column. figures.py and report.py read this table, so a caption is written once.
+
+Usage: import catalogue; caption, statement = catalogue.CATALOGUE[146]
+"""
+
+CATALOGUE = {
+    110: ("Difference between the incremental and normal quadtree. Negative means faster run time for the "
+          "incremental quadtree",
+          "The robot revisits the start at about iteration 4000 and closes the loop; no new RltPoints afterwards. "
+          "While points are added the rebuilt tree's cost grows linearly; about 5 ms average run time after closure."),
+    111: ("Verifying the run time complexity of the binning algorithm",
+          "Growth is irregular at low percentages (clustering); the 90 % line is inconsistent (threshold too high, "
+          "everything lands in one bin)."),
+    112: ("Number of points in highest bin",
+          "The 90 % line is wrong; 70 % is wrong at n = 20, 40 and right from 60 up."),
+    113: ("Evaluating the run time of the binning algorithm",
+          "Polynomial growth starts between 20 % and 30 %; 10 % is about n log n."),
+    114: ("Performance with 50% normal 10% noise and 4 bins of 10% correlated noise",
+          "The correlated mix tracks 3n log n: correlated movers bin together, which speeds binning up."),
+    115: ("Performance of binning using priority queue",
+          "With the heuristic almost all lines are at or below n log n; 0 % is O(n)."),
+    116: ("Evaluation of priority queue with a 50% threshold",
+          "Only from about 47 % uncorrelated points is binning clearly worse than n log n."),
+    117: ("Extra computation cost of binning",
+          "The trend is about 0; the extra cost is 0.048 ms on average against a 3.5 ms average run time "
+          "(binning < 2 % of the total)."),
+    119: ("Comparing the mapping error of the basis point selection",
+          "Optimising the basis points greatly reduces the landmark error."),
+    120: ("Accuracy using different constants",
+          "Baseline (look back 60, PrevGroupMin 20, NextGroupMin 5, accuracy reduction 10) highlighted among "
+          "the variants."),
+    121: ("Quantity of Groups", "Relates the number of groups to the error."),
+    122: ("Evaluating the accuracy of setting accuracy reduction to 1",
+          "Accuracy reduction 1 has no effect on the error (a surprise)."),
+    123: ("Group size with accuracy reduction set to 1", "Accuracy reduction 1 gives more groups."),
+    124: ("Highlighting higher look back / look ahead",
+          "Look back 90 is worse than the baseline until the second loop; with accuracy reduction 20 clearly worse."),
+    125: ("Reducing the minimum ungrouped RltPoints to be added to 1",
+          "NextGroupMin 1 is the best improvement; the three settings of Fig 126 are the lowest here."),
+    126: ("7 runs through the figure 8 with 3 different settings",
+          "Hard to tell which setting is better: time to stop tuning constants."),
+    127: ("Figure eight top view. Every group has its own color of lines to each point from the centroid of "
+          "the group", "1795 RltPoints, about 1250 groups, 249 final groups; a loop is about 3800 iterations."),
+    128: ("Figure eight side view", "Shows the incline: the upper pass is above the start."),
+    129: ("Figure eight close up", "The centroid is only for rendering."),
+    130: ("x error", "Errors are periodic, tied to changes of direction, and return to about 0 at loop closure."),
+    131: ("x location", "To correlate with the x error (Fig 130)."),
+    132: ("y error", "Periodic, tied to turns; about 0 at loop closure."),
+    133: ("y location", "The incline profile."),
+    134: ("z error", "Periodic, tied to turns; about 0 at loop closure."),
+    135: ("z location", "A loop is about 1145 units long."),
+    136: ("Execution time", "The regression is flat: the run time does not grow with the map."),
+    137: ("Testing the linearity of point density",
+          "First like n log n, then a polynomial component appears."),
+    138: ("Initialization time", "O(n)."),
+    139: ("Point comparison (load time)", "Polynomial (about O(n^2) with the default quad size)."),
+    140: ("RltGroup computation time",
+          "Better than O(n): the group-per-point ratio changes at higher density, so ICP work shrinks."),
+    141: ("RltGroup creation time", "About O(2n), linear; includes the candidate search and binning."),
+    142: ("Execution time percentages",
+          "Initialisation + load + compute (the \"minimum computation\") is about 65 % of the run time."),
+    143: ("Almost the entire non O(n) part of the algorithm comes from the adding points part",
+          "The load step accounts for (almost) all of the super-linear growth."),
+    144: ("Comparison of using small quads", "Still slightly polynomial, but improved."),
+    145: ("Comparison of using small quads and octree replacement at 400",
+          "The octree lies between n and n log n; at density 400: init 7.8 ms octree vs 2.5 ms quad, "
+          "load 1.3 ms octree vs 4.5 ms quad."),
+    146: ("Figure eight landmark error", "Error increases happen at about the same times for both algorithms."),
+    147: ("Figure eight position error", "Comparable."),
+    148: ("Figure eight run time. The Relative Point algorithm's run time average is 1 ms so it is hard to see",
+          "The EKF passes 1 s per iteration and keeps rising; the Relative algorithm stays about 1 ms."),
+    149: ("Figure eight point count", "Map sizes of both algorithms (and the true points seen so far)."),
+    150: ("Landmark error in straight line test", "Very similar, except two single EKF errors."),
+    151: ("Position error in straight line test", "Similar."),
+    152: ("Stationary viewpoint landmark error", "Both decrease slowly and steadily towards 0."),
+    153: ("Dynamic error 2", "Two dynamic points make the EKF lose its position; its landmark error becomes "
+                            "meaningless."),
+    154: ("Dynamic error 1", "First of the EKF sequence."),
+    155: ("Dynamic error 3", "EKF sequence."),
+    156: ("Dynamic error 4", "The final EKF state."),
+    157: ("Dynamic detection 1", "Relative sequence; the dynamic points are ids 24 and 18."),
+    158: ("Dynamic detection 2", "Relative sequence."),
+    159: ("Dynamic detection 4", "Just before final-group creation and binning the landmark error is high, but the "
+                                "pose is roughly right."),
+    160: ("Dynamic detection 3", "Relative sequence."),
+    161: ("Dynamic detection 5", "Dynamic ids drawn in green; the landmark error drops from 16.414 to 1.841."),
+    162: ("Dynamic detection 6", "The same moment as the EKF's Fig 156."),
+    163: ("Results of the relative algorithm from iteration 1181 to 1642", "Landmarks (and trajectory)."),
+    164: ("Results of the relative algorithm from iterations 1181 to 1642, blue squares, over the results of "
+          "[PiPa08], yellow circles", "Generally consistent (judged by eye, after manual stretching)."),
+    165: ("Results of the relative algorithm from iterations 4220 to 4634", "Landmarks (and trajectory)."),
+    166: ("Results of the relative algorithm from iterations 4220 to 4634, blue squares, over the results of "
+          "[PiPa08], yellow circles", "Generally consistent (judged by eye, after manual stretching)."),
+    167: ("Landmark accuracy of 40 runs", "Like Fig 152: a slow decrease."),
+    168: ("Position error of 40 runs", "Never zero; periodic."),
+    169: ("Error in x direction of 40 loops",
+          "Periodic, random but with decreasing amplitude, stabilising mid-run; constant slopes suggest errors "
+          "made at turns and propagated."),
+    170: ("Error in y direction of 40 loops", "As Fig 169."),
+    171: ("Error in z direction of 40 loops", "As Fig 169."),
+    "components": ("Run-time components over the iterations of one run (not a thesis figure)",
+                   "Thesis 6.6.3 splits the run time into initialisation, load, group computation and group "
+                   "creation; the minimum computation is about 65 %."),
+    "vp-timing": ("Victoria Park time per scan with 1, 2 and 3 grouping levels (thesis 6.8 text, no figure)",
+                  "0.296 ms, 0.40 ms and 0.57 ms per scan (2.15 s, 2.9 s and 4.13 s for 7249 scans) on an "
+                  "AMD Athlon 64 3400+."),
+}
+
+# Pictures made by `relslam render` rather than charts; the report shows them from RUNS/renders/.
+RENDERS = [127, 128, 129] + list(range(153, 163))

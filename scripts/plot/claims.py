@@ -1,0 +1,206 @@
+"""The thesis's numbers (spec relative_point.md §10) next to ours, computed from the run folders.
+
+Each row names the thesis value, our value and the files it came from; a row whose run folder is
+missing says "not run" and no number is ever filled in by hand. report.py writes the table as
+claims.md.
+
+Usage: import claims; for quantity, thesis, ours, sources in claims.rows("runs"): ...
+"""
+import functools
+import os
+
+import numpy as np
+
+import figures as fg
+import relslam_plot as rp
+
+P = functools.partial
+
+
+class Run:
+    """A run folder that records which of its files a claim read, for the source column."""
+
+    def __init__(self, runs, name):
+        self.runs, self.path, self.read = runs, os.path.join(runs, name), []
+
+    def file(self, *parts):
+        path = os.path.join(self.path, *parts)
+        self.read.append(os.path.relpath(path, self.runs))
+        return path
+
+    def iterations(self, columns, algorithm=fg.ALG):
+        self.file(algorithm, "iterations.csv")
+        return fg.iterations(self.path, columns, algorithm)
+
+    def summary(self, columns):
+        """{algorithm: {column: value}} from summary.csv."""
+        t = rp.read_table(self.file("summary.csv"), ["algorithm", *columns], text=("algorithm", "status"))
+        return {a: {c: t[c][i] for c in columns} for i, a in enumerate(t["algorithm"])}
+
+    def density(self):
+        self.file("sweep.csv")
+        self.read.append(os.path.join(os.path.relpath(self.path, self.runs), "*", "seed-*", fg.ALG, "iterations.csv"))
+        return fg.density_table(self.path)
+
+
+def pick_density(available, wanted):
+    """`wanted` when the runs have it, else their highest density, with a note saying so (quick runs
+    sweep lower densities than the thesis)."""
+    available = sorted(available)
+    if wanted in available:
+        return wanted, ""
+    return available[-1], f" (at ρ = {available[-1]:g}: no ρ = {wanted:g} in the runs)"
+
+
+# ---- one function per claim: (Run, ...) -> text ----------------------------------------------
+
+def loop(run):
+    sim = rp.read_table(run.file("sim_iterations.csv"), ["iteration", "arc_length"])
+    return f"{sim['arc_length'][-1]:.0f} units / {len(sim['iteration'])} iterations (whole run)"
+
+
+def group_counts(run):
+    d = run.iterations(["rlt_points", "groups", "final_groups"])
+    return f"{d['rlt_points'][-1]:.0f} / {d['groups'][-1]:.0f} / {d['final_groups'][-1]:.0f} " \
+           f"(after {len(d['iteration'])} iterations)"
+
+
+def visible(run):
+    return f"{np.mean(run.iterations(['visible_points'])['visible_points']):.1f}"
+
+
+def total_points(run):
+    return f"{run.iterations(['landmarks_in_map'])['landmarks_in_map'][-1]:.0f} landmarks on the map"
+
+
+def mean_runtime(run):
+    return f"{np.mean(run.iterations(['runtime_ms'])['runtime_ms']):.3g} ms"
+
+
+def after_closure(run):
+    """Mean run time once the first loop is done (thesis 6.5.1: closure at about iteration 4000)."""
+    path = run.file("manifest.json")
+    try:
+        loop_end = int(fg.read_json(path)["scenario"]["sim"]["iterations_per_loop"])
+    except (KeyError, TypeError, ValueError):
+        raise rp.DataError(f"{path}: no scenario.sim.iterations_per_loop") from None
+    d = run.iterations(["runtime_ms"])
+    after = d["runtime_ms"][d["iteration"] >= loop_end]
+    if len(after) == 0:
+        return f"run ends at iteration {d['iteration'][-1]:.0f}, before loop closure ({loop_end})"
+    return f"{after.mean():.3g} ms (iterations {loop_end}–{d['iteration'][-1]:.0f})"
+
+
+def binning_overhead(on, off):
+    with_binning = on.iterations(["runtime_ms", "t_binning_ms"])
+    without = off.iterations(["runtime_ms"])
+    mean_on, extra = with_binning["runtime_ms"].mean(), with_binning["runtime_ms"].mean() - without["runtime_ms"].mean()
+    binning = with_binning["t_binning_ms"].mean()
+    return f"{extra:.3g} ms vs {mean_on:.3g} ms avg ({100 * extra / mean_on:.1f} %); " \
+           f"t_binning_ms alone {binning:.3g} ms ({100 * binning / mean_on:.1f} %)"
+
+
+def octree_vs_quad(octree, quad, column, wanted=400.0):
+    o, q = octree.density(), quad.density()
+    common = set(o["density"]) & set(q["density"])
+    if not common:
+        return "no density in both sweeps"
+    density, note = pick_density(common, wanted)
+    oi, qi = list(o["density"]).index(density), list(q["density"]).index(density)
+    return f"{o[column][oi]:.3g} vs {q[column][qi]:.3g} ms{note}"
+
+
+def dense(run, column, unit, wanted=550.0):
+    t = run.density()
+    density, note = pick_density(t["density"], wanted)
+    return f"{t[column][list(t['density']).index(density)]:.3g}{unit}{note}"
+
+
+def dense_total_points(run, wanted=550.0):
+    density, note = pick_density(run.density()["density"], wanted)
+    folder = dict((float(v), f) for v, f in fg.sweep_runs(run.path, "sim.density"))[density]
+    d = fg.iterations(folder, ["landmarks_in_map"])
+    run.read.append(os.path.relpath(os.path.join(folder, fg.ALG, "iterations.csv"), run.runs))
+    return f"{d['landmarks_in_map'][-1]:.0f} landmarks on the map{note}"
+
+
+def minimum_share(run):
+    t = run.density()
+    share = 100 * (t["t_init_ms"] + t["t_load_ms"] + t["t_compute_ms"]) / t["runtime_ms"]
+    return f"{share.mean():.0f} % (from {share.min():.0f} % to {share.max():.0f} % over ρ = " \
+           f"{', '.join(f'{d:g}' for d in t['density'])})"
+
+
+def relative_vs_ekf(run):
+    s = run.summary(["status", "runtime_mean_ms", "runtime_max_ms"])
+    rel, ekf = s.get(fg.ALG), s.get("ekf6d")
+    if rel is None or ekf is None:
+        return "the run lacks relative_point or ekf6d"
+    return f"{rel['runtime_mean_ms']:.3g} ms vs {ekf['runtime_mean_ms']:.3g} ms mean " \
+           f"({ekf['runtime_mean_ms'] / rel['runtime_mean_ms']:.0f}×; EKF max {ekf['runtime_max_ms']:.3g} ms, " \
+           f"status {ekf['status']})"
+
+
+def dynamic_drop(run):
+    """Landmark error just before and at the first iteration binning flags a dynamic point."""
+    d = run.iterations(["landmark_error", "dynamic_flagged"])
+    flagged = np.nonzero(d["dynamic_flagged"] > 0)[0]
+    if len(flagged) == 0 or flagged[0] == 0:
+        return f"no dynamic point flagged in {len(d['iteration'])} iterations"
+    k = flagged[0]
+    return f"{d['landmark_error'][k - 1]:.4g} → {d['landmark_error'][k]:.4g} " \
+           f"(iteration {d['iteration'][k]:.0f})"
+
+
+def vp_level(run, level):
+    """ms per scan and the time for all 7249 scans, per window, from Google Benchmark JSON."""
+    cells = [f"{ms[level]:.3g} ms ({ms[level] * 7.249:.3g} s) [{window}]"
+             for window, ms in fg.vp_benchmarks(run.file()).items() if level in ms]
+    return "; ".join(cells) or f"no 'levels {level}' benchmark"
+
+
+# (quantity, thesis value, run folders, claim function)
+CLAIMS = [
+    ("loop length / iterations (S-F8)", "≈1145 units / ≈3800", ["s-f8"], loop),
+    ("RltPoints / groups / final groups (1 loop, ρ = 100)", "1795 / ≈1250 / 249", ["s-f8"], group_counts),
+    ("visible points per observation (ρ ≈ 100)", "98", ["s-f8"], visible),
+    ("total points (ρ ≈ 100)", "1557", ["s-f8"], total_points),
+    ("mean run time per iteration (ρ ≈ 100)", "2 ms", ["s-f8"], mean_runtime),
+    ("run time after loop closure", "≈5 ms", ["s-f8-2l"], after_closure),
+    ("binning overhead (S-DYN3 minus binning off)", "0.048 ms vs 3.5 ms avg (< 2 %)",
+     ["s-dyn3", "s-dyn3-no-binning"], binning_overhead),
+    ("octree vs quad at ρ = 400: init", "7.8 vs 2.5 ms", ["s-dens-o", "s-dens-q"],
+     P(octree_vs_quad, column="t_init_ms")),
+    ("octree vs quad at ρ = 400: load", "1.3 vs 4.5 ms", ["s-dens-o", "s-dens-q"],
+     P(octree_vs_quad, column="t_load_ms")),
+    ("ρ = 550: time per iteration", "18 ms (Athlon 64 3400+)", ["s-dens-o"],
+     P(dense, column="runtime_ms", unit=" ms")),
+    ("ρ = 550: visible points per observation", "537", ["s-dens-o"], P(dense, column="visible_points", unit="")),
+    ("ρ = 550: total points", "8980", ["s-dens-o"], dense_total_points),
+    ("share of minimum computation (init + load + compute)", "≈65 %", ["s-dens-q"], minimum_share),
+    ("Relative vs EKF time per iteration at ρ = 25", "≈1 ms vs > 1 s", ["s-ekf-f8"], relative_vs_ekf),
+    ("dynamic test: landmark error at dynamic detection", "16.414 → 1.841", ["s-dyn"], dynamic_drop),
+    ("Victoria Park per scan, 1 grouping level", "0.296 ms (2.15 s for 7249 scans)", ["vp-timing.json"],
+     P(vp_level, level=1)),
+    ("Victoria Park per scan, 2 levels (dynamic detection)", "0.40 ms (2.9 s)", ["vp-timing.json"],
+     P(vp_level, level=2)),
+    ("Victoria Park per scan, 3 levels", "0.57 ms (4.13 s)", ["vp-timing.json"], P(vp_level, level=3)),
+]
+
+
+def rows(runs):
+    """[(quantity, thesis, ours, source files)] for every claim."""
+    out = []
+    for quantity, thesis, names, claim in CLAIMS:
+        missing = [n for n in names if not os.path.exists(os.path.join(runs, n))]
+        if missing:
+            out.append((quantity, thesis, "not run", f"missing {', '.join(missing)}"))
+            continue
+        folders = [Run(runs, n) for n in names]
+        try:
+            ours = claim(*folders)
+        except rp.DataError as e:
+            ours = f"error: {e}"
+        read = sorted({p for f in folders for p in f.read})
+        out.append((quantity, thesis, ours, ", ".join(f"`{p}`" for p in read)))  # `*` in paths is no emphasis
+    return out

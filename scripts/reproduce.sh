@@ -1,0 +1,152 @@
+#!/usr/bin/env bash
+# Runs every thesis Chapter 6 experiment and writes the report: each figure next to its thesis
+# number and caption (report/index.html) and the thesis's numbers next to ours (report/claims.md).
+#   scripts/reproduce.sh [--quick] [--out DIR] [--report DIR] [--binary PATH] [--jobs N]
+#     --quick    shortened runs (fewer iterations and loops; under 15 minutes on two cores)
+#     --out      run folders (default runs/reproduce, or runs/reproduce-quick with --quick)
+#     --report   report folder (default report)
+#     --binary   use this relslam and skip installing and building (as the long CTest does)
+#     --jobs     sweep runs at a time (default: the number of cores)
+# Steps that fail are listed at the end (exit 1); the others still run and are reported.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source_dir=$(pwd)
+
+quick=0
+out=""
+report=report
+binary=""
+jobs=$(nproc)
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) quick=1; shift ;;
+    --out) out=$2; shift 2 ;;
+    --report) report=$2; shift 2 ;;
+    --binary) binary=$2; shift 2 ;;
+    --jobs) jobs=$2; shift 2 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
+    *) echo "reproduce: unknown argument $1" >&2; exit 2 ;;
+  esac
+done
+[ -n "$out" ] || out=$([ $quick -eq 1 ] && echo runs/reproduce-quick || echo runs/reproduce)
+
+if [ -z "$binary" ]; then
+  scripts/setup.sh
+  scripts/build.sh build
+  binary=build/relslam
+  bench_vp=build/bench/relslam_bench_victoria_park
+else
+  bench_vp=$(dirname "$binary")/bench/relslam_bench_victoria_park
+fi
+relslam() { "$binary" "$@"; }
+vp_data=${RELSLAM_VICTORIA_PARK:-$source_dir/../shared/datasets/victoria_park}
+mkdir -p "$out/renders"
+log="$out/reproduce.log"
+: > "$log"
+failed=()
+start_all=$SECONDS
+
+# step NAME COMMAND...: runs one experiment, logs its output and time, and goes on if it fails.
+step() {
+  local name=$1; shift
+  local start=$SECONDS
+  printf '%-28s ' "$name"
+  if "$@" >> "$log" 2>&1; then
+    printf 'done in %4d s\n' $((SECONDS - start))
+  else
+    printf 'FAILED after %d s (see %s)\n' $((SECONDS - start)) "$log"
+    failed+=("$name")
+  fi
+}
+# Quick mode's shorter runs: each experiment keeps its shape, with fewer iterations or loops.
+short() { [ $quick -eq 1 ] && echo "$@" || true; }
+run() { local name=$1 scenario=$2; shift 2; relslam run "scenarios/$scenario.json" --out "$out/$name" --force -q "$@"; }
+sweep() { local name=$1; shift; relslam sweep "scenarios/$name.json" --out "$out/$name" --force -q --jobs "$jobs" "$@"; }
+set_each() { local a=(); for kv in "$@"; do a+=(--set "$kv"); done; echo "${a[@]}"; }
+
+echo "reproduce: thesis Chapter 6 into $out ($([ $quick -eq 1 ] && echo quick || echo full) mode); log in $log"
+
+# 6.5 - 6.6: the figure eight, its variants and the run-time experiments.
+step s-f8                run s-f8 s-f8
+step s-f8-first-three    run s-f8-first-three s-f8 --set relative_point.basis=first_three
+step s-f8-2l             run s-f8-2l s-f8-2l
+step s-f8-2l-rebuilt     run s-f8-2l-rebuilt s-f8-2l --set relative_point.global_index=rebuilt
+step s-f8-2l-const       sweep s-f8-2l-const
+step s-f8-7l-const       sweep s-f8-7l-const $(set_each $(short sim.loops=2))
+step s-f8-2x             run s-f8-2x s-f8-2x
+step s-dens-q            sweep s-dens-q $(set_each $(short sim.iterations=1500))
+step s-dens-qs           sweep s-dens-qs $(set_each $(short sim.iterations=1500))
+step s-dens-o            sweep s-dens-o $(set_each $(short sim.iterations=1500))
+step s-bin               relslam bench-binning scenarios/s-bin.json --out "$out/s-bin" --force -q $(set_each $(short binning_bench.seeds=3))
+step s-dyn3              run s-dyn3 s-dyn3
+step s-dyn3-no-binning   run s-dyn3-no-binning s-dyn3 --set relative_point.final_group.binning=false
+
+# 6.7: against MRPT's 6D EKF (the slow part: the EKF's cost grows with its map).
+step s-ekf-f8            run s-ekf-f8 s-ekf-f8 $(set_each $(short sim.iterations=2000))
+step s-line              run s-line s-line $(set_each $(short sim.iterations=2000))
+step s-stat              run s-stat s-stat $(set_each $(short sim.iterations=2000))
+step s-dyn               run s-dyn s-dyn $(set_each $(short sim.iterations=2000))
+
+# 6.8: Victoria Park, when the data is there.
+if [ -f "$vp_data/measurements.dat" ]; then
+  step vp-1181           relslam victoria-park --data "$vp_data" --window 1181:1642 --out "$out/vp-1181" --force -q
+  step vp-4220           relslam victoria-park --data "$vp_data" --window 4220:4634 --out "$out/vp-4220" --force -q
+  step vp-all-relative   relslam victoria-park --data "$vp_data" --window all --bridge --set algorithms=relative_point \
+                           --out "$out/vp-all" --force -q
+  if [ -x "$bench_vp" ]; then
+    step vp-timing       env RELSLAM_VICTORIA_PARK="$vp_data" "$bench_vp" --benchmark_format=json --benchmark_out="$out/vp-timing.json"
+  fi
+else
+  echo "victoria park: skipped, no data at $vp_data (set RELSLAM_VICTORIA_PARK)"
+fi
+
+# 6.9: forty loops.
+step s-40                run s-40 s-40 $(set_each $(short sim.loops=5))
+
+# Renders (Figs 127-129, 153-162): the runs replayed by relslam render.
+render_figures() {
+  local r="$out/renders"
+  # (errexit does not reach into a function called from `if`: each command returns on failure)
+  relslam render "$out/s-f8" --out "$r/fig127.png" -q || return 1
+  relslam render "$out/s-f8" --view side --out "$r/fig128.png" -q || return 1
+  relslam render "$out/s-f8" --fit robot --labels on --out "$r/fig129.png" -q || return 1
+  # Figs 153-156: the EKF losing its pose to the dynamic points, at four moments of its run;
+  # Figs 157-162: the Relative map around the iteration whose landmark error drops most (the
+  # final group's binning flagging the movers, thesis 6.7.3).
+  local moments
+  moments=$(/usr/bin/python3 - "$out/s-dyn" <<'PY'
+import csv, sys
+def column(path, name):
+    with open(path, newline="") as f:
+        return [float(r[name]) if r[name] else float("nan") for r in csv.DictReader(f)]
+run = sys.argv[1]
+ekf = len(column(run + "/ekf6d/iterations.csv", "iteration"))
+ekf_moments = [max(0, round(ekf * q) - 1) for q in (0.25, 0.5, 0.75, 1.0)]
+error = column(run + "/relative_point/iterations.csv", "landmark_error")
+drops = [(error[k - 1] - error[k], k) for k in range(1, len(error)) if error[k] == error[k] and error[k - 1] == error[k - 1]]
+k = max(drops)[1] if drops else len(error) - 1
+rp_moments = [max(0, min(len(error) - 1, k + d)) for d in (-60, -20, -1, 0, 20, 100)]
+print(" ".join(map(str, ekf_moments + rp_moments)))
+PY
+) || return 1
+  set -- $moments
+  local fig=153
+  for k in "$1" "$2" "$3" "$4"; do
+    relslam render "$out/s-dyn" --algorithm ekf6d --iteration "$k" --fit robot --out "$r/fig$fig.png" -q || return 1
+    fig=$((fig + 1))
+  done
+  shift 4
+  for k in "$@"; do
+    relslam render "$out/s-dyn" --iteration "$k" --fit robot --labels on --out "$r/fig$fig.png" -q || return 1
+    fig=$((fig + 1))
+  done
+}
+step renders             render_figures
+
+step report              /usr/bin/python3 scripts/plot/report.py --runs "$out" --out "$report" $(short --quick)
+
+echo "reproduce: $(( (SECONDS - start_all) / 60 )) min $(( (SECONDS - start_all) % 60 )) s; report in $report/index.html and $report/claims.md"
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "reproduce: failed steps: ${failed[*]}" >&2
+  exit 1
+fi

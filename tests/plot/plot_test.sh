@@ -1,0 +1,173 @@
+#!/usr/bin/env bash
+# The thesis figure scripts (scripts/plot/figures.py, report.py, claims.py) against a tiny fixture
+# of real, seeded, shortened runs of the relslam binary (every folder scripts/reproduce.sh makes):
+# each figure renders a valid PNG of the expected size, the report references every figure and
+# render, claims.md has every row, a missing run folder is skipped by name and a malformed CSV is
+# reported by file and column without a traceback. Takes about a minute on two cores.
+#
+# Usage: tests/plot/plot_test.sh <relslam binary> <source dir> <work dir>
+#   Victoria Park figures need the data set ($RELSLAM_VICTORIA_PARK, else <source dir>/../shared/
+#   datasets/victoria_park); the timing chart needs relslam_bench_victoria_park
+#   ($RELSLAM_BENCH_VICTORIA_PARK, else bench/ next to the relslam binary). Without them those
+#   figures are skipped with a message.
+set -uo pipefail
+[ $# -eq 3 ] || { echo "usage: $0 <relslam binary> <source dir> <work dir>" >&2; exit 2; }
+relslam=$(realpath "$1")
+src=$(realpath "$2")
+work=$(realpath -m "$3")
+python=/usr/bin/python3  # Debian's, with matplotlib
+plot=$src/scripts/plot
+vp_data=${RELSLAM_VICTORIA_PARK:-$src/../shared/datasets/victoria_park}
+vp_bench=${RELSLAM_BENCH_VICTORIA_PARK:-$(dirname "$relslam")/bench/relslam_bench_victoria_park}
+SIZE="1000 600"  # figures.py FIGSIZE x DPI
+
+passed=0
+failed=0
+ok() { passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+summary() { echo "$passed passed, $failed failed"; }
+die() { fail "$*"; summary; exit 1; }
+not() { ! "$@"; }
+expect() {  # expect DESCRIPTION COMMAND...: one check
+  local what=$1
+  shift
+  if "$@"; then ok; else fail "$what"; fi
+}
+
+runs=$work/runs
+rm -rf "$runs" "$work/figures" "$work/report" "$work/empty" "$work/bad"
+mkdir -p "$runs" "$work/empty" || die "cannot create $work"
+cd "$src" || die "no source dir $src"
+
+# ---- fixture: shortened real runs ------------------------------------------------------------
+make_run() {  # make_run FOLDER relslam-arguments...
+  local out=$1
+  shift
+  "$relslam" "$@" --out "$runs/$out" -q || die "relslam $* --out $runs/$out failed"
+}
+short=(--set sim.iterations=150)
+make_run s-f8 run scenarios/s-f8.json "${short[@]}"
+make_run s-f8-first-three run scenarios/s-f8.json "${short[@]}" --set relative_point.basis=first_three
+make_run s-f8-2l run scenarios/s-f8-2l.json "${short[@]}"
+make_run s-f8-2l-rebuilt run scenarios/s-f8-2l.json "${short[@]}" --set relative_point.global_index=rebuilt
+make_run s-f8-2l-const sweep scenarios/s-f8-2l-const.json --set sim.iterations=60
+make_run s-f8-7l-const sweep scenarios/s-f8-7l-const.json --set sim.iterations=60
+make_run s-f8-2x run scenarios/s-f8-2x.json --set sim.iterations=250
+make_run s-dens-q sweep scenarios/s-dens-q.json --param sim.density=25,50,75 --set sim.iterations=60
+make_run s-dens-qs sweep scenarios/s-dens-qs.json --param sim.density=25,50,75 --set sim.iterations=60
+make_run s-dens-o sweep scenarios/s-dens-o.json --param sim.density=75,100 --set sim.iterations=60
+make_run s-bin bench-binning scenarios/s-bin.json --set 'binning_bench.points=[20,40,60]' \
+  --set 'binning_bench.percentages=[0,10,20,30,40,45,47,50,90]' --set binning_bench.seeds=2
+make_run s-dyn3 run scenarios/s-dyn3.json "${short[@]}"
+make_run s-dyn3-no-binning run scenarios/s-dyn3.json "${short[@]}" --set relative_point.final_group.binning=false
+make_run s-ekf-f8 run scenarios/s-ekf-f8.json --set sim.iterations=80
+make_run s-line run scenarios/s-line.json --set sim.iterations=80
+make_run s-stat run scenarios/s-stat.json --set sim.iterations=80
+make_run s-dyn run scenarios/s-dyn.json "${short[@]}"
+make_run s-40 run scenarios/s-40.json --set sim.iterations=400
+
+expected=(110 111 112 113 114 115 116 117 $(seq 119 126) $(seq 130 152) $(seq 167 171) components)
+if [ -d "$vp_data" ]; then
+  make_run vp-1181 victoria-park --data "$vp_data" --window 1181:1230
+  make_run vp-4220 victoria-park --data "$vp_data" --window 4220:4270
+  expected+=(163 164 165 166)
+  if [ -x "$vp_bench" ]; then
+    RELSLAM_VICTORIA_PARK=$vp_data "$vp_bench" --benchmark_filter='BM_VictoriaParkLevels/[123]/0' \
+      --benchmark_format=json >"$runs/vp-timing.json" 2>/dev/null || die "$vp_bench failed"
+    expected+=(vp-timing)
+  else
+    echo "note: no $vp_bench: the Victoria Park timing chart is not tested"
+  fi
+else
+  echo "note: no Victoria Park data at $vp_data: Figs 163-166 and the timing chart are not tested"
+fi
+png_name() { case $1 in [0-9]*) echo "fig$1.png" ;; *) echo "$1.png" ;; esac; }
+
+# ---- fit helpers -----------------------------------------------------------------------------
+expect "fit helpers (tests/plot/fit_test.py)" "$python" "$src/tests/plot/fit_test.py" "$src"
+
+# ---- figures.py: every figure ----------------------------------------------------------------
+log=$work/figures.log
+"$python" "$plot/figures.py" --runs "$runs" --out "$work/figures" >"$log" 2>&1
+expect "figures.py exits 0 (see $log)" [ $? -eq 0 ]
+expect "figures.py reports no error (see $log)" not grep -q ": error:" "$log"
+check_png() {  # check_png FILE: exists, non-empty, a PNG of SIZE pixels
+  local size
+  [ -s "$1" ] || { fail "$1 missing or empty"; return; }
+  size=$("$python" "$src/tests/plot/png_size.py" "$1") || { fail "$1 is not a PNG"; return; }
+  if [ "$size" = "$SIZE" ]; then ok; else fail "$1 is $size pixels, expected $SIZE"; fi
+}
+for id in "${expected[@]}"; do
+  check_png "$work/figures/$(png_name "$id")"
+done
+expect "figures.py writes nothing but the PNGs" [ "$(find "$work/figures" -type f ! -name '*.png' | wc -l)" -eq 0 ]
+
+# ---- report.py -------------------------------------------------------------------------------
+mkdir -p "$runs/renders"
+# Two real renders (relslam render replays the run); the others stay missing on purpose.
+"$relslam" render "$runs/s-f8" --view side --width 800 --height 600 --out "$runs/renders/fig128.png" -q
+expect "relslam render writes fig128" [ -s "$runs/renders/fig128.png" ]
+expect "the render is 800x600" [ "$("$python" "$src/tests/plot/png_size.py" "$runs/renders/fig128.png")" = "800 600" ]
+"$python" "$plot/report.py" --runs "$runs" --out "$work/report" --quick >"$work/report.log" 2>&1
+expect "report.py exits 0 (see $work/report.log)" [ $? -eq 0 ]
+index=$work/report/index.html
+claims_md=$work/report/claims.md
+expect "index.html written" [ -s "$index" ]
+expect "index.html says quick mode" grep -q "Quick mode" "$index"
+for id in "${expected[@]}"; do
+  name=$(png_name "$id")
+  expect "index.html shows $name" grep -q "src=\"figures/$name\"" "$index"
+  expect "report/figures/$name exists" [ -s "$work/report/figures/$name" ]
+done
+expect "index.html shows the render fig128" grep -q 'src="figures/fig128.png"' "$index"
+for n in 127 129 $(seq 153 162); do
+  expect "index.html lists render $n as not produced" grep -q "no renders/fig$n.png" "$index"
+done
+expect "index.html has thesis captions" grep -q "Figure eight landmark error" "$index"
+expect "index.html has thesis statements" grep -q "What the thesis says" "$index"
+expect "claims.md written" [ -s "$claims_md" ]
+expect "claims.md says quick mode" grep -q "Quick mode" "$claims_md"
+expect "claims.md has the table header" grep -q "^| quantity | thesis | ours | source file |$" "$claims_md"
+for row in "loop length" "RltPoints / groups / final groups" "visible points per observation (ρ ≈ 100)" \
+  "run time after loop closure" "binning overhead" "octree vs quad at ρ = 400: init" \
+  "octree vs quad at ρ = 400: load" "ρ = 550: time per iteration" "ρ = 550: visible points" \
+  "ρ = 550: total points" "share of minimum computation" "Relative vs EKF" "dynamic test" \
+  "Victoria Park per scan, 1" "Victoria Park per scan, 2" "Victoria Park per scan, 3"; do
+  expect "claims.md row '$row'" grep -q "^| $row" "$claims_md"
+done
+expect "claims.md computes RltPoints from s-f8" \
+  grep -q "^| RltPoints.*| [0-9]* / [0-9]* / [0-9]* .*s-f8/relative_point/iterations.csv\` |$" "$claims_md"
+expect "claims.md: every simulated row has a number" \
+  [ "$(grep -v 'Victoria Park' "$claims_md" | grep -c '| not run |')" -eq 0 ]
+expect "claims.md: no errors" not grep -q "| error:" "$claims_md"
+
+# ---- missing and malformed inputs ------------------------------------------------------------
+out=$("$python" "$plot/figures.py" --runs "$work/empty" --out "$work/empty/figures" 2>&1)
+expect "missing runs: exit 0" [ $? -eq 0 ]
+expect "missing runs: Fig 146 skipped naming s-ekf-f8" grep -q "fig146: skipped, missing s-ekf-f8" <<<"$out"
+expect "missing runs: no PNG written" [ ! -e "$work/empty/figures/fig146.png" ]
+"$python" "$plot/report.py" --runs "$work/empty" --out "$work/empty/report" >/dev/null 2>&1
+expect "missing runs: report exits 0" [ $? -eq 0 ]
+expect "missing runs: claims say not run" \
+  grep -q "| RltPoints.*| not run | missing s-f8 |" "$work/empty/report/claims.md"
+
+mkdir -p "$work/bad"
+cp -r "$runs/s-ekf-f8" "$runs/s-f8" "$work/bad/"
+sed -i '1s/landmark_error/landmark_err/' "$work/bad/s-ekf-f8/ekf6d/iterations.csv"
+sed -i '3s/^\([0-9]*\),[^,]*,/\1,oops,/' "$work/bad/s-f8/relative_point/iterations.csv"
+out=$("$python" "$plot/figures.py" --runs "$work/bad" --out "$work/bad/figures" --fig 146 119 2>&1)
+expect "malformed CSV: exit 1" [ $? -eq 1 ]
+expect "malformed CSV: names the file and missing column" \
+  grep -q "s-ekf-f8/ekf6d/iterations.csv: missing column(s) landmark_error" <<<"$out"
+expect "malformed CSV: no traceback" not grep -q "Traceback" <<<"$out"
+expect "malformed CSV: Fig 119 skipped naming s-f8-first-three" \
+  grep -q "fig119: skipped, missing s-f8-first-three" <<<"$out"
+mkdir -p "$work/bad/s-f8-first-three"
+out=$("$python" "$plot/figures.py" --runs "$work/bad" --out "$work/bad/figures" --fig 119 2>&1)
+expect "bad value: Fig 119 reports file, line and column" \
+  grep -q "s-f8/relative_point/iterations.csv:3: column landmark_error: not a number: 'oops'" <<<"$out"
+out=$("$python" "$plot/figures.py" --runs "$work/bad" --out "$work/bad/figures" --fig 999 2>&1)
+expect "unknown figure: exit 2" [ $? -eq 2 ]
+
+summary
+[ "$failed" -eq 0 ]

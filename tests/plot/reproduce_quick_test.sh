@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# scripts/reproduce.sh --quick end to end with the built binary: every step succeeds, every
+# figure of the report and every render is there, and claims.md compares every row.
+# Usage: reproduce_quick_test.sh <relslam binary> <source dir> <work dir>
+set -euo pipefail
+relslam=$(realpath "$1")
+src=$(realpath "$2")
+work=$(realpath -m "$3")
+rm -rf "$work"
+"$src/scripts/reproduce.sh" --quick --binary "$relslam" --out "$work/runs" --report "$work/report"
+passed=0 failed=0
+check() { if "${@:2}"; then passed=$((passed + 1)); else echo "FAIL: $1"; failed=$((failed + 1)); fi; }
+for n in 127 128 129 $(seq 153 162); do
+  check "render fig$n" test -s "$work/report/figures/fig$n.png"
+done
+# Only the Victoria Park figures may be missing, and only where the data is absent.
+vp_data=${RELSLAM_VICTORIA_PARK:-$src/../shared/datasets/victoria_park}
+allowed='^$'
+[ -f "$vp_data/measurements.dat" ] || allowed='vp-'
+check "no figure missing from the report" bash -c "! grep 'Not produced' '$work/report/index.html' | grep -qv '$allowed'"
+for n in 110 111 117 119 120 126 130 136 137 145 146 150 152 167 171; do
+  check "figure $n in the report" grep -q "src=\"figures/fig$n.png\"" "$work/report/index.html"
+done
+check "claims.md has no row left unrun" bash -c "! grep -q 'not run' '$work/report/claims.md'"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
