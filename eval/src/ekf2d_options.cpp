@@ -13,10 +13,7 @@ std::vector<OptionIssue> check(const Ekf2dOptions& o) {
   require_at_least(issues, "odometry_std_xy_ratio", o.odometry_std_xy_ratio, 0.0);
   require_above(issues, "odometry_std_heading_deg", o.odometry_std_heading_rad, 0.0);
   require_at_least(issues, "odometry_std_heading_ratio", o.odometry_std_heading_ratio, 0.0);
-  require_above(issues, "chi2_threshold", o.chi2_threshold, 0.0);
-  require_at_most(issues, "chi2_threshold", o.chi2_threshold, 1.0);
-  require_above(issues, "time_budget_ms", o.time_budget_ms, 0.0);
-  require_at_least(issues, "budget_iterations", o.budget_iterations, 1);
+  check_filter_limits(issues, o.chi2_threshold, o.time_budget_ms, o.budget_iterations);
   return issues;
 }
 

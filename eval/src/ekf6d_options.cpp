@@ -25,6 +25,14 @@ std::optional<EkfAssociation> parse_ekf_association(std::string_view name) {
   return std::nullopt;
 }
 
+void check_filter_limits(std::vector<OptionIssue>& issues, double chi2_threshold, double time_budget_ms,
+                         int budget_iterations) {
+  require_above(issues, "chi2_threshold", chi2_threshold, 0.0);
+  require_at_most(issues, "chi2_threshold", chi2_threshold, 1.0);
+  require_above(issues, "time_budget_ms", time_budget_ms, 0.0);
+  require_at_least(issues, "budget_iterations", budget_iterations, 1);
+}
+
 std::vector<OptionIssue> check(const Ekf6dOptions& o) {
   std::vector<OptionIssue> issues;
   require_above(issues, "std_range", o.std_range, 0.0);
@@ -33,10 +41,7 @@ std::vector<OptionIssue> check(const Ekf6dOptions& o) {
   if (o.stds_q.size() != 7)
     issues.push_back({"stds_q", "needs 7 values (x, y, z, qr, qx, qy, qz), got " + std::to_string(o.stds_q.size())});
   for (double s : o.stds_q) require_above(issues, "stds_q", s, 0.0);
-  require_above(issues, "chi2_threshold", o.chi2_threshold, 0.0);
-  require_at_most(issues, "chi2_threshold", o.chi2_threshold, 1.0);
-  require_above(issues, "time_budget_ms", o.time_budget_ms, 0.0);
-  require_at_least(issues, "budget_iterations", o.budget_iterations, 1);
+  check_filter_limits(issues, o.chi2_threshold, o.time_budget_ms, o.budget_iterations);
   return issues;
 }
 

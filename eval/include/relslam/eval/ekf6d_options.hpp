@@ -49,5 +49,8 @@ struct Ekf6dOptions {
 };
 
 std::vector<OptionIssue> check(const Ekf6dOptions& options);
+// The checks every MRPT filter's options share: association gate and time budget.
+void check_filter_limits(std::vector<OptionIssue>& issues, double chi2_threshold, double time_budget_ms,
+                         int budget_iterations);
 
 }  // namespace relslam::eval
