@@ -41,7 +41,7 @@ class RelativePointRun final : public AlgorithmRun {
                     {"t_init_ms", "t_load_ms", "t_compute_ms", "t_create_ms", "t_pose_ms", "rlt_points", "groups",
                      "final_groups", "groups_alive", "temporary_groups_alive", "new_points", "local_matches",
                      "global_matches", "pose_source", "t_merge_ms", "t_binning_ms", "binning_comparisons",
-                     "dynamic_flagged", "merges"}),
+                     "dynamic_flagged", "merges", "mean_group_members"}),
         trajectory_(dir / "trajectory.tum") {
     for (int id : truth.dynamic_ids) truth_dynamic_[id] = true;
   }
@@ -74,7 +74,8 @@ class RelativePointRun final : public AlgorithmRun {
     const point::StepTimings& t = r.timings;
     iterations_.row(r.iteration, s, runtime_ms, observation.points.size(), t.init_ms, t.load_ms, t.compute_ms,
                     t.create_ms, t.pose_ms, points.size(), g.created, g.final_created, g.alive, g.temporary_alive, r.new_points, r.local_matches, r.global_matches, pose_source(r.pose_source),
-                    t.merge_ms, t.binning_ms, r.binning_comparisons, g.dynamic_points, g.merged_points);
+                    t.merge_ms, t.binning_ms, r.binning_comparisons, g.dynamic_points, g.merged_points,
+                    g.alive > 0 ? std::optional(static_cast<double>(g.alive_members) / g.alive) : std::nullopt);
     trajectory_.write(static_cast<double>(r.iteration), r.world_T_robot);
   }
 

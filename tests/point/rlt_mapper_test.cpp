@@ -55,6 +55,28 @@ TEST(RltMapper, NoisyLoopClosesByItselfWithFewDuplicates) {
   EXPECT_GT(r.mapped, 0.9 * r.distinct_landmarks_seen);
 }
 
+// GroupStats::alive_members is kept as groups are built and retired (temporary clean-up,
+// dynamic basis points); it must equal a count over the groups at every iteration.
+TEST(RltMapper, AliveMembersCountsTheMembersOfTheAliveGroups) {
+  sim::SimOptions o = one_loop(0.1);
+  o.iterations = 600;
+  o.dynamic.fraction = 0.05;
+  const sim::Simulator simulator(o, 3);
+  RltMapper mapper;
+  int retired = 0;
+  for (int k = 0; k < simulator.iterations(); ++k) {
+    mapper.step(simulator.frame(k).observation);
+    long long members = 0;
+    retired = 0;
+    for (const RltGroup& g : mapper.groups()) {
+      if (g.alive()) members += static_cast<long long>(g.members().size());
+      retired += !g.alive();
+    }
+    ASSERT_EQ(mapper.group_stats().alive_members, members) << "iteration " << k;
+  }
+  EXPECT_GT(retired, 0) << "the run must retire groups for the check to mean something";
+}
+
 TEST(RltMapper, SameInputGivesIdenticalResults) {
   sim::SimOptions o = one_loop(0.1);
   o.iterations = 800;

@@ -101,6 +101,7 @@ void RltMapper::build_group(GroupLevel level, int c0, int k, const GroupPlan& pl
   groups_.emplace_back(id, level, c0, k, plan.members, plan.anchor, plan.basis, plan.registration);
   ++stats_.created;
   ++stats_.alive;
+  stats_.alive_members += static_cast<long long>(plan.members.size());
   if (level == GroupLevel::Final) ++stats_.final_created;
   if (level == GroupLevel::Level3) ++stats_.level3_created;
   if (level == GroupLevel::Temporary) {
@@ -159,6 +160,7 @@ void RltMapper::mark_dynamic(PointId id, StepResult& result) {
 void RltMapper::retire(RltGroup& group) {
   group.retire();
   --stats_.alive;
+  stats_.alive_members -= static_cast<long long>(group.members().size());
   if (group.level() == GroupLevel::Temporary) --stats_.temporary_alive;
   for (PointId id : group.members()) {
     auto& refs = points_[id].groups;
