@@ -24,10 +24,14 @@ echo "$info" | grep -Eq "Overall number of objects +: $((2 * iterations))$" || {
 echo "$info" | grep -Eq "Actions/SensoryFrame format +: Yes" || { echo "FAIL: format"; exit 1; }
 echo "$info" | grep -Eq "RELSLAM_SIM / +$iterations " || { echo "FAIL: observation count"; exit 1; }
 
-cat > "$work/kf.ini" <<INI
+# run_kf_slam NAME IMPLEMENTATION RAWLOG STEPS FILTER_KEYS: kf-slam with logging off, which must
+# reach step STEPS-1; its log is $work/NAME.log.
+run_kf_slam() {
+  local name=$1 implementation=$2 log=$3 steps=$4 keys=$5
+  cat > "$work/$name.ini" <<INI
 [MappingApplication]
-kf_implementation=CRangeBearingKFSLAM
-logOutput_dir=$work/kf-out
+kf_implementation=$implementation
+logOutput_dir=$work/$name-out
 SAVE_LOG_FREQUENCY=1000000
 SAVE_DA_LOG=false
 SAVE_3D_SCENES=false
@@ -35,17 +39,22 @@ SAVE_MAP_REPRESENTATIONS=false
 SHOW_3D_LIVE=false
 
 [RangeBearingKFSLAM]
-force_ignore_odometry=true
-std_sensor_range=0.1
-std_sensor_yaw_deg=0.1
-std_sensor_pitch_deg=0.1
-stds_Q_no_odo=[0.35 0.35 0.35 0.005 0.005 0.005 0.005]
+$keys
 
 [RangeBearingKFSLAM_KalmanFilter]
 method=1
 INI
-(cd "$work" && timeout 300 kf-slam kf.ini "$rawlog") > "$work/kf.log" 2>&1 || { tail -20 "$work/kf.log"; echo "FAIL: kf-slam exited non-zero"; exit 1; }
-grep -q "Step $((iterations - 1)) - " "$work/kf.log" || { tail -20 "$work/kf.log"; echo "FAIL: kf-slam did not reach the last step"; exit 1; }
+  (cd "$work" && timeout 300 kf-slam "$name.ini" "$log") > "$work/$name.log" 2>&1 \
+    || { tail -20 "$work/$name.log"; echo "FAIL: kf-slam ($name) exited non-zero"; exit 1; }
+  grep -q "Step $((steps - 1)) - " "$work/$name.log" \
+    || { tail -20 "$work/$name.log"; echo "FAIL: kf-slam ($name) did not reach the last step"; exit 1; }
+}
+
+run_kf_slam kf CRangeBearingKFSLAM "$rawlog" "$iterations" "force_ignore_odometry=true
+std_sensor_range=0.1
+std_sensor_yaw_deg=0.1
+std_sensor_pitch_deg=0.1
+stds_Q_no_odo=[0.35 0.35 0.35 0.005 0.005 0.005 0.005]"
 grep -q "KF-SLAM finished" "$work/kf.log" || { echo "FAIL: kf-slam did not finish"; exit 1; }
 # The robot drove straight ahead (MRPT +x) for iterations-1 steps of 1145/3800 units.
 last=$(grep "Mean pose" "$work/kf.log" | tail -1)
@@ -62,27 +71,9 @@ if [ -f "$vp/measurements.dat" ]; then
   info=$(rawlog-edit --info -i "$work/vp.rawlog" 2>&1)
   echo "$info" | grep -Eq "Overall number of objects +: $((2 * scans))$" || { echo "$info"; echo "FAIL: VP object count"; exit 1; }
   echo "$info" | grep -Eq "Actions/SensoryFrame format +: Yes" || { echo "FAIL: VP format"; exit 1; }
-  cat > "$work/kf2d.ini" <<INI
-[MappingApplication]
-kf_implementation=CRangeBearingKFSLAM2D
-logOutput_dir=$work/kf2d-out
-SAVE_LOG_FREQUENCY=1000000
-SAVE_DA_LOG=false
-SAVE_3D_SCENES=false
-SAVE_MAP_REPRESENTATIONS=false
-SHOW_3D_LIVE=false
-
-[RangeBearingKFSLAM]
-std_sensor_range=0.5
+  run_kf_slam kf2d CRangeBearingKFSLAM2D "$work/vp.rawlog" "$scans" "std_sensor_range=0.5
 std_sensor_yaw_deg=1
-data_assoc_method=1
-
-[RangeBearingKFSLAM_KalmanFilter]
-method=1
-INI
-  (cd "$work" && timeout 300 kf-slam kf2d.ini "$work/vp.rawlog") > "$work/kf2d.log" 2>&1 \
-    || { tail -20 "$work/kf2d.log"; echo "FAIL: kf-slam 2D exited non-zero on the Victoria Park rawlog"; exit 1; }
-  grep -q "Step $((scans - 1)) - " "$work/kf2d.log" || { tail -20 "$work/kf2d.log"; echo "FAIL: kf-slam 2D did not reach the last step"; exit 1; }
+data_assoc_method=1"
   # About 0.57 m forward per scan at the window's start (dead reckoning).
   echo "kf-slam 2D on Victoria Park, last pose: $(grep "Mean pose" "$work/kf2d.log" | tail -1)"
 else
