@@ -1,8 +1,9 @@
 // Simulating one figure-eight loop (3800 iterations), issue #2 §7: target under 2 s at
 // density 550 (~535 visible points per frame) including writing the rawlog, on 2 cores.
-#include "relslam/eval/frame_stream.hpp"
-#include "relslam/eval/scenario.hpp"
-#include "relslam/eval/simulation_recorder.hpp"
+#include "relslam/eval/sources/frame_stream.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/sources/simulated_world.hpp"
+#include "relslam/eval/sources/simulation_recorder.hpp"
 
 #include <benchmark/benchmark.h>
 

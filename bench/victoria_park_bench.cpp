@@ -3,8 +3,8 @@
 // the whole log (7,249 scans, bridged by dead reckoning). The thesis measured 0.296 / 0.40 /
 // 0.57 ms per scan, 2.15 / 2.9 / 4.13 s for the log, on a 2004 CPU; our target is the whole
 // log under 0.3 s. Needs the data: $RELSLAM_VICTORIA_PARK or ../shared/datasets/victoria_park.
-#include "relslam/eval/scenario_loading.hpp"
-#include "relslam/eval/victoria_park_experiment.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/experiments/victoria_park_experiment.hpp"
 #include "relslam/point/rlt_mapper.hpp"
 
 #include <benchmark/benchmark.h>

@@ -1,6 +1,6 @@
 #include "test_support.hpp"
 
-#include "relslam/eval/app.hpp"
+#include "relslam/eval/cli/app.hpp"
 
 #include <gtest/gtest.h>
 

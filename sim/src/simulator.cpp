@@ -71,7 +71,12 @@ SimFrame Simulator::frame(int k) const {
       observe(id, anchors[id]);
     }
   }
-  for (int id : dynamic_ids_) observe(id, world_.position(id, k));
+  std::vector<Eigen::Vector3d> dynamic_positions;
+  dynamic_positions.reserve(dynamic_ids_.size());
+  for (int id : dynamic_ids_) {
+    dynamic_positions.push_back(world_.position(id, k));
+    observe(id, dynamic_positions.back());
+  }
 
   // Sorting by id first makes the output independent of how the culling walked the world;
   // then Fisher–Yates with its own stream, so the order never reveals landmark ids.
@@ -83,6 +88,7 @@ SimFrame Simulator::frame(int k) const {
   out.observation.iteration = k;
   out.truth.iteration = k;
   out.truth.world_T_robot = pose;
+  out.truth.dynamic_positions = std::move(dynamic_positions);
   out.observation.points.reserve(seen.size());
   out.truth.landmark_ids.reserve(seen.size());
   for (const Detection& d : seen) {

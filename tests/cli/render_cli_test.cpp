@@ -1,6 +1,6 @@
 // relslam render: the replayed state drawn where the axes say, pictures of the asked size, a
 // video with one frame per step, and bad requests refused with the option named.
-#include "relslam/eval/map_render.hpp"
+#include "relslam/eval/io/map_render.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // relslam run --rawlog: any MRPT range-bearing rawlog through both algorithms, scored against
 // ground truth in MRPT's text formats.
-#include "relslam/eval/range_bearing.hpp"
+#include "relslam/eval/io/range_bearing.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "relslam/eval/rawlog.hpp"
+#include "relslam/eval/io/rawlog.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

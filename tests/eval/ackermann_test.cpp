@@ -1,4 +1,4 @@
-#include "relslam/eval/ackermann.hpp"
+#include "relslam/eval/sources/ackermann.hpp"
 
 #include "test_support.hpp"
 

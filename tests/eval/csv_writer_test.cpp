@@ -1,6 +1,6 @@
-#include "relslam/eval/csv_writer.hpp"
+#include "relslam/eval/io/csv_writer.hpp"
 
-#include "relslam/eval/tum_writer.hpp"
+#include "relslam/eval/io/tum_writer.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

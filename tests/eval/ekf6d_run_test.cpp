@@ -2,8 +2,10 @@
 // on low-noise data with known ids, failures recorded rather than thrown, one shared stream.
 #include "test_support.hpp"
 
-#include "relslam/eval/algorithm_run.hpp"
-#include "relslam/eval/scenario_loading.hpp"
+#include "relslam/eval/algorithms/registry.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/experiments/algorithm_recorder.hpp"
+#include "relslam/eval/sources/simulated_world.hpp"
 
 #include <gtest/gtest.h>
 
@@ -34,9 +36,10 @@ Runs run_algorithms(const LoadedScenario& loaded, const std::vector<std::string>
                     const std::function<void(ObservationFrame&)>& tamper = {}) {
   const sim::Simulator simulator = build_simulator(loaded);
   const LandmarkTruth truth = landmark_truth(simulator.world());
-  std::vector<std::unique_ptr<AlgorithmRun>> runs;
+  const RangeBearingSensor sensor = sensor_of(loaded.scenario.sim);
+  std::vector<std::unique_ptr<AlgorithmRecorder>> runs;
   for (const std::string& name : names)
-    runs.push_back(make_algorithm_run(name, loaded.scenario, truth, sensor_of(loaded.scenario.sim), dir));
+    runs.push_back(std::make_unique<AlgorithmRecorder>(make_algorithm(name, {loaded.scenario, sensor}), truth, dir / name));
   Runs out;
   for (int k = 0; k < simulator.iterations(); ++k) {
     sim::SimFrame frame = simulator.frame(k);
@@ -53,7 +56,7 @@ TEST(Ekf6dRun, ConvergesToTheTruthOnLowNoiseWithKnownIds) {
   const double sigma = 0.01;
   const Runs r = run_algorithms(low_noise(400, sigma), {"ekf6d"}, dir.path());
   const SummaryRow& ekf = r.rows[0];
-  ASSERT_EQ(ekf.status, "ok");
+  ASSERT_EQ(ekf.status.text(), "ok");
   EXPECT_EQ(ekf.iterations, 400);
   // Errors of the order of the noise (measured 0.027 and 0.035 at sigma 0.01), far below the
   // 0.3-unit step of the path.
@@ -76,7 +79,9 @@ TEST(Ekf6dRun, ANonFiniteObservationIsARecordedFailureOfEachAlgorithm) {
     if (f.iteration == 30) f.points[0].x() = std::numeric_limits<double>::quiet_NaN();
   });
   for (const SummaryRow& row : r.rows) {
-    EXPECT_EQ(row.status.rfind("failed at iteration 30: ", 0), 0u) << row.algorithm << ": " << row.status;
+    EXPECT_EQ(row.status.kind, RunStatus::Kind::Failed) << row.algorithm;
+    EXPECT_EQ(row.status.iteration, 30) << row.algorithm;
+    EXPECT_EQ(row.status.text().rfind("failed at iteration 30: ", 0), 0u) << row.algorithm << ": " << row.status.text();
     EXPECT_EQ(row.iterations, 30) << row.algorithm;  // the iterations before the bad one are scored
   }
   // The files up to the failure are complete.
@@ -104,7 +109,8 @@ TEST(Ekf6dRun, StopsOnceOverItsTimeBudget) {
   loaded.scenario.ekf6d.time_budget_ms = 0.0;  // every iteration is over it
   loaded.scenario.ekf6d.budget_iterations = 5;
   const Runs r = run_algorithms(loaded, {"ekf6d"}, dir.path());
-  EXPECT_EQ(r.rows[0].status.rfind("stopped at iteration 4: over the time budget", 0), 0u) << r.rows[0].status;
+  EXPECT_EQ(r.rows[0].status.kind, RunStatus::Kind::Stopped);
+  EXPECT_EQ(r.rows[0].status.text().rfind("stopped at iteration 4: over the time budget", 0), 0u) << r.rows[0].status.text();
   EXPECT_EQ(r.rows[0].iterations, 5);
 }
 

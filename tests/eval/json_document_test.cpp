@@ -1,6 +1,6 @@
-#include "relslam/eval/json_document.hpp"
+#include "relslam/eval/config/json_document.hpp"
 
-#include "relslam/eval/input_error.hpp"
+#include "relslam/eval/config/input_error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "relslam/eval/landmark_error.hpp"
+#include "relslam/eval/metrics/landmark_error.hpp"
 
 #include "relslam/sim/random.hpp"
 
@@ -14,7 +14,7 @@ TEST(LandmarkErrorTracker, IncrementalSumMatchesBruteForceWithMovingTruth) {
   LandmarkTruth truth;
   for (int i = 0; i < 300; ++i) truth.positions.emplace_back(rng.uniform(-50, 50), rng.uniform(-5, 5), rng.uniform(-50, 50));
   truth.dynamic_ids = {3, 77};
-  truth.dynamic_position = [&](int id, int k) {
+  auto dynamic_position = [&](int id, int k) {
     Eigen::Vector3d p = truth.positions[id];
     p.x() += 0.1 * k;  // movers drift along x
     return p;
@@ -32,7 +32,8 @@ TEST(LandmarkErrorTracker, IncrementalSumMatchesBruteForceWithMovingTruth) {
       else
         map.erase(id);
     }
-    tracker.update(k, changed, [&](int id) -> std::optional<Eigen::Vector3d> {
+    const std::vector<Eigen::Vector3d> movers = {dynamic_position(3, k), dynamic_position(77, k)};
+    tracker.update(movers, changed, [&](int id) -> std::optional<Eigen::Vector3d> {
       const auto it = map.find(id);
       if (it == map.end()) return std::nullopt;
       return it->second;
@@ -42,7 +43,7 @@ TEST(LandmarkErrorTracker, IncrementalSumMatchesBruteForceWithMovingTruth) {
       double nearest = 1e300;
       for (int t = 0; t < 300; ++t) {
         const bool moving = t == 3 || t == 77;
-        nearest = std::min(nearest, (p - (moving ? truth.dynamic_position(t, k) : truth.positions[t])).norm());
+        nearest = std::min(nearest, (p - (moving ? dynamic_position(t, k) : truth.positions[t])).norm());
       }
       expected += nearest;
       ASSERT_NEAR(tracker.error_of(id), nearest, 1e-12);
@@ -50,6 +51,18 @@ TEST(LandmarkErrorTracker, IncrementalSumMatchesBruteForceWithMovingTruth) {
     ASSERT_EQ(tracker.count(), static_cast<int>(map.size()));
     ASSERT_NEAR(tracker.sum(), expected, 1e-9) << "k " << k;
   }
+}
+
+TEST(LandmarkErrorTracker, AFrameWithoutTheMoversPositionsIsALogicError) {
+  LandmarkTruth truth;
+  truth.positions = {Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()};
+  truth.dynamic_ids = {1};
+  LandmarkErrorTracker tracker(truth);
+  const auto at_origin = [](int) { return std::optional<Eigen::Vector3d>(Eigen::Vector3d::Zero()); };
+  EXPECT_THROW(tracker.update({}, {0}, at_origin), std::logic_error);
+  tracker.update({Eigen::Vector3d(0.5, 0, 0)}, {0}, at_origin);
+  EXPECT_DOUBLE_EQ(tracker.sum(), 0.0);
+  EXPECT_EQ(tracker.nearest(Eigen::Vector3d(0.4, 0, 0), {Eigen::Vector3d(0.5, 0, 0)}).first, 1);
 }
 
 }  // namespace

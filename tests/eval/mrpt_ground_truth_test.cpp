@@ -1,6 +1,6 @@
-#include "relslam/eval/mrpt_ground_truth.hpp"
+#include "relslam/eval/io/mrpt_ground_truth.hpp"
 
-#include "relslam/eval/input_error.hpp"
+#include "relslam/eval/config/input_error.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "relslam/eval/range_bearing.hpp"
+#include "relslam/eval/io/range_bearing.hpp"
 
 #include "relslam/sim/random.hpp"
 

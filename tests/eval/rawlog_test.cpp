@@ -1,7 +1,7 @@
-#include "relslam/eval/rawlog.hpp"
+#include "relslam/eval/io/rawlog.hpp"
 
-#include "relslam/eval/input_error.hpp"
-#include "relslam/eval/range_bearing.hpp"
+#include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/io/range_bearing.hpp"
 #include "relslam/sim/random.hpp"
 #include "test_support.hpp"
 

@@ -1,6 +1,6 @@
-#include "relslam/eval/run_folder.hpp"
+#include "relslam/eval/io/run_folder.hpp"
 
-#include "relslam/eval/input_error.hpp"
+#include "relslam/eval/config/input_error.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,8 @@
-#include "relslam/eval/scenario.hpp"
+#include "relslam/eval/config/scenario.hpp"
 
-#include "relslam/eval/scenario_keys.hpp"
+#include "relslam/eval/algorithms/registry.hpp"
+#include "relslam/eval/config/scenario_keys.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -142,7 +144,20 @@ TEST(Scenario, VariantsAreNamedSettingsCheckedAgainstTheirKeys) {
 }
 
 TEST(Scenario, UnknownAlgorithmIsRejected) {
-  EXPECT_NE(error_of(R"({"algorithms": ["nope"]})").find("algorithms: unknown algorithm \"nope\""), std::string::npos);
+  const auto unknown = [](const std::string& text) {
+    try {
+      check_algorithm_names(parse_scenario(text, "scenarios/t.json"));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(unknown(R"({"algorithms": ["relative_point", "nope"]})"),
+            "scenarios/t.json:1: algorithms: unknown algorithm \"nope\" (known: relative_point, ekf6d, ekf2d, ekf2d_no_odometry)");
+  EXPECT_EQ(unknown(R"({"algorithms": ["ekf6d"], "sweep": {"algorithms": [["relative_point"], ["x"]]}})").rfind(
+                "scenarios/t.json:1: sweep.algorithms: unknown algorithm \"x\"", 0),
+            0u);
+  EXPECT_EQ(unknown(R"({"algorithms": ["ekf6d"]})"), "");
   EXPECT_EQ(error_of(R"({"algorithms": "x"})"), "scenarios/t.json:1: algorithms: expected a list of algorithm names, got \"x\"");
 }
 

@@ -1,4 +1,4 @@
-#include "relslam/eval/seed_statistics.hpp"
+#include "relslam/eval/metrics/seed_statistics.hpp"
 
 #include <gtest/gtest.h>
 

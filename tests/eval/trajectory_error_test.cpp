@@ -1,4 +1,4 @@
-#include "relslam/eval/trajectory_error.hpp"
+#include "relslam/eval/metrics/trajectory_error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // The Victoria Park experiment end to end on short windows of the real data (skipped where the
 // data is absent), and the stream the algorithms see.
-#include "relslam/eval/victoria_park_experiment.hpp"
+#include "relslam/eval/experiments/victoria_park_experiment.hpp"
 
-#include "relslam/eval/rawlog.hpp"
-#include "relslam/eval/scenario_loading.hpp"
+#include "relslam/eval/io/rawlog.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -55,7 +55,7 @@ TEST(VictoriaParkExperiment, TheRelativeMapAgreesWithTheMapOfTheEkfWithOdometry)
       run_victoria_park(scenario("1181:1300", {"algorithms=relative_point,ekf2d"}), *data(), dir.path(), false);
   ASSERT_EQ(r.experiment.rows.size(), 2u);
   for (const SummaryRow& row : r.experiment.rows) {
-    EXPECT_EQ(row.status, "ok") << row.algorithm;
+    EXPECT_EQ(row.status.text(), "ok") << row.algorithm;
     EXPECT_EQ(row.iterations, 120) << row.algorithm;
   }
   ASSERT_EQ(r.maps.size(), 1u);
@@ -97,7 +97,7 @@ TEST(VictoriaParkExperiment, TheWholeLogRunsEndToEndWhenBridgedByDeadReckoning) 
       scenario("all", {"algorithms=relative_point", "relative_point.use_odometry=true"}), *data(), dir.path(), false);
   EXPECT_EQ(r.scans, 7249);
   EXPECT_EQ(r.scans_below_three, 381);  // scans the thesis's algorithm cannot register
-  EXPECT_EQ(r.experiment.rows[0].status, "ok");
+  EXPECT_EQ(r.experiment.rows[0].status.text(), "ok");
   EXPECT_EQ(r.experiment.rows[0].iterations, 7249);
   EXPECT_GT(r.experiment.rows[0].landmarks_on_map, 500);
   const test::CsvTable rp = test::read_csv(dir / "relative_point/iterations.csv");

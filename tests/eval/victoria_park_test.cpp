@@ -1,6 +1,6 @@
-#include "relslam/eval/victoria_park.hpp"
+#include "relslam/eval/io/victoria_park.hpp"
 
-#include "relslam/eval/input_error.hpp"
+#include "relslam/eval/config/input_error.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -104,9 +104,9 @@ TEST(VictoriaPark, ASmallLogReadsScanByScan) {
   EXPECT_EQ(log.scans[2].index, 3);  // after the list
   EXPECT_DOUBLE_EQ(log.scans[2].time, 1.280);
   const DetectionFilter near{0, 15, 0.15};
-  EXPECT_FALSE(near.keeps(log.scans[0].trees[0]));  // 20 m
-  EXPECT_FALSE(near.keeps(log.scans[0].trees[1]));  // 0.1 m across
-  EXPECT_TRUE(near.keeps(log.scans[1].trees[0]));
+  EXPECT_FALSE(kept(near, log.scans[0].trees[0]));  // 20 m
+  EXPECT_FALSE(kept(near, log.scans[0].trees[1]));  // 0.1 m across
+  EXPECT_TRUE(kept(near, log.scans[1].trees[0]));
 }
 
 TEST(VictoriaPark, MalformedFilesNameTheFileAndLine) {

@@ -1,0 +1,79 @@
+#include "mrpt_filter.hpp"
+
+#include <stdexcept>
+
+namespace relslam::eval {
+namespace {
+
+// One map landmark as landmarks.csv sees it.
+struct LandmarkRow {
+  std::size_t slot;
+  const Eigen::Vector3d& position;
+  const LandmarkScore& score;
+};
+
+const Columns<LandmarkRow> kLandmarkColumns = {
+    {"id", [](const LandmarkRow& r) { return csv_field(r.slot); }},
+    {"x", [](const LandmarkRow& r) { return csv_field(r.position.x()); }},
+    {"y", [](const LandmarkRow& r) { return csv_field(r.position.y()); }},
+    {"z", [](const LandmarkRow& r) { return csv_field(r.position.z()); }},
+    {"true_id", [](const LandmarkRow& r) { return csv_field(r.score.true_id); }},
+    {"error", [](const LandmarkRow& r) { return csv_field(r.score.error); }},
+    {"level", [](const LandmarkRow&) { return csv_field("ekf"); }},
+};
+
+}  // namespace
+
+std::string mrpt_message(const std::string& what) {
+  const std::size_t start = what.find("Message:");
+  std::string line = start == std::string::npos ? what : what.substr(start + 8);
+  line = line.substr(0, line.find('\n'));
+  const std::size_t first = line.find_first_not_of(' ');
+  return first == std::string::npos ? "" : line.substr(first);
+}
+
+std::vector<int> unknown_association_slots(const std::map<std::size_t, std::size_t>& associations, std::size_t rows,
+                                           std::size_t before) {
+  std::vector<int> out(rows, -1);
+  for (const auto& [row, slot] : associations)
+    if (row < rows) out[row] = static_cast<int>(slot);
+  std::size_t next = before;
+  for (std::size_t r = 0; r < rows; ++r)
+    if (out[r] < 0) out[r] = static_cast<int>(next++);
+  return out;
+}
+
+void MrptFilter::step(const ObservationFrame& observation, const TruthFrame& truth) {
+  rows_ = observation.points.size();
+  before_ = map_size();
+  try {
+    process(observation, truth);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(mrpt_message(e.what()));
+  }
+  true_ids_ = truth.landmark_ids;
+}
+
+void MrptFilter::read_out() {
+  pose_ = filter_pose();
+  map_.resize(map_size());
+  for (std::size_t i = 0; i < map_.size(); ++i) map_[i] = landmark(i);
+  all_ids_.resize(map_.size());
+  for (std::size_t i = 0; i < map_.size(); ++i) all_ids_[i] = static_cast<int>(i);
+  assignment_ = slots(rows_, before_, true_ids_);
+}
+
+std::vector<std::string> MrptFilter::landmark_columns() const { return column_names(kLandmarkColumns); }
+
+void MrptFilter::landmark_rows(const std::function<LandmarkScore(int)>& score,
+                               const std::function<void(const std::vector<CsvField>&)>& row) const {
+  std::vector<CsvField> fields;
+  for (std::size_t i = 0; i < map_.size(); ++i) {
+    const LandmarkScore s = score(static_cast<int>(i));
+    fields.clear();
+    append_fields(kLandmarkColumns, {i, map_[i], s}, fields);
+    row(fields);
+  }
+}
+
+}  // namespace relslam::eval

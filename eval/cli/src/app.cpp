@@ -1,0 +1,139 @@
+#include "relslam/eval/cli/app.hpp"
+
+#include "relslam/eval/io/build_info.hpp"
+#include "relslam/eval/cli/commands/bench_binning.hpp"
+#include "relslam/eval/cli/commands/rawlog_info.hpp"
+#include "relslam/eval/cli/commands/render.hpp"
+#include "relslam/eval/cli/commands/run.hpp"
+#include "relslam/eval/cli/commands/simulate.hpp"
+#include "relslam/eval/cli/commands/sweep.hpp"
+#include "relslam/eval/cli/commands/tune_ekf.hpp"
+#include "relslam/eval/cli/commands/victoria_park.hpp"
+#include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/algorithms/registry.hpp"
+#include "relslam/eval/config/scenario_keys.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+namespace relslam::eval {
+namespace {
+
+constexpr const char* kFooter = R"(
+Scenarios are JSON files in scenarios/, one per thesis experiment (s-f8.json is the
+one-loop figure eight). Every key has a default; `relslam keys` lists them and
+`relslam scenario FILE` shows a scenario with every default filled in.
+
+Examples:
+  relslam run scenarios/s-f8.json --out runs/f8              # simulate and run the Relative Point algorithm
+  relslam run scenarios/s-ekf-f8.json --out runs/ekf-f8       # Relative Point and the MRPT 6D EKF on one stream
+  relslam sweep scenarios/s-dens-q.json --out runs/density --seeds 5 --jobs 2
+  relslam sweep scenarios/s-f8.json --out runs/sigma --param sim.noise_sigma=0.01,0.05 --seeds 3
+  relslam tune-ekf scenarios/s-ekf-f8.json --out runs/tune     # the EKF's sensor std. deviations
+  relslam simulate scenarios/s-f8.json --out runs/f8-sim
+  relslam simulate scenarios/s-f8.json --out runs/f8-dense --set sim.density=550
+  relslam scenario scenarios/s-dyn.json --set sim.dynamic.count=3
+  relslam rawlog runs/f8/observations.rawlog --csv runs/f8/from_rawlog.csv
+  relslam bench-binning scenarios/s-bin.json --out runs/s-bin
+  relslam victoria-park --window 1181:1642 --out runs/vp-1181  # Victoria Park against GPS (thesis 6.8)
+  relslam convert victoria-park --out runs/vp.rawlog           # Victoria Park as an MRPT rawlog
+  relslam render runs/f8 --iteration 1200 --out map.png        # top view of the map (thesis Fig 127)
+
+Exit codes: 0 ok, 2 bad input (the message names the file, line and key), 1 internal error.)";
+
+struct ScenarioArgs {
+  std::string scenario;
+  std::vector<std::string> set;
+};
+
+void add_scenario(CLI::App& app, ScenarioArgs& args) {
+  CLI::App* cmd = app.add_subcommand("scenario", "Check a scenario and print it with every default filled in");
+  cmd->add_option("scenario", args.scenario, "Scenario file")->required();
+  cmd->add_option("--set", args.set, "Override a scenario key, e.g. --set sim.density=50 (repeatable)");
+}
+
+int run_scenario(const ScenarioArgs& args) {
+  const LoadedScenario loaded = load_with_overrides(args.scenario, args.set);
+  std::cout << to_json(loaded.scenario).dump(2) << '\n';
+  return 0;
+}
+
+}  // namespace
+
+int run_cli(int argc, const char* const* argv) {
+  CLI::App app{"relslam: simulation and evaluation workbench for Relative SLAM (Kraut 2011)", "relslam"};
+  app.require_subcommand(1);
+  app.footer(kFooter);
+  app.set_version_flag("--version", std::string("relslam ") + relslam_version() + " (" + git_revision() + ")");
+
+  SimulateArgs simulate;
+  add_simulate(app, simulate);
+  RunArgs run;
+  add_run(app, run);
+  ScenarioArgs scenario;
+  add_scenario(app, scenario);
+  RawlogArgs rawlog;
+  add_rawlog(app, rawlog);
+  SweepArgs sweep;
+  add_sweep(app, sweep);
+  TuneEkfArgs tune_ekf;
+  add_tune_ekf(app, tune_ekf);
+  VictoriaParkArgs victoria_park;
+  add_victoria_park(app, victoria_park);
+  ConvertVictoriaParkArgs convert;
+  add_convert(app, convert);
+  BenchBinningArgs bench_binning;
+  add_bench_binning(app, bench_binning);
+  RenderArgs render;
+  add_render(app, render);
+  app.add_subcommand("algorithms", "List the algorithms a scenario's \"algorithms\" key may name");
+  bool markdown = false;
+  CLI::App* keys = app.add_subcommand("keys", "List every scenario key with its type, default and meaning");
+  keys->add_flag("--markdown", markdown, "Markdown table (the one in README.md)");
+
+  const std::vector<std::string> command_line(argv, argv + argc);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+
+  try {
+    if (app.got_subcommand("simulate")) return run_simulate(simulate, command_line);
+    if (app.got_subcommand("run")) return run_run(run, command_line);
+    if (app.got_subcommand("sweep")) return run_sweep(sweep, command_line);
+    if (app.got_subcommand("tune-ekf")) return run_tune_ekf(tune_ekf, command_line);
+    if (app.got_subcommand("victoria-park")) return run_victoria_park_command(victoria_park, command_line);
+    if (app.got_subcommand("convert")) return run_convert_victoria_park(convert);
+    if (app.got_subcommand("scenario")) return run_scenario(scenario);
+    if (app.got_subcommand("rawlog")) return run_rawlog(rawlog);
+    if (app.got_subcommand("bench-binning")) return run_bench_binning(bench_binning, command_line);
+    if (app.got_subcommand("render")) return run_render(render);
+    if (app.got_subcommand("algorithms")) {
+      for (const AlgorithmEntry& a : algorithm_registry()) std::cout << a.name << "\n    " << a.help << '\n';
+      return 0;
+    }
+    if (app.got_subcommand("keys")) {
+      if (markdown) {
+        std::cout << scenario_keys_markdown();
+      } else {
+        const Scenario defaults;
+        for (const ScenarioKey& k : scenario_keys())
+          std::cout << k.key << " = " << k.read(defaults).dump() << "  (" << k.type << ")\n    " << k.help << '\n';
+      }
+      return 0;
+    }
+  } catch (const InputError& e) {
+    std::cerr << "relslam: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "relslam: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace relslam::eval

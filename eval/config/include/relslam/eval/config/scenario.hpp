@@ -1,0 +1,72 @@
+#pragma once
+// An experiment definition: what to simulate, which algorithms to run, what to write.
+// Loaded from scenarios/*.json (scenario_loading.hpp); every key and its default are listed by
+// scenario_keys() (scenario_keys.hpp).
+
+#include "relslam/eval/config/binning_bench_options.hpp"
+#include "relslam/eval/config/ekf2d_options.hpp"
+#include "relslam/eval/config/ekf6d_options.hpp"
+#include "relslam/eval/config/victoria_park_options.hpp"
+#include "relslam/point/options.hpp"
+#include "relslam/sim/options.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+enum class ScenarioKind {
+  Simulation,        // simulate a path and run the algorithms on it
+  BinningBenchmark,  // the synthetic RltBinning benchmark S-BIN (thesis Figs 111–116)
+  VictoriaPark,      // the Victoria Park data set (thesis 6.8), run by relslam victoria-park
+};
+
+// What `relslam simulate` writes besides ground truth and the manifest.
+struct OutputOptions {
+  // observations.csv, one row per detection: 2 million rows (~90 MB) for one loop at
+  // density 550, so long runs may turn it off.
+  bool observations_csv = true;
+  bool rawlog = true;  // observations.rawlog for MRPT tools
+  // Landmark ids in the rawlog: the true ids (known association, how the thesis fed the
+  // EKF) or -1 so a filter must associate by itself.
+  bool rawlog_landmark_ids = true;
+  // gzip the rawlog; MRPT reads both. Off because compressing costs more than writing.
+  bool rawlog_gzip = false;
+};
+
+// One parameter of a sweep and the values it takes (read by `relslam sweep`).
+struct SweepAxis {
+  std::string key;
+  std::vector<nlohmann::json> values;
+};
+
+// A named set of key values (a row of the thesis's constant-comparison figures, 120-126):
+// `relslam sweep` runs each variant as one value of the axis "variant".
+struct Variant {
+  std::string name;
+  std::vector<std::pair<std::string, nlohmann::json>> settings;  // scenario key -> value
+};
+
+struct Scenario {
+  std::string name;         // defaults to the file name without extension
+  std::string description;  // what the experiment is for (thesis figures)
+  ScenarioKind kind = ScenarioKind::Simulation;
+  std::uint64_t seed = 1;   // the only source of randomness of a run
+  sim::SimOptions sim;
+  std::vector<std::string> algorithms;
+  point::PointSlamOptions relative_point;  // the Relative Point algorithm's constants
+  Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
+  Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
+  VictoriaParkOptions victoria_park;       // kind victoria_park only
+  BinningBenchOptions binning_bench;       // S-BIN only (kind binning_benchmark)
+  OutputOptions output;
+  std::vector<SweepAxis> sweep;
+  std::vector<Variant> variants;
+};
+
+}  // namespace relslam::eval

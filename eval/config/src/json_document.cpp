@@ -1,0 +1,150 @@
+#include "relslam/eval/config/json_document.hpp"
+
+#include "relslam/eval/config/input_error.hpp"
+
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <vector>
+
+namespace relslam::eval {
+namespace {
+
+// An input iterator over the text that counts the newlines the parser has consumed, so the
+// SAX callbacks can ask which line they are on. nlohmann's lexer reads strictly forwards.
+class LineCountingIterator {
+ public:
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+
+  LineCountingIterator(const char* p, int* line) : p_(p), line_(line) {}
+  reference operator*() const { return *p_; }
+  LineCountingIterator& operator++() {
+    if (*p_ == '\n') ++*line_;
+    ++p_;
+    return *this;
+  }
+  bool operator==(const LineCountingIterator& o) const { return p_ == o.p_; }
+  bool operator!=(const LineCountingIterator& o) const { return p_ != o.p_; }
+
+ private:
+  const char* p_;
+  int* line_;
+};
+
+// Records the line of every key and array element by dotted path.
+class LineRecorder : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  LineRecorder(const int* line, std::string file, std::map<std::string, int>* lines)
+      : line_(line), file_(std::move(file)), lines_(lines) {}
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    value();
+    frames_.push_back({false, 0, {}});
+    return true;
+  }
+  bool key(string_t& k) override {
+    const std::string path = join(k);
+    if (lines_->count(path))
+      throw InputError(file_, *line_, path, "key appears twice (first on line " + std::to_string(lines_->at(path)) + ")");
+    (*lines_)[path] = *line_;
+    frames_.back().current_key = path;
+    return true;
+  }
+  bool end_object() override {
+    frames_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    value();
+    frames_.push_back({true, -1, {}});
+    return true;
+  }
+  bool end_array() override {
+    frames_.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+ private:
+  struct Frame {
+    bool array;
+    int index;
+    std::string current_key;  // for objects: path of the key being read; for arrays: own path
+  };
+
+  std::string join(const std::string& k) const {
+    const std::string parent = frames_.size() >= 2 ? frames_[frames_.size() - 2].current_key : "";
+    return parent.empty() ? k : parent + "." + k;
+  }
+  // Called for every value: inside an array it names the element "path[i]".
+  bool value() {
+    if (!frames_.empty() && frames_.back().array) {
+      Frame& f = frames_.back();
+      ++f.index;
+      const std::string own = frames_.size() >= 2 ? frames_[frames_.size() - 2].current_key : "";
+      f.current_key = own + "[" + std::to_string(f.index) + "]";
+      (*lines_)[f.current_key] = *line_;
+    }
+    return true;
+  }
+
+  const int* line_;
+  std::string file_;
+  std::map<std::string, int>* lines_;
+  std::vector<Frame> frames_;
+};
+
+int line_at_byte(const std::string& text, std::size_t byte) {
+  int line = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i)
+    if (text[i] == '\n') ++line;
+  return line;
+}
+
+// nlohmann's messages start with "[json.exception.parse_error.101] parse error at line 3,
+// column 5: "; we print our own "file:line:" prefix, so keep only what follows.
+std::string strip_prefix(const std::string& message) {
+  const auto colon = message.find(": ");
+  return colon == std::string::npos ? message : message.substr(colon + 2);
+}
+
+}  // namespace
+
+JsonDocument parse_json(const std::string& text, const std::string& file) {
+  JsonDocument doc;
+  doc.file = file;
+  try {
+    doc.value = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(file, line_at_byte(text, e.byte > 0 ? e.byte - 1 : 0), "", "malformed JSON: " + strip_prefix(e.what()));
+  }
+  int line = 1;
+  LineRecorder recorder(&line, file, &doc.lines);
+  const char* begin = text.data();
+  nlohmann::json::sax_parse(LineCountingIterator(begin, &line), LineCountingIterator(begin + text.size(), &line),
+                            &recorder);
+  return doc;
+}
+
+JsonDocument read_json_file(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path.string(), 0, "", "file not found");
+  if (std::filesystem::is_directory(path)) throw InputError(path.string(), 0, "", "is a directory, not a JSON file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), 0, "", "cannot open file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return parse_json(buffer.str(), path.string());
+}
+
+}  // namespace relslam::eval

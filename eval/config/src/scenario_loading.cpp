@@ -1,0 +1,241 @@
+#include "relslam/eval/config/scenario_loading.hpp"
+
+#include "relslam/eval/config/json_document.hpp"
+#include "relslam/eval/config/scenario_keys.hpp"
+
+#include <algorithm>
+
+namespace relslam::eval {
+namespace {
+
+using nlohmann::json;
+
+// Levenshtein distance, for "did you mean" on unknown keys.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string unknown_key_problem(const std::string& key) {
+  std::string best;
+  std::size_t best_distance = 4;  // suggest only near misses
+  for (const ScenarioKey& k : scenario_keys()) {
+    const std::size_t d = edit_distance(key, k.key);
+    if (d < best_distance) best_distance = d, best = k.key;
+  }
+  return "unknown key" + (best.empty() ? std::string() : "; did you mean \"" + best + "\"?") +
+         " (relslam keys lists them all)";
+}
+
+bool is_group(const std::string& path) {
+  const std::string prefix = path + ".";
+  return std::any_of(scenario_keys().begin(), scenario_keys().end(),
+                     [&](const ScenarioKey& k) { return k.key.compare(0, prefix.size(), prefix) == 0; });
+}
+
+class Loader {
+ public:
+  explicit Loader(Scenario& scenario) : s_(scenario) {}
+
+  void apply_document(const JsonDocument& doc) {
+    if (!doc.value.is_object()) throw InputError(doc.file, 1, "", "a scenario must be a JSON object");
+    walk(doc, doc.value, "");
+  }
+
+  void apply_override(const Override& o) {
+    const std::string where = "--set";
+    for (const char* grid : {"sweep", "variants"})
+      if (o.key == grid || o.key.rfind(std::string(grid) + ".", 0) == 0)
+        throw InputError(where, 0, o.key, "sweeps and variants are set in the scenario file or with relslam sweep --param");
+    const ScenarioKey* key = find_scenario_key(o.key);
+    if (!key) throw InputError(where, 0, o.key, unknown_key_problem(o.key));
+    store(*key, override_value(*key, o.value), {where, 0});
+  }
+
+  const std::map<std::string, KeyOrigin>& origins() const { return origins_; }
+
+ private:
+  void walk(const JsonDocument& doc, const json& object, const std::string& prefix) {
+    for (const auto& [name, value] : object.items()) {
+      const std::string path = prefix.empty() ? name : prefix + "." + name;
+      const int line = doc.line_of(path);
+      if (path == "sweep") {
+        read_sweep(doc, value);
+      } else if (path == "variants") {
+        read_variants(doc, value);
+      } else if (const ScenarioKey* key = find_scenario_key(path)) {
+        store(*key, value, {doc.file, line});
+      } else if (is_group(path)) {
+        if (!value.is_object()) throw InputError(doc.file, line, path, "expected an object of keys, got " + value.dump());
+        walk(doc, value, path);
+      } else {
+        throw InputError(doc.file, line, path, unknown_key_problem(path));
+      }
+    }
+  }
+
+  // "sweep": {"sim.density": [100, 150]} — each axis must name a key and hold values that key
+  // accepts, so a sweep fails when the file is loaded, not hours into a batch.
+  void read_sweep(const JsonDocument& doc, const json& sweep) {
+    if (!sweep.is_object())
+      throw InputError(doc.file, doc.line_of("sweep"), "sweep", "expected an object of key: [values]");
+    for (const auto& [name, values] : sweep.items()) {
+      const std::string path = "sweep." + name;
+      const int line = doc.line_of(path);
+      if (!values.is_array() || values.empty()) throw InputError(doc.file, line, path, "expected a non-empty list of values");
+      for (const json& v : values) check_grid_value(doc.file, line, path, name, v);
+      s_.sweep.push_back({name, values.get<std::vector<json>>()});
+      origins_[path] = {doc.file, line};
+    }
+  }
+
+  // "variants": {"ar1": {"relative_point.final_group.accuracy_reduction": 1}, ...}
+  void read_variants(const JsonDocument& doc, const json& variants) {
+    if (!variants.is_object())
+      throw InputError(doc.file, doc.line_of("variants"), "variants", "expected an object of name: {key: value}");
+    for (const auto& [name, settings] : variants.items()) {
+      const std::string path = "variants." + name;
+      const int line = doc.line_of(path);
+      if (!settings.is_object()) throw InputError(doc.file, line, path, "expected an object of key: value");
+      Variant variant{name, {}};
+      for (const auto& [key, value] : settings.items()) {
+        check_grid_value(doc.file, line, path + "." + key, key, value);
+        variant.settings.emplace_back(key, value);
+        origins_[path + "." + key] = {doc.file, line};
+      }
+      s_.variants.push_back(variant);
+    }
+  }
+
+  // A value a sweep or variant gives `key` must be one the key accepts, so a bad grid fails
+  // when the file is loaded, not hours into a batch.
+  void check_grid_value(const std::string& file, int line, const std::string& path, const std::string& key_name,
+                        const json& value) const {
+    const ScenarioKey* key = find_scenario_key(key_name);
+    if (!key || key_name == "seed" || key_name == "name")
+      throw InputError(file, line, path, "'" + key_name + "' is not a key that can be varied");
+    Scenario probe = s_;
+    const std::string problem = key->write(probe, value);
+    if (!problem.empty()) throw InputError(file, line, path, problem);
+  }
+
+  static json override_value(const ScenarioKey& key, const std::string& raw) {
+    if (key.text_value) {
+      if (key.key == "algorithms" && (raw.empty() || raw.front() != '[')) {
+        json list = json::array();
+        for (std::size_t start = 0; start <= raw.size() && !raw.empty();) {
+          const std::size_t comma = std::min(raw.find(',', start), raw.size());
+          list.push_back(raw.substr(start, comma - start));
+          start = comma + 1;
+        }
+        return list;
+      }
+      if (raw.empty() || (raw.front() != '"' && raw.front() != '[')) return raw;
+    }
+    try {
+      return json::parse(raw);
+    } catch (const json::parse_error&) {
+      return raw;  // not JSON: the key's own check says what it expected
+    }
+  }
+
+  void store(const ScenarioKey& key, const json& value, KeyOrigin origin) {
+    const std::string problem = key.write(s_, value);
+    if (!problem.empty()) throw InputError(origin.file, origin.line, key.key, problem);
+    origins_[key.key] = std::move(origin);
+  }
+
+  Scenario& s_;
+  std::map<std::string, KeyOrigin> origins_;
+};
+
+void check_semantics(const LoadedScenario& loaded) {
+  std::vector<InputError> errors;
+  for (const OptionIssue& issue : sim::check(loaded.scenario.sim)) errors.push_back(loaded.error("sim." + issue.field, issue.problem));
+  for (const OptionIssue& issue : point::check(loaded.scenario.relative_point))
+    errors.push_back(loaded.error("relative_point." + issue.field, issue.problem));
+  for (const OptionIssue& issue : check(loaded.scenario.ekf6d)) errors.push_back(loaded.error("ekf6d." + issue.field, issue.problem));
+  for (const OptionIssue& issue : check(loaded.scenario.ekf2d)) errors.push_back(loaded.error("ekf2d." + issue.field, issue.problem));
+  for (const OptionIssue& issue : check(loaded.scenario.victoria_park.filter))
+    errors.push_back(loaded.error("victoria_park." + issue.field, issue.problem));
+  try {
+    parse_scan_window(loaded.scenario.victoria_park.window, "victoria_park.window");
+  } catch (const InputError& e) {
+    errors.push_back(loaded.error("victoria_park.window", e.problem()));
+  }
+  for (const OptionIssue& issue : check(loaded.scenario.binning_bench))
+    errors.push_back(loaded.error("binning_bench." + issue.field, issue.problem));
+  if (errors.empty()) return;
+  if (errors.size() == 1) throw errors.front();
+  // Report every problem at once; the first one is the error's own location.
+  std::string all;
+  for (const InputError& e : errors) all += std::string("\n  ") + e.what();
+  const InputError& first = errors.front();
+  throw InputError(first.file(), first.line(), first.field(),
+                   first.problem() + "\n" + std::to_string(errors.size()) + " problems in all:" + all);
+}
+
+LoadedScenario build(const JsonDocument& doc, const std::vector<Override>& overrides) {
+  LoadedScenario loaded;
+  loaded.file = doc.file;
+  loaded.scenario.name = std::filesystem::path(doc.file).stem().string();
+  Loader loader(loaded.scenario);
+  loader.apply_document(doc);
+  for (const Override& o : overrides) loader.apply_override(o);
+  loaded.origins = loader.origins();
+  check_semantics(loaded);
+  return loaded;
+}
+
+}  // namespace
+
+Override parse_override(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) throw InputError("--set", 0, text, "expected key=value, e.g. sim.density=50");
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+InputError LoadedScenario::error(const std::string& key, const std::string& problem) const {
+  const auto it = origins.find(key);
+  if (it == origins.end()) return InputError(file, 0, key, problem + " (default value)");
+  return InputError(it->second.file, it->second.line, key, problem);
+}
+
+LoadedScenario parse_scenario(const std::string& text, const std::string& file, const std::vector<Override>& overrides) {
+  return build(parse_json(text, file), overrides);
+}
+
+LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<Override>& overrides) {
+  return build(read_json_file(file), overrides);
+}
+
+namespace {
+
+std::vector<Override> overrides_of(const std::vector<std::string>& set) {
+  std::vector<Override> overrides;
+  for (const std::string& text : set) overrides.push_back(parse_override(text));
+  return overrides;
+}
+
+}  // namespace
+
+LoadedScenario load_with_overrides(const std::string& file, const std::vector<std::string>& set) {
+  return load_scenario(file, overrides_of(set));
+}
+
+LoadedScenario parse_scenario_with_overrides(const std::string& text, const std::string& name,
+                                             const std::vector<std::string>& set) {
+  return parse_scenario(text, name, overrides_of(set));
+}
+
+}  // namespace relslam::eval

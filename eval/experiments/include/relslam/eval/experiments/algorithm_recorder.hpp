@@ -1,0 +1,70 @@
+#pragma once
+// The one recorder of an algorithm's run, whatever the algorithm: it times each step, scores
+// the estimate against the frame's truth, writes iterations.csv (the shared score columns,
+// then the algorithm's own), trajectory.tum and landmarks.csv, hashes the frames it was given,
+// and turns an exception, a non-finite estimate or the time budget into a recorded status
+// instead of a crash (the batch goes on).
+
+#include "relslam/eval/algorithms/algorithm.hpp"
+#include "relslam/eval/experiments/iteration_table.hpp"
+#include "relslam/eval/io/tum_writer.hpp"
+#include "relslam/eval/metrics/landmark_truth.hpp"
+#include "relslam/eval/metrics/run_scorer.hpp"
+#include "relslam/eval/metrics/run_summary.hpp"
+
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+// A running hash of the frames an algorithm was given (iteration, point and odometry bytes), so
+// a run can show that every algorithm saw the very same observation stream.
+class FrameDigest {
+ public:
+  void add(const ObservationFrame& frame);
+  std::string hex() const;
+
+ private:
+  std::uint64_t state_ = 0xcbf29ce484222325ULL;
+};
+
+class AlgorithmRecorder {
+ public:
+  // Writes into dir (created).
+  AlgorithmRecorder(std::unique_ptr<Algorithm> algorithm, const LandmarkTruth& truth, const std::filesystem::path& dir);
+
+  const std::string& name() const { return algorithm_->name(); }
+  void step(const ObservationFrame& observation, const TruthFrame& truth);
+  // Closes the files, writes landmarks.csv; the row for summary.csv.
+  SummaryRow finish();
+  // The scores over the first `iterations` iterations only (after finish()), to compare with a
+  // run that stopped earlier.
+  SummaryRow summary_over(int iterations) const;
+  // The estimated pose (world_T_robot, our axes) of every iteration processed so far.
+  const std::vector<Rigid3>& trajectory() const { return scorer_.estimates(); }
+  // The landmarks on its map now (world frame, our axes).
+  std::vector<Eigen::Vector3d> map() const;
+  const Algorithm& algorithm() const { return *algorithm_; }
+
+ private:
+  bool running() const { return status_.kind == RunStatus::Kind::NotRun || status_.kind == RunStatus::Kind::Ok; }
+  void check_budget(int k, double runtime_ms);
+
+  std::unique_ptr<Algorithm> algorithm_;
+  std::filesystem::path dir_;
+  std::vector<bool> truth_dynamic_;  // by true landmark id
+  RunScorer scorer_;
+  IterationTable iterations_;
+  TumWriter trajectory_;
+  FrameDigest digest_;
+  RunStatus status_;  // Failed or Stopped ends the run: later frames are hashed, not processed
+  std::vector<CsvField> own_fields_;
+  std::deque<double> recent_;  // the last budget.iterations step times, ms
+  double recent_sum_ = 0;
+};
+
+}  // namespace relslam::eval

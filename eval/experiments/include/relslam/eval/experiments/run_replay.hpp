@@ -1,0 +1,39 @@
+#pragma once
+// A simulated run folder played again: its manifest holds the resolved scenario and seed, and a
+// run is deterministic, so feeding the same frames to the same algorithm rebuilds its state at
+// any iteration exactly — the groups, owners and levels that run folders do not store. Used by
+// `relslam render`.
+
+#include "relslam/eval/io/map_render.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace relslam::eval {
+
+class RunReplay {
+ public:
+  // Throws InputError when `run_dir` has no manifest.json of a simulated run (relslam run or
+  // simulate), or `algorithm` is not one the run can replay (relative_point, ekf6d).
+  RunReplay(const std::filesystem::path& run_dir, const std::string& algorithm);
+  RunReplay(RunReplay&&) noexcept;
+  ~RunReplay();
+
+  int iterations() const;
+  // Runs the algorithm up to and including iteration k (never backwards: InputError) and
+  // describes that moment.
+  RenderScene scene_at(int k);
+  // The true world and the true path up to iteration `last`, without running the algorithm:
+  // what a video's fixed view is fitted to.
+  RenderScene world_outline(int last) const;
+  // Where the replayed pose at iteration k differs from the run's trajectory.tum by more than
+  // rounding: a message (the binary or the scenario changed since the run), else empty.
+  std::string check_against_recorded(int k) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace relslam::eval

@@ -1,0 +1,144 @@
+#include "relslam/eval/experiments/algorithm_recorder.hpp"
+
+#include "relslam/eval/io/csv_writer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace relslam::eval {
+namespace {
+
+const std::filesystem::path& created(const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace
+
+void FrameDigest::add(const ObservationFrame& frame) {
+  // FNV-1a over the iteration and the raw bytes of the points.
+  auto mix = [this](const void* data, std::size_t n) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) state_ = (state_ ^ bytes[i]) * 0x100000001b3ULL;
+  };
+  mix(&frame.iteration, sizeof frame.iteration);
+  for (const Eigen::Vector3d& p : frame.points) mix(p.data(), 3 * sizeof(double));
+  if (frame.odometry) {
+    mix(frame.odometry->rotation.data(), 9 * sizeof(double));
+    mix(frame.odometry->translation.data(), 3 * sizeof(double));
+  }
+}
+
+std::string FrameDigest::hex() const {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(state_));
+  return text;
+}
+
+AlgorithmRecorder::AlgorithmRecorder(std::unique_ptr<Algorithm> algorithm, const LandmarkTruth& truth,
+                                     const std::filesystem::path& dir)
+    : algorithm_(std::move(algorithm)),
+      dir_(created(dir)),
+      truth_dynamic_(truth.positions.size(), false),
+      scorer_(truth),
+      iterations_(dir_ / "iterations.csv", algorithm_->iteration_columns()),
+      trajectory_(dir_ / "trajectory.tum") {
+  for (int id : truth.dynamic_ids) truth_dynamic_[id] = true;
+}
+
+void AlgorithmRecorder::step(const ObservationFrame& observation, const TruthFrame& truth) {
+  digest_.add(observation);
+  if (!running()) return;  // failed or stopped: the rest of the stream is not processed
+  const int k = observation.iteration;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    algorithm_->step(observation, truth);
+  } catch (const std::exception& e) {  // a bad frame ends this algorithm's run, not the batch
+    status_ = RunStatus::failed(k, e.what());
+    return;
+  }
+  const double runtime_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  status_ = RunStatus::ok();
+
+  // Scoring, outside the timed region.
+  algorithm_->read_out();
+  const Rigid3 estimate = algorithm_->pose();
+  const std::vector<int>& changed = algorithm_->changed();
+  const bool finite = estimate.translation.allFinite() && estimate.rotation.allFinite() &&
+                      std::all_of(changed.begin(), changed.end(), [&](int id) {
+                        const auto p = algorithm_->position(id);
+                        return !p || p->allFinite();
+                      });
+  if (!finite) {
+    status_ = RunStatus::failed(k, "the estimate became NaN");
+    return;
+  }
+  scorer_.associate(algorithm_->assignment(), truth.landmark_ids);
+  const IterationScore s =
+      scorer_.score(estimate, truth, changed, [&](int id) { return algorithm_->position(id); }, runtime_ms);
+  own_fields_.clear();
+  algorithm_->iteration_fields(own_fields_);
+  iterations_.row(k, s, runtime_ms, observation.points.size(), own_fields_);
+  trajectory_.write(static_cast<double>(k), estimate);
+  check_budget(k, runtime_ms);
+}
+
+void AlgorithmRecorder::check_budget(int k, double runtime_ms) {
+  const std::optional<TimeBudget> budget = algorithm_->time_budget();
+  if (!budget) return;
+  // The mean of the last budget->iterations steps, so neither one slow step nor a filter
+  // alternating slow and fast ones escapes the budget.
+  recent_.push_back(runtime_ms);
+  recent_sum_ += runtime_ms;
+  if (static_cast<int>(recent_.size()) > budget->iterations) {
+    recent_sum_ -= recent_.front();
+    recent_.pop_front();
+  }
+  if (static_cast<int>(recent_.size()) == budget->iterations && recent_sum_ > budget->ms * budget->iterations)
+    status_ = RunStatus::stopped(k, "over the time budget (" + std::to_string(static_cast<int>(budget->ms)) +
+                                        " ms) on average over " + std::to_string(budget->iterations) + " iterations");
+}
+
+SummaryRow AlgorithmRecorder::finish() {
+  iterations_.close();
+  trajectory_.close();
+  CsvWriter landmarks(dir_ / "landmarks.csv", algorithm_->landmark_columns());
+  algorithm_->landmark_rows(
+      [&](int id) {
+        LandmarkScore s;
+        s.true_id = scorer_.majority_truth(id);
+        s.error = scorer_.error_of(id);
+        // Without truth landmarks (a rawlog run) the ids are the log's own, and nothing is known to move.
+        s.true_dynamic = s.true_id >= 0 && static_cast<std::size_t>(s.true_id) < truth_dynamic_.size() &&
+                         truth_dynamic_[s.true_id];
+        return s;
+      },
+      [&](const std::vector<CsvField>& fields) { landmarks.row_fields(fields); });
+  landmarks.close();
+  const std::vector<int> on_map = algorithm_->map_ids();
+  SummaryRow row = summary_over(static_cast<int>(scorer_.scored()));
+  row.landmarks_on_map = static_cast<int>(on_map.size());
+  row.duplicates = scorer_.duplicates(on_map);
+  row.peak_rss_mb = peak_rss_mb();
+  return row;
+}
+
+SummaryRow AlgorithmRecorder::summary_over(int iterations) const {
+  SummaryRow row;
+  row.algorithm = name();
+  row.status = status_;
+  // An algorithm that gave up without throwing goes on stepping; its run is still a failure.
+  if (running() && !algorithm_->failure().empty()) row.status = RunStatus::failed(-1, algorithm_->failure());
+  scorer_.fill(row, static_cast<std::size_t>(iterations));
+  row.input_digest = digest_.hex();
+  return row;
+}
+
+std::vector<Eigen::Vector3d> AlgorithmRecorder::map() const {
+  std::vector<Eigen::Vector3d> out;
+  for (int id : algorithm_->map_ids()) out.push_back(*algorithm_->position(id));
+  return out;
+}
+
+}  // namespace relslam::eval

@@ -1,0 +1,97 @@
+#include "relslam/eval/experiments/experiment.hpp"
+
+#include "relslam/eval/algorithms/registry.hpp"
+#include "relslam/eval/io/progress.hpp"
+#include "relslam/eval/sources/simulation_source.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace relslam::eval {
+
+void require_algorithms(const LoadedScenario& loaded) {
+  if (loaded.scenario.algorithms.empty())
+    throw loaded.error("algorithms", "the scenario lists no algorithm to run; add one, e.g. --set algorithms=relative_point");
+  check_algorithm_names(loaded);
+}
+
+Experiment::Experiment(const LoadedScenario& loaded, FrameSource& source, const std::filesystem::path& out)
+    : source_(source), out_(out) {
+  require_algorithms(loaded);
+  const AlgorithmContext context{loaded.scenario, source.sensor()};
+  for (const std::string& name : loaded.scenario.algorithms)
+    recorders_.push_back(std::make_unique<AlgorithmRecorder>(make_algorithm(name, context), source.truth(), out / name));
+}
+
+ExperimentResult Experiment::run(bool progress) {
+  const auto start = std::chrono::steady_clock::now();
+  Progress bar(source_.label(), source_.frames(), progress);
+  source_.stream([&](const ObservationFrame& observation, const TruthFrame& truth) {
+    for (auto& recorder : recorders_) recorder->step(observation, truth);
+    bar.update(observation.iteration + 1);
+  });
+  ExperimentResult result;
+  for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
+  // The Relative Point / EKF ratios, over the iterations both processed: against the 6D EKF,
+  // or else the planar one with odometry.
+  auto index_of = [&](const char* name) {
+    for (std::size_t i = 0; i < recorders_.size(); ++i)
+      if (recorders_[i]->name() == name) return static_cast<int>(i);
+    return -1;
+  };
+  const int rp = index_of("relative_point");
+  int ekf = index_of("ekf6d");
+  if (ekf < 0) ekf = index_of("ekf2d");
+  if (rp >= 0 && ekf >= 0) {
+    const int common = std::min(result.rows[rp].iterations, result.rows[ekf].iterations);
+    if (common > 0) result.ratio = ratio_row(recorders_[rp]->summary_over(common), recorders_[ekf]->summary_over(common));
+  }
+  write_summary(out_ / "summary.csv", result.rows, result.ratio);
+  bar.finish();
+  result.iterations = static_cast<int>(source_.frames());
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.source = source_.describe();
+  return result;
+}
+
+ExperimentResult simulate_and_run(const LoadedScenario& loaded, const std::filesystem::path& out, bool progress) {
+  require_algorithms(loaded);
+  SimulationSource source(loaded);
+  source.record_into(out);
+  Experiment experiment(loaded, source, out);
+  return experiment.run(progress);
+}
+
+ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& files, const std::filesystem::path& out,
+                               bool progress) {
+  require_algorithms(loaded);
+  RawlogSource source(files);
+  const Scenario& scenario = loaded.scenario;
+  if (std::find(scenario.algorithms.begin(), scenario.algorithms.end(), "ekf6d") != scenario.algorithms.end() &&
+      scenario.ekf6d.association == EkfAssociation::Known && !source.ids_everywhere())
+    throw loaded.error("ekf6d.association", "the rawlog does not give every landmark an id; use jcbb or nn");
+  Experiment experiment(loaded, source, out);
+  return experiment.run(progress);
+}
+
+void print_results(const ExperimentResult& result, const std::string& title) {
+  std::printf("%s: %d iterations\n", title.c_str(), result.iterations);
+  std::printf("%-20s %-8s %10s %14s %10s %10s %10s\n", "algorithm", "status", "map size", "mean lm err", "pos err",
+              "median ms", "p95 ms");
+  auto line = [](const SummaryRow& r) {
+    std::printf("%-20s %-8s %10d %14.4g %10.4g %10.4g %10.4g\n", r.algorithm.c_str(),
+                std::string(to_string(r.status.kind)).c_str(), r.landmarks_on_map, r.final_mean_landmark_error,
+                r.final_position_error, r.runtime.median_ms, r.runtime.p95_ms);
+  };
+  for (const SummaryRow& r : result.rows) line(r);
+  if (result.ratio) {
+    const SummaryRow& r = *result.ratio;
+    std::printf("%-20s %-8s %10s %14.3g %10.3g %10.3g %10.3g   (over %d iterations)\n", r.algorithm.c_str(), "ratio", "",
+                r.final_mean_landmark_error, r.final_position_error, r.runtime.median_ms, r.runtime.p95_ms, r.iterations);
+  }
+  for (const SummaryRow& r : result.rows)
+    if (!r.status.is_ok()) std::printf("%s: %s\n", r.algorithm.c_str(), r.status.text().c_str());
+}
+
+}  // namespace relslam::eval

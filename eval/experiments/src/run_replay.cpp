@@ -1,0 +1,178 @@
+#include "relslam/eval/experiments/run_replay.hpp"
+
+#include "relslam/eval/algorithms/registry.hpp"
+#include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/sources/simulated_world.hpp"
+#include "relslam/point/rlt_mapper.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace relslam::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json read_manifest(const fs::path& run_dir) {
+  const fs::path file = run_dir / "manifest.json";
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string(), 0, "", "not found: render needs the folder of a relslam run");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file.string(), 0, "", std::string("not a relslam manifest: ") + e.what());
+  }
+}
+
+// The pose at iteration k in a TUM file ("t x y z qx qy qz qw", t = iteration), if it has one.
+std::optional<Rigid3> recorded_pose(const fs::path& tum, int k) {
+  std::ifstream in(tum);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    double t, x, y, z, qx, qy, qz, qw;
+    if (!(row >> t >> x >> y >> z >> qx >> qy >> qz >> qw)) continue;
+    if (static_cast<int>(std::lround(t)) == k) return Rigid3::from(Eigen::Quaterniond(qw, qx, qy, qz), {x, y, z});
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+struct RunReplay::State {
+  fs::path run_dir;
+  std::string algorithm;
+  LoadedScenario loaded;
+  sim::Simulator simulator;
+  RangeBearingSensor sensor;
+  std::optional<point::RltMapper> mapper;  // relative_point
+  std::unique_ptr<Algorithm> filter;       // ekf6d
+  bool filter_failed = false;              // it threw: its last good state is shown from then on
+  int next = 0;  // the next iteration to feed
+  std::vector<Eigen::Vector3d> true_path, estimated_path;
+  Rigid3 true_pose, estimated_pose;
+
+  State(const fs::path& dir, std::string name, LoadedScenario scenario)
+      : run_dir(dir), algorithm(std::move(name)), loaded(std::move(scenario)), simulator(build_simulator(loaded)),
+        sensor(sensor_of(loaded.scenario.sim)) {}
+
+  void feed(const sim::SimFrame& frame) {
+    if (mapper) {
+      mapper->step(frame.observation);
+      estimated_pose = mapper->pose();
+    } else if (!filter_failed) {
+      try {
+        filter->step(frame.observation, frame.truth);
+        filter->read_out();
+        estimated_pose = filter->pose();
+      } catch (const std::exception&) {
+        filter_failed = true;  // as the run recorded it: the filter's state before the failure
+      }
+    }
+    true_pose = frame.truth.world_T_robot;
+    true_path.push_back(true_pose.translation);
+    estimated_path.push_back(estimated_pose.translation);
+  }
+
+  void describe_map(RenderScene& scene) const {
+    if (!mapper) {
+      for (int id : filter->map_ids()) scene.landmarks.push_back({*filter->position(id), id, -1, true, false});
+      return;
+    }
+    std::vector<Eigen::Vector3d> sum(mapper->groups().size(), Eigen::Vector3d::Zero());
+    std::vector<int> count(mapper->groups().size(), 0);
+    for (const point::RltPoint& p : mapper->points()) {
+      if (!p.has_global || p.merged) continue;
+      scene.landmarks.push_back({p.global, p.id, p.owner, p.final_grouped || p.level3_grouped, p.dynamic});
+      if (p.owner >= 0 && !p.dynamic) {
+        sum[p.owner] += p.global;
+        ++count[p.owner];
+      }
+    }
+    for (const point::RltGroup& g : mapper->groups())
+      if (count[g.id()] > 0)
+        scene.groups.push_back({g.id(), g.level() != point::GroupLevel::Temporary, sum[g.id()] / count[g.id()]});
+  }
+};
+
+RunReplay::RunReplay(const fs::path& run_dir, const std::string& algorithm) {
+  const nlohmann::json manifest = read_manifest(run_dir);
+  const fs::path file = run_dir / "manifest.json";
+  if (!manifest.contains("scenario") || manifest.contains("rawlog") || manifest.contains("victoria_park"))
+    throw InputError(file.string(), 0, "", "render replays simulated runs (relslam run SCENARIO); this one is not");
+  LoadedScenario loaded = parse_scenario_with_overrides(manifest["scenario"].dump(), file.string(), {});
+  const auto& listed = loaded.scenario.algorithms;
+  if (algorithm != "relative_point" && algorithm != "ekf6d")
+    throw InputError("", 0, "--algorithm", "render draws relative_point or ekf6d, not " + algorithm);
+  if (std::find(listed.begin(), listed.end(), algorithm) == listed.end())
+    throw InputError(file.string(), 0, "--algorithm", "the run did not include " + algorithm);
+  state_ = std::make_unique<State>(run_dir, algorithm, std::move(loaded));
+  const Scenario& scenario = state_->loaded.scenario;
+  if (algorithm == "relative_point") {
+    state_->mapper.emplace(scenario.relative_point);
+  } else {
+    state_->filter = make_algorithm(algorithm, {scenario, state_->sensor});
+  }
+}
+
+RunReplay::RunReplay(RunReplay&&) noexcept = default;
+RunReplay::~RunReplay() = default;
+
+int RunReplay::iterations() const { return state_->simulator.iterations(); }
+
+RenderScene RunReplay::scene_at(int k) {
+  State& s = *state_;
+  if (k < s.next - 1 || k >= iterations())
+    throw InputError("", 0, "--iteration",
+                     "must be in 0.." + std::to_string(iterations() - 1) + (k < s.next - 1 ? " and not go back" : "") +
+                         ", got " + std::to_string(k));
+  while (s.next <= k) s.feed(s.simulator.frame(s.next++));
+
+  RenderScene scene;
+  const sim::World& world = s.simulator.world();
+  for (int id = 0; id < world.size(); ++id) {
+    scene.true_points.push_back(world.position(id, k));
+    scene.true_dynamic.push_back(world.is_dynamic(id));
+  }
+  s.describe_map(scene);
+  scene.true_pose = s.true_pose;
+  scene.estimated_pose = s.estimated_pose;
+  scene.true_path = s.true_path;
+  scene.estimated_path = s.estimated_path;
+  const sim::Frustum& f = s.loaded.scenario.sim.frustum;
+  scene.frustum = {f.near, f.far, f.half_angle_rad};
+  int final_groups = 0;
+  for (const SceneGroup& g : scene.groups) final_groups += g.final;
+  scene.title = s.loaded.scenario.name + "  " + s.algorithm + "  iteration " + std::to_string(k) + "  map points " +
+                std::to_string(scene.landmarks.size()) +
+                (s.mapper ? "  groups " + std::to_string(scene.groups.size()) + " (" + std::to_string(final_groups) + " final)"
+                          : "");
+  return scene;
+}
+
+RenderScene RunReplay::world_outline(int last) const {
+  RenderScene scene;
+  scene.true_points = state_->simulator.world().anchors();
+  for (int k = 0; k <= last && k < iterations(); ++k)
+    scene.true_path.push_back(state_->simulator.path().world_T_robot(k).translation);
+  return scene;
+}
+
+std::string RunReplay::check_against_recorded(int k) const {
+  const State& s = *state_;
+  const fs::path tum = s.run_dir / s.algorithm / "trajectory.tum";
+  const std::optional<Rigid3> recorded = recorded_pose(tum, k);
+  if (!recorded) return "";  // the run stopped earlier or wrote no trajectory: nothing to compare
+  // TUM rows carry about 9 significant digits.
+  const double tolerance = 1e-6 * (1.0 + recorded->translation.norm());
+  const double gap = (recorded->translation - s.estimated_pose.translation).norm();
+  if (gap <= tolerance) return "";
+  return "the replayed pose at iteration " + std::to_string(k) + " is " + std::to_string(gap) + " units from " +
+         tum.string() + ": the run was made by another build or scenario, so the picture may not show it";
+}
+
+}  // namespace relslam::eval

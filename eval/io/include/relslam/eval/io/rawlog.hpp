@@ -1,0 +1,79 @@
+#pragma once
+// MRPT rawlogs: the per-iteration observation stream as MRPT's tools (rawlog-edit, kf-slam,
+// RawLogViewer) read it. This header hides MRPT: callers see only our types.
+
+#include "relslam/core/observation.hpp"
+#include "relslam/core/rigid.hpp"
+#include "relslam/eval/io/range_bearing.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace relslam::eval {
+
+struct RawlogMeasurement {
+  float range = 0;
+  float yaw_rad = 0;
+  float pitch_rad = 0;
+  std::int32_t landmark_id = -1;  // -1: unknown association
+};
+
+// One sensory frame (or, in observation-only files, one bearing-range observation).
+struct RawlogFrame {
+  int index = 0;            // 0-based, in file order
+  double timestamp_s = 0;   // MRPT time as seconds since the epoch
+  Rigid3 robot_T_sensor;    // MRPT's sensorLocationOnRobot, in MRPT's robot frame
+  std::vector<RawlogMeasurement> measurements;
+  // Odometry since the previous frame, when the file has any (MRPT's robot frame: x forward,
+  // y left, z up). In action-first files it is the action just before this frame; in the
+  // sensory-frame-first files MRPT's own simulator writes it is the action after the previous
+  // frame — the same motion, so frame k always pairs with ground-truth row k.
+  std::optional<Rigid3> odometry;
+};
+
+struct Rawlog {
+  enum class Format { ActionsSensoryFrames, ObservationsOnly };
+  Format format = Format::ActionsSensoryFrames;
+  // True for files written SF, action, SF, ... (MRPT's simul-landmarks). kf-slam drops their
+  // first frame, so its step k is our frame k + 1 (spec mrpt §0.7); we keep every frame.
+  bool sensory_frame_first = false;
+  int records = 0;                // serialized objects read
+  int skipped_observations = 0;   // observations of other types, ignored
+  RangeBearingSensor sensor;      // as the first bearing-range observation describes it
+  std::vector<RawlogFrame> frames;
+};
+
+// Reads plain or gzip files of either MRPT format. Throws InputError (file, record number,
+// problem) for a missing, foreign, truncated or empty file.
+Rawlog read_rawlog(const std::filesystem::path& path);
+
+// Robot-frame points (our axes: +x left, +y up, +z forward) of one frame, after applying
+// the sensor's pose on the robot. The algorithms' view of a rawlog.
+ObservationFrame observation_frame(const RawlogFrame& frame);
+
+// MRPT reads a timestamp of 0 as "no timestamp", so simulated runs put iteration k at this
+// time plus k seconds in rawlogs (2001-09-09 onwards); TUM files use plain k.
+inline constexpr double kSimulationEpoch_s = 1.0e9;
+
+// Writes action-first rawlogs (empty CActionCollection, then one sensory frame holding one
+// CObservationBearingRange per iteration), the order kf-slam pairs without an offset.
+class RawlogWriter {
+ public:
+  RawlogWriter(const std::filesystem::path& path, const RangeBearingSensor& sensor, bool gzip);
+  ~RawlogWriter();
+  RawlogWriter(const RawlogWriter&) = delete;
+  RawlogWriter& operator=(const RawlogWriter&) = delete;
+
+  // Points in our robot frame; landmark_ids parallel to frame.points, or empty for -1.
+  void write(const ObservationFrame& frame, const std::vector<int>& landmark_ids, double timestamp_s);
+  void close();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace relslam::eval

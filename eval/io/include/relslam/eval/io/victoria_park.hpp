@@ -1,0 +1,72 @@
+#pragma once
+// The Victoria Park data set (ACFR; the ASCII files of the RFS-SLAM distribution): laser scans
+// of tree trunks, vehicle speed and steering, GPS. Conventions in
+// ../shared/datasets/victoria_park/README.md and spec mrpt_ekf_rawlog_victoria.md §5.
+
+#include "relslam/eval/config/victoria_park_options.hpp"
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+// One tree as the detector reports it. Bearing in the laser's 0..π: 0 = to the right,
+// π/2 = straight ahead, π = to the left.
+struct TreeDetection {
+  double range = 0;     // m
+  double bearing = 0;   // rad
+  double diameter = 0;  // m
+};
+
+// The tree in the laser frame (x forward, y left; z = 0): bearing − π/2 is the vehicle bearing.
+Eigen::Vector2d laser_point(const TreeDetection& tree);
+
+struct LaserScan {
+  int index = 0;      // 1-based in the full log of 7,249 scans (the thesis's "iteration")
+  double time = 0;    // s, the data set's one clock (origin: the first GPS message)
+  std::vector<TreeDetection> trees;  // may be empty
+};
+
+struct VehicleInput {
+  double time = 0;
+  double speed = 0;     // m/s, rear-left wheel encoder
+  double steering = 0;  // rad
+};
+
+struct GpsFix {
+  double time = 0;
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  // m, the data set's start frame
+};
+
+struct VictoriaParkLog {
+  std::vector<LaserScan> scans;  // every scan of the log in time order, index = position + 1
+  int listed_scans = 0;          // of which Sensors_manager.txt lists (the rest come after it)
+  int detections = 0;            // rows of measurements.dat
+  std::vector<VehicleInput> inputs;
+  std::vector<GpsFix> gps;
+};
+
+// Reads measurements.dat, inputs.dat, gps.dat and Sensors_manager.txt in `dir`. Scan k is the
+// k-th laser line (sensor 3) of Sensors_manager.txt, its detections the rows of
+// measurements.dat at exactly its time; scans of measurements.dat after the last listed one
+// follow in time order. Throws InputError naming the file and line of anything malformed, a
+// detection at a time no scan has, or a missing file.
+VictoriaParkLog read_victoria_park(const std::filesystem::path& dir);
+
+// Where the data is: `flag` if given, else $RELSLAM_VICTORIA_PARK, else
+// ../shared/datasets/victoria_park (from the working directory, i.e. the repository root).
+std::filesystem::path victoria_park_dir(const std::string& flag = "");
+
+// Whether the filter keeps a detection.
+inline bool kept(const DetectionFilter& filter, const TreeDetection& tree) {
+  return filter.keeps(tree.range, tree.diameter);
+}
+
+// The scans of `log` inside the window; InputError when the window reaches past the log.
+std::vector<LaserScan> scans_in(const VictoriaParkLog& log, const ScanWindow& window, const std::string& field);
+
+}  // namespace relslam::eval

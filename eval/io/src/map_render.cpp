@@ -1,0 +1,219 @@
+#include "relslam/eval/io/map_render.hpp"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace relslam::eval {
+namespace {
+
+// Colours (BGR), after the thesis's renders: green RltPoint boxes, black final and red
+// temporary labels (Fig 127), true robot blue and estimated robot red (Figs 153–156).
+const cv::Scalar kBackground(255, 255, 255);
+const cv::Scalar kTruePoint(170, 170, 170);
+const cv::Scalar kTrueDynamic(0, 140, 255);
+const cv::Scalar kPointBox(0, 160, 0);
+const cv::Scalar kFinalLabel(0, 0, 0);
+const cv::Scalar kTemporaryLabel(0, 0, 220);
+const cv::Scalar kDynamicMark(200, 0, 200);
+const cv::Scalar kTrueRobot(220, 80, 0);
+const cv::Scalar kEstimatedRobot(0, 0, 230);
+const cv::Scalar kText(40, 40, 40);
+
+// The picture's two world axes for a view.
+Eigen::Vector2d plane(const Eigen::Vector3d& p, RenderView view) {
+  return view == RenderView::Top ? Eigen::Vector2d(p.z(), p.x()) : Eigen::Vector2d(p.z(), p.y());
+}
+
+// World (u, v) to pixels: u to the right, v up.
+class Projection {
+ public:
+  Projection(const RenderFrame& frame, const RenderOptions& options)
+      : frame_(frame),
+        scale_(std::max(options.width, options.height) / frame.span),
+        half_w_(options.width / 2.0),
+        half_h_(options.height / 2.0),
+        view_(options.view) {}
+  cv::Point operator()(const Eigen::Vector3d& p) const { return pixel(plane(p, view_)); }
+  cv::Point pixel(const Eigen::Vector2d& uv) const {
+    return {static_cast<int>(std::lround(half_w_ + (uv.x() - frame_.center_u) * scale_)),
+            static_cast<int>(std::lround(half_h_ - (uv.y() - frame_.center_v) * scale_))};
+  }
+  bool inside(const cv::Point& px, int w, int h) const { return px.x >= 0 && px.y >= 0 && px.x < w && px.y < h; }
+
+ private:
+  RenderFrame frame_;
+  double scale_, half_w_, half_h_;
+  RenderView view_;
+};
+
+// A stable, well-spread colour per group (golden-ratio hue steps), so a group keeps its colour
+// from frame to frame of a video.
+cv::Scalar group_colour(int id) {
+  const double hue = std::fmod(0.618033988749895 * id, 1.0) * 180.0;
+  cv::Mat hsv(1, 1, CV_8UC3, cv::Scalar(hue, 200, 190)), bgr;
+  cv::cvtColor(hsv, bgr, cv::COLOR_HSV2BGR);
+  const cv::Vec3b c = bgr.at<cv::Vec3b>(0, 0);
+  return {static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2])};
+}
+
+void draw_text(cv::Mat& image, const std::string& text, cv::Point at, const cv::Scalar& colour, double size = 0.4) {
+  cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, size, colour, 1, cv::LINE_AA);
+}
+
+void draw_path(cv::Mat& image, const std::vector<Eigen::Vector3d>& path, const Projection& project, const cv::Scalar& colour) {
+  std::vector<cv::Point> px;
+  px.reserve(path.size());
+  for (const Eigen::Vector3d& p : path) px.push_back(project(p));
+  if (px.size() >= 2) cv::polylines(image, px, false, colour, 1, cv::LINE_AA);
+}
+
+// The robot as a triangle pointing along its +z, and (top view) its frustum as a wedge.
+void draw_robot(cv::Mat& image, const Rigid3& pose, const SceneFrustum& frustum, const Projection& project, RenderView view,
+                const cv::Scalar& colour, bool filled) {
+  const double size = std::max(2.0, 0.03 * frustum.far);
+  const std::vector<cv::Point> body = {project(pose * Eigen::Vector3d(0, 0, size)),
+                                       project(pose * Eigen::Vector3d(0.5 * size, 0, -0.5 * size)),
+                                       project(pose * Eigen::Vector3d(-0.5 * size, 0, -0.5 * size))};
+  if (filled) {
+    cv::fillConvexPoly(image, body, colour, cv::LINE_AA);
+  } else {
+    cv::polylines(image, body, true, colour, 2, cv::LINE_AA);
+  }
+  // The far end is a plane z = far (sim.frustum), so the wedge's sides are far / cos(angle) long.
+  const double t = std::tan(frustum.half_angle_rad);
+  std::vector<cv::Point> wedge;
+  if (view == RenderView::Top) {
+    wedge = {project(pose * Eigen::Vector3d(frustum.near * t, 0, frustum.near)),
+             project(pose * Eigen::Vector3d(frustum.far * t, 0, frustum.far)),
+             project(pose * Eigen::Vector3d(-frustum.far * t, 0, frustum.far)),
+             project(pose * Eigen::Vector3d(-frustum.near * t, 0, frustum.near))};
+  } else {
+    wedge = {project(pose * Eigen::Vector3d(0, 0, frustum.near)), project(pose * Eigen::Vector3d(0, 0, frustum.far))};
+  }
+  cv::polylines(image, wedge, view == RenderView::Top, colour, 1, cv::LINE_AA);
+}
+
+void draw_legend(cv::Mat& image, bool has_groups) {
+  struct Entry {
+    const char* text;
+    cv::Scalar colour;
+  };
+  std::vector<Entry> entries = {{"true point", kTruePoint}, {"true dynamic point", kTrueDynamic},
+                                {"map point (RltPoint / EKF landmark)", kPointBox}, {"flagged dynamic", kDynamicMark},
+                                {"true robot and frustum", kTrueRobot}, {"estimated robot and frustum", kEstimatedRobot}};
+  if (has_groups) {
+    entries.push_back({"label: final group (black)", kFinalLabel});
+    entries.push_back({"label: temporary group (red)", kTemporaryLabel});
+  }
+  const int x = image.cols - 290, line = 16;
+  int y = image.rows - line * static_cast<int>(entries.size()) - 6;
+  cv::rectangle(image, {x - 8, y - 14}, {image.cols - 4, image.rows - 4}, {245, 245, 245}, cv::FILLED);
+  for (const Entry& e : entries) {
+    cv::rectangle(image, {x, y - 8}, {x + 8, y}, e.colour, cv::FILLED);
+    draw_text(image, e.text, {x + 14, y}, kText);
+    y += line;
+  }
+}
+
+void draw_scale_bar(cv::Mat& image, const RenderFrame& frame, const RenderOptions& options) {
+  const double pixels_per_unit = std::max(options.width, options.height) / frame.span;
+  // The largest of 1, 2, 5 x 10^n that fits in a fifth of the picture.
+  double length = std::pow(10.0, std::floor(std::log10(0.2 * frame.span)));
+  for (double m : {5.0, 2.0})
+    if (m * length * pixels_per_unit <= 0.2 * options.width) {
+      length *= m;
+      break;
+    }
+  const int px = static_cast<int>(std::lround(length * pixels_per_unit));
+  const cv::Point a(12, options.height - 14), b(12 + px, options.height - 14);
+  cv::line(image, a, b, kText, 2);
+  char text[32];
+  std::snprintf(text, sizeof text, "%g units", length);
+  draw_text(image, text, {12, options.height - 20}, kText);
+}
+
+}  // namespace
+
+RenderFrame fit_everything(const RenderScene& scene, const RenderOptions& options) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  auto grow = [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector2d uv = plane(p, options.view);
+    lo = lo.cwiseMin(uv);
+    hi = hi.cwiseMax(uv);
+  };
+  for (const auto& p : scene.true_points) grow(p);
+  for (const auto& p : scene.true_path) grow(p);
+  for (const auto& p : scene.estimated_path) grow(p);
+  for (const auto& l : scene.landmarks) grow(l.p);
+  if (!(lo.array() <= hi.array()).all()) return {};
+  const Eigen::Vector2d c = 0.5 * (lo + hi), extent = hi - lo;
+  // The wider picture side takes the span; the other side must still hold its extent.
+  const double aspect = static_cast<double>(std::max(options.width, options.height)) / std::min(options.width, options.height);
+  const bool wide = options.width >= options.height;
+  const double span = std::max(wide ? extent.x() : extent.y(), (wide ? extent.y() : extent.x()) * aspect);
+  return {c.x(), c.y(), 1.08 * std::max(span, 1.0)};
+}
+
+RenderFrame fit_robot(const RenderScene& scene, const RenderOptions& options) {
+  const std::optional<Rigid3>& pose = scene.true_pose ? scene.true_pose : scene.estimated_pose;
+  // A close-up (thesis Fig 129): the robot and the near part of what it sees [C].
+  const Eigen::Vector3d centre = pose ? Eigen::Vector3d(*pose * Eigen::Vector3d(0, 0, 0.25 * scene.frustum.far))
+                                      : Eigen::Vector3d::Zero();
+  const Eigen::Vector2d uv = plane(centre, options.view);
+  return {uv.x(), uv.y(), 0.8 * scene.frustum.far};
+}
+
+cv::Mat render_map(const RenderScene& scene, const RenderFrame& frame, const RenderOptions& options) {
+  cv::Mat image(options.height, options.width, CV_8UC3, kBackground);
+  const Projection project(frame, options);
+  const int w = options.width, h = options.height;
+
+  for (std::size_t i = 0; i < scene.true_points.size(); ++i) {
+    const bool dynamic = i < scene.true_dynamic.size() && scene.true_dynamic[i];
+    cv::circle(image, project(scene.true_points[i]), dynamic ? 3 : 1, dynamic ? kTrueDynamic : kTruePoint, cv::FILLED);
+  }
+  draw_path(image, scene.true_path, project, kTrueRobot);
+  draw_path(image, scene.estimated_path, project, kEstimatedRobot);
+
+  // Each point to its group's centroid, in the group's colour (thesis Fig 127).
+  std::vector<const SceneGroup*> group_of_id;
+  for (const SceneGroup& g : scene.groups) {
+    if (g.id >= static_cast<int>(group_of_id.size())) group_of_id.resize(g.id + 1, nullptr);
+    group_of_id[g.id] = &g;
+  }
+  int in_view = 0;
+  for (const SceneLandmark& l : scene.landmarks) in_view += project.inside(project(l.p), w, h);
+  const bool labels = options.labels.value_or(in_view <= options.auto_label_limit);
+  for (const SceneLandmark& l : scene.landmarks)
+    if (l.group >= 0 && l.group < static_cast<int>(group_of_id.size()) && group_of_id[l.group])
+      cv::line(image, project(l.p), project(group_of_id[l.group]->centroid), group_colour(l.group), 1, cv::LINE_AA);
+  for (const SceneLandmark& l : scene.landmarks) {
+    const cv::Point px = project(l.p);
+    if (l.dynamic) {
+      cv::drawMarker(image, px, kDynamicMark, cv::MARKER_TILTED_CROSS, 9, 2);
+    } else {
+      cv::rectangle(image, {px.x - 2, px.y - 2}, {px.x + 2, px.y + 2}, kPointBox, 1);
+    }
+    if (labels) draw_text(image, std::to_string(l.id), {px.x + 4, px.y - 3}, l.dynamic ? kDynamicMark : l.final ? kFinalLabel : kTemporaryLabel, 0.33);
+  }
+  if (labels)
+    for (const SceneGroup& g : scene.groups)
+      draw_text(image, "G" + std::to_string(g.id), project(g.centroid), g.final ? kFinalLabel : kTemporaryLabel, 0.35);
+
+  // The true robot last: where the estimate is right, it stays visible on top.
+  if (scene.estimated_pose) draw_robot(image, *scene.estimated_pose, scene.frustum, project, options.view, kEstimatedRobot, true);
+  if (scene.true_pose) draw_robot(image, *scene.true_pose, scene.frustum, project, options.view, kTrueRobot, false);
+
+  draw_text(image, scene.title, {12, 22}, kText, 0.55);
+  draw_text(image, options.view == RenderView::Top ? "top view: z right, x up" : "side view: z right, y up", {12, 42}, kText);
+  draw_scale_bar(image, frame, options);
+  draw_legend(image, !scene.groups.empty());
+  return image;
+}
+
+}  // namespace relslam::eval

@@ -1,0 +1,65 @@
+#include "relslam/eval/io/run_folder.hpp"
+
+#include "relslam/eval/config/scenario_keys.hpp"
+
+#include "relslam/eval/io/build_info.hpp"
+#include "relslam/eval/config/input_error.hpp"
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+
+namespace relslam::eval {
+namespace fs = std::filesystem;
+
+void prepare_run_folder(const fs::path& dir, bool force) {
+  std::error_code ec;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir)) throw InputError("", 0, "--out", dir.string() + " exists and is not a folder");
+    if (!fs::is_empty(dir)) {
+      if (!force)
+        throw InputError("", 0, "--out", dir.string() + " is not empty; choose a new folder or pass --force to replace an earlier run");
+      if (!fs::exists(dir / "manifest.json"))
+        throw InputError("", 0, "--out", dir.string() + " is not empty and holds no manifest.json, so it is not a relslam run folder; refusing to delete it");
+      for (const auto& entry : fs::directory_iterator(dir)) fs::remove_all(entry.path());
+    }
+  }
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError("", 0, "--out", "cannot create " + dir.string() + ": " + ec.message());
+}
+
+namespace {
+
+std::string utc_now() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return text;
+}
+
+}  // namespace
+
+void write_manifest(const fs::path& dir, const Scenario& scenario, const Invocation& invocation,
+                    const nlohmann::json& extra) {
+  nlohmann::json manifest = {
+      {"relslam_version", relslam_version()},
+      {"command", invocation.command},
+      {"command_line", invocation.arguments},
+      {"scenario_file", invocation.scenario_file},
+      {"overrides", invocation.overrides},
+      {"seed", scenario.seed},
+      {"scenario", to_json(scenario)},
+      {"git", {{"revision", git_revision()}, {"dirty", git_tree_dirty()}}},
+      {"libraries", library_versions()},
+      {"host", host_info()},
+      {"created_utc", utc_now()},
+  };
+  manifest.update(extra);
+  std::ofstream out(dir / "manifest.json");
+  out << manifest.dump(2) << '\n';
+  if (!out) throw std::runtime_error((dir / "manifest.json").string() + ": write failed");
+}
+
+}  // namespace relslam::eval

@@ -1,0 +1,73 @@
+#pragma once
+// summary.csv: one row per algorithm of a run (issue #3 harness).
+
+#include "relslam/eval/metrics/trajectory_error.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace relslam::eval {
+
+// Median, 95th percentile and maximum of per-iteration times, milliseconds.
+struct RuntimeStats {
+  double median_ms = 0;
+  double p95_ms = 0;
+  double max_ms = 0;
+  double mean_ms = 0;
+};
+RuntimeStats runtime_stats(std::vector<double> times_ms);
+
+// How an algorithm's run ended: summary.csv's status column.
+struct RunStatus {
+  enum class Kind {
+    NotRun,   // never stepped
+    Ok,       // processed every frame
+    Failed,   // an exception, a non-finite estimate, or the algorithm gave up
+    Stopped,  // over its time budget: the rest of the stream was not processed
+    Ratio,    // not a run: the row of ratios between two runs
+  };
+  Kind kind = Kind::NotRun;
+  int iteration = -1;  // where it failed or stopped; -1 when no single iteration is to blame
+  std::string reason;  // why, for people
+
+  static RunStatus ok() { return {Kind::Ok, -1, ""}; }
+  static RunStatus failed(int iteration, std::string reason) { return {Kind::Failed, iteration, std::move(reason)}; }
+  static RunStatus stopped(int iteration, std::string reason) { return {Kind::Stopped, iteration, std::move(reason)}; }
+  bool is_ok() const { return kind == Kind::Ok; }
+  // "ok", "failed at iteration 30: why", "failed: why", "stopped at iteration 4: why", "ratio", "not run".
+  std::string text() const;
+};
+// The kind alone: "ok", "failed", "stopped", "ratio", "not run".
+std::string_view to_string(RunStatus::Kind kind);
+
+struct SummaryRow {
+  std::string algorithm;
+  RunStatus status;
+  int iterations = 0;
+  double final_landmark_error = 0;       // sum over the map (thesis metric)
+  double final_mean_landmark_error = 0;  // per landmark on the map
+  double mean_landmark_error = 0;        // per landmark, averaged over iterations
+  double final_position_error = 0;
+  TrajectoryError trajectory;            // ATE (unaligned: the frames coincide; and aligned), RPE
+  int landmarks_on_map = 0;
+  int duplicates = 0;                    // map landmarks sharing their true landmark with another
+  RuntimeStats runtime;
+  double peak_rss_mb = 0;                // the whole process, at the end of this algorithm's run
+  std::string input_digest;              // hash of the observation frames it was given
+};
+
+// One row per algorithm; then, when both relative_point and ekf6d ran, a row
+// "relative_point/ekf6d" (status "ratio") holding their ratios, compared over the iterations
+// both processed (the EKF may have stopped early): `ratio` is that row, computed by the caller.
+void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
+                   const std::optional<SummaryRow>& ratio = std::nullopt);
+// Element-wise a / b of the scores (landmark, position, trajectory errors and run times).
+SummaryRow ratio_row(const SummaryRow& a, const SummaryRow& b);
+
+// Peak resident memory of this process so far, megabytes.
+double peak_rss_mb();
+
+}  // namespace relslam::eval

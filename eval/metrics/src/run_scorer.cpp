@@ -1,0 +1,73 @@
+#include "relslam/eval/metrics/run_scorer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace relslam::eval {
+
+void RunScorer::associate(const std::vector<int>& assignment, const std::vector<int>& true_ids) {
+  for (std::size_t i = 0; i < assignment.size(); ++i) {
+    if (assignment[i] < 0 || true_ids[i] < 0) continue;
+    if (static_cast<std::size_t>(assignment[i]) >= votes_.size()) votes_.resize(static_cast<std::size_t>(assignment[i]) + 1);
+    ++votes_[assignment[i]][true_ids[i]];
+  }
+}
+
+IterationScore RunScorer::score(const Rigid3& estimate, const TruthFrame& truth, const std::vector<int>& changed,
+                                const std::function<std::optional<Eigen::Vector3d>(int)>& position_of, double runtime_ms) {
+  errors_.update(truth.dynamic_positions, changed, position_of);
+  constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();  // written as empty fields
+  IterationScore s;
+  s.landmarks_on_map = errors_.count();
+  s.landmark_error = truth_known_ ? errors_.sum() : kUnknown;
+  s.mean_landmark_error = truth_known_ ? errors_.mean() : kUnknown;
+  s.axis_error = truth.pose_known ? Eigen::Vector3d(estimate.translation - truth.world_T_robot.translation)
+                                  : Eigen::Vector3d::Constant(kUnknown);
+  s.position_error = s.axis_error.norm();
+  poses_known_ = poses_known_ && truth.pose_known;
+  runtimes_.push_back(runtime_ms);
+  history_.push_back(s);
+  estimates_.push_back(estimate);
+  truths_.push_back(truth.world_T_robot);
+  return s;
+}
+
+int RunScorer::majority_truth(int id) const {
+  if (id < 0 || static_cast<std::size_t>(id) >= votes_.size()) return -1;
+  int best = -1, count = 0;
+  for (const auto& [truth, n] : votes_[id])
+    if (n > count) best = truth, count = n;
+  return best;
+}
+
+int RunScorer::duplicates(const std::vector<int>& ids) const {
+  std::map<int, int> per_truth;
+  for (int id : ids) ++per_truth[majority_truth(id)];
+  int extra = 0;
+  for (const auto& [truth, n] : per_truth) extra += truth >= 0 ? n - 1 : 0;
+  return extra;
+}
+
+void RunScorer::fill(SummaryRow& row, std::size_t iterations) const {
+  const std::size_t n = std::min(iterations, history_.size());
+  row.iterations = static_cast<int>(n);
+  if (n == 0) return;
+  const IterationScore& last = history_[n - 1];
+  row.final_landmark_error = last.landmark_error;
+  row.final_mean_landmark_error = last.mean_landmark_error;
+  double mean_sum = 0;
+  for (std::size_t k = 0; k < n; ++k) mean_sum += history_[k].mean_landmark_error;
+  row.mean_landmark_error = mean_sum / static_cast<double>(n);
+  row.final_position_error = last.position_error;
+  if (poses_known_) {
+    row.trajectory = trajectory_error({estimates_.begin(), estimates_.begin() + static_cast<std::ptrdiff_t>(n)},
+                                      {truths_.begin(), truths_.begin() + static_cast<std::ptrdiff_t>(n)});
+  } else {
+    const double unknown = std::numeric_limits<double>::quiet_NaN();
+    row.trajectory = {unknown, unknown, unknown, unknown};
+  }
+  row.runtime = runtime_stats({runtimes_.begin(), runtimes_.begin() + static_cast<std::ptrdiff_t>(n)});
+}
+
+}  // namespace relslam::eval

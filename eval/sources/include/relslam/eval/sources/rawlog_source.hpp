@@ -1,0 +1,45 @@
+#pragma once
+// An MRPT rawlog as a frame source, with optional ground truth in MRPT's text formats (the
+// files MRPT's simul-landmarks writes). The world frame is the robot frame at the first frame.
+
+#include "relslam/eval/io/rawlog.hpp"
+#include "relslam/eval/sources/frame_source.hpp"
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace relslam::eval {
+
+struct RawlogFiles {
+  std::filesystem::path rawlog;
+  std::optional<std::filesystem::path> truth_path;       // one row per frame
+  std::optional<std::filesystem::path> truth_landmarks;  // needs truth_path
+};
+
+class RawlogSource final : public FrameSource {
+ public:
+  // Reads every file; InputError naming the file (or flag) and the problem.
+  explicit RawlogSource(const RawlogFiles& files);
+
+  std::string label() const override { return "run " + files_.rawlog.filename().string(); }
+  long long frames() const override { return static_cast<long long>(log_.frames.size()); }
+  const LandmarkTruth& truth() const override { return truth_; }
+  const RangeBearingSensor& sensor() const override { return log_.sensor; }
+  void stream(const Consumer& consume) override;
+  nlohmann::json describe() const override;
+
+  // Whether every measurement carries a landmark id (known association is possible).
+  bool ids_everywhere() const;
+
+ private:
+  RawlogFiles files_;
+  Rawlog log_;
+  std::vector<Rigid3> path_;  // MRPT's truth rows, MRPT axes
+  Rigid3 first_inverse_;
+  LandmarkTruth truth_;
+  std::map<int, int> row_of_id_;  // the landmark ids the rawlog uses -> truth index
+};
+
+}  // namespace relslam::eval

@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""Fails on any #include that runs up a layer (style.md 2.1: folders are layers).
+
+    tests/tools/layers_test.py SOURCE_DIR
+
+The stack, bottom to top: libslam (core < spatial < point and the algorithm folders beside it),
+sim (by file, below), eval (config < io < metrics < sources < algorithms < experiments < cli,
+each a folder eval/<layer>/{include,src}).
+A file may include its own layer and those below it; folders of one rank (point, plane, em)
+may not include each other. A file in no layer is an error too: place it in the table.
+"""
+import re
+import sys
+from pathlib import Path
+
+# libslam: relslam/<folder>/..., ranked by folder.
+LIBSLAM = {"core": 0, "spatial": 1, "point": 2, "plane": 2, "em": 2}
+# sim: one concept per file, ranked by file stem (src/ and include/relslam/sim/ alike).
+SIM = {
+    "random": 0, "centerline": 0, "frustum": 0,
+    "options": 1, "figure_eight": 1, "straight_line": 1,
+    "path": 2,
+    "world": 3, "column_grid": 3,
+    "simulator": 4,
+}
+# eval: relslam/eval/<layer>/... or, for internal headers, "<layer>/x.hpp" under eval/src.
+EVAL = ["config", "io", "metrics", "sources", "algorithms", "experiments", "cli"]
+PROJECTS = ["libslam", "sim", "eval"]  # libslam < sim < eval
+
+INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
+
+
+def layer_of_file(root, path):
+    """(project, rank, group) of a source file, or None when it is in no layer."""
+    rel = path.relative_to(root).parts
+    project = rel[0]
+    if project == "libslam":
+        folder = rel[3] if rel[1] == "include" else rel[2]  # include/relslam/<f>/ or src/<f>/
+        return ("libslam", LIBSLAM.get(folder), folder) if folder in LIBSLAM else None
+    if project == "sim":
+        stem = path.stem
+        return ("sim", SIM[stem], stem) if stem in SIM else None
+    if project == "eval":  # eval/<layer>/{include,src}/..., eval/app/main.cpp on top
+        if rel[1] == "app":
+            return ("eval", len(EVAL), "app")
+        return ("eval", EVAL.index(rel[1]), rel[1]) if rel[1] in EVAL else None
+    return None
+
+
+def layer_of_include(text, including):
+    """(project, rank, group) of an included header, or None for one outside the stack."""
+    parts = text.split("/")
+    if parts[0] == "relslam" and len(parts) >= 3:
+        if parts[1] == "sim":
+            stem = Path(parts[-1]).stem
+            return ("sim", SIM.get(stem, -1), stem)
+        if parts[1] == "eval" and len(parts) >= 4:
+            return ("eval", EVAL.index(parts[2]) if parts[2] in EVAL else -1, parts[2])
+        if parts[1] in LIBSLAM:
+            return ("libslam", LIBSLAM[parts[1]], parts[1])
+        return None
+    # Internal headers: "x.hpp" beside the file (its own layer in eval, by stem in sim).
+    if including[0] == "eval" and len(parts) == 1:
+        return including
+    if including[0] == "sim":
+        stem = Path(parts[-1]).stem
+        return ("sim", SIM.get(stem, -1), stem)
+    return None
+
+
+def check(root):
+    """Every include of the tree against the layers: (files, problems)."""
+    problems, files = [], 0
+    for project in PROJECTS:
+        for path in sorted((root / project).rglob("*")):
+            if path.suffix not in (".hpp", ".cpp"):
+                continue
+            files += 1
+            own = layer_of_file(root, path)
+            rel = path.relative_to(root)
+            if own is None:
+                problems.append(f"{rel}: in no layer; add its folder or file to tests/tools/layers_test.py")
+                continue
+            text = path.read_text()
+            for match in INCLUDE.finditer(text):
+                included = layer_of_include(match.group(1), own)
+                if included is None:
+                    continue
+                line = text.count("\n", 0, match.start()) + 1
+                where = f"{rel}:{line}: {match.group(1)}"
+                if included[1] == -1:
+                    problems.append(f"{where}: the header is in no layer")
+                elif PROJECTS.index(included[0]) > PROJECTS.index(own[0]):
+                    problems.append(f"{where}: {own[0]} may not include {included[0]} (libslam < sim < eval)")
+                elif included[0] == own[0] and included[1] > own[1]:
+                    problems.append(f"{where}: {own[2]} (rank {own[1]}) includes {included[2]} (rank {included[1]}), "
+                                    "a layer above it")
+                elif included[0] == own[0] and included[1] == own[1] and included[2] != own[2]:
+                    problems.append(f"{where}: {own[2]} and {included[2]} are side by side and may not include each other")
+                elif own[0] == "sim" and included[0] == "libslam" and included[2] != "core":
+                    problems.append(f"{where}: sim sees only relslam/core of libslam")
+    return files, problems
+
+
+def self_test():
+    """The check itself: a tree with one include of each wrong kind must give one problem each."""
+    import tempfile
+    cases = {
+        "eval/io/src/reader.cpp": '#include "relslam/eval/cli/app.hpp"',          # io -> cli
+        "eval/config/include/relslam/eval/config/k.hpp": '#include "relslam/eval/metrics/x.hpp"',  # upwards
+        "libslam/src/point/a.cpp": '#include "relslam/plane/b.hpp"',              # side by side
+        "libslam/src/core/c.cpp": '#include "relslam/sim/world.hpp"',             # libslam -> sim
+        "sim/src/world.cpp": '#include "relslam/point/rlt_point.hpp"',           # sim -> point
+        "sim/src/options.cpp": '#include "relslam/sim/simulator.hpp"',           # options -> simulator
+        "eval/nowhere/src/x.cpp": "",                                             # no layer
+        "eval/cli/src/fine.cpp": '#include "relslam/eval/io/csv_writer.hpp"',     # allowed
+    }
+    with tempfile.TemporaryDirectory() as tmp:
+        for rel, text in cases.items():
+            path = Path(tmp) / rel
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(text + "\n")
+        _, problems = check(Path(tmp))
+    expected = len(cases) - 1
+    if len(problems) != expected:
+        print("layers_test --self-test: expected", expected, "problems, got:", *problems, sep="\n  ")
+        return 1
+    print(f"layers_test --self-test: all {expected} wrong includes caught")
+    return 0
+
+
+def main():
+    if sys.argv[1:] == ["--self-test"]:
+        return self_test()
+    root = Path(sys.argv[1]) if len(sys.argv) > 1 else Path(__file__).resolve().parents[2]
+    files, problems = check(root)
+    for p in problems:
+        print(p)
+    print(f"layers_test: {files} files, {len(problems)} includes against the layers")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
