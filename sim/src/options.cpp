@@ -1,9 +1,8 @@
 #include "relslam/sim/options.hpp"
 
-#include "relslam/sim/world.hpp"
-
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace relslam::sim {
 
@@ -26,6 +25,23 @@ long long iteration_count(const SimOptions& o) {
   if (o.iterations) return *o.iterations;
   return static_cast<long long>(o.loops) * std::llround(o.scale * o.iterations_per_loop);
 }
+
+double scaled_loop_length(const SimOptions& o) { return o.scale * o.loop_length; }
+
+double step_length(const SimOptions& o) {
+  return scaled_loop_length(o) / static_cast<double>(std::llround(o.scale * o.iterations_per_loop));
+}
+
+double field_length(const SimOptions& o) {
+  switch (o.path) {
+    case PathKind::FigureEight: return scaled_loop_length(o);
+    case PathKind::Line: return static_cast<double>(iteration_count(o)) * step_length(o) + o.line_margin;
+    case PathKind::Stationary: return scaled_loop_length(o) + o.line_margin;
+  }
+  return 0.0;
+}
+
+long long landmark_count(const SimOptions& o) { return std::llround(o.density * field_length(o) / 100.0); }
 
 std::vector<OptionIssue> check(const SimOptions& o) {
   std::vector<OptionIssue> issues;

@@ -9,11 +9,6 @@
 namespace relslam::sim {
 namespace {
 
-double loop_length(const SimOptions& o) { return o.scale * o.loop_length; }
-double step_for(const SimOptions& o) {
-  return loop_length(o) / static_cast<double>(std::llround(o.scale * o.iterations_per_loop));
-}
-
 // Robot axes from the direction of travel: +z forward along the tangent, +x left (horizontal),
 // +y completing a right-handed frame; no roll (spec 4.1.4).
 Eigen::Matrix3d tangent_frame(const Eigen::Vector3d& forward) {
@@ -26,23 +21,14 @@ Eigen::Matrix3d tangent_frame(const Eigen::Vector3d& forward) {
 
 }  // namespace
 
-double field_length(const SimOptions& o) {
-  switch (o.path) {
-    case PathKind::FigureEight: return loop_length(o);
-    case PathKind::Line: return static_cast<double>(iteration_count(o)) * step_for(o) + o.line_margin;
-    case PathKind::Stationary: return loop_length(o) + o.line_margin;
-  }
-  return 0.0;
-}
-
 Path::Path(const SimOptions& o)
     : kind_(o.path),
       wobble_(o.wobble),
       iterations_(static_cast<int>(iteration_count(o))),
-      step_(step_for(o)),
+      step_(sim::step_length(o)),
       field_length_(sim::field_length(o)) {
   if (o.path == PathKind::FigureEight)
-    line_ = std::make_unique<FigureEight>(loop_length(o), o.scale * o.incline_height);
+    line_ = std::make_unique<FigureEight>(scaled_loop_length(o), o.scale * o.incline_height);
   else
     line_ = std::make_unique<StraightLine>(field_length_);
   world_T_design_ = design_T_robot(0.0).inverse();

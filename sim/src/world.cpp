@@ -50,8 +50,6 @@ Eigen::Vector3d DynamicMotion::offset(int k) const {
   return o;
 }
 
-long long landmark_count(const SimOptions& o) { return std::llround(o.density * field_length(o) / 100.0); }
-
 World::World(const SimOptions& o, const Path& path, std::uint64_t seed) {
   const auto n = static_cast<int>(landmark_count(o));
   anchors_.reserve(n);

@@ -1,7 +1,7 @@
 #include "relslam/point/basis.hpp"
 
 #include "relslam/core/rigid.hpp"
-#include "relslam/sim/random.hpp"
+#include "seeded_random.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -24,7 +24,7 @@ TEST(BasisFrame, PutsB0AtTheOriginB1OnNegativeXAndB2InTheXzPlane) {
 }
 
 TEST(BasisFrame, CoordinatesAreInvariantToAnyRigidMotion) {
-  sim::RandomSequence rng(201, sim::Stream::Field);
+  test::SeededRandom rng(201);
   std::vector<Eigen::Vector3d> p;
   for (int i = 0; i < 10; ++i) p.emplace_back(rng.uniform(-50, 50), rng.uniform(-5, 5), rng.uniform(0, 100));
   const auto f = basis_frame(p[0], p[1], p[2]);

@@ -1,6 +1,6 @@
 #include "relslam/point/point_matching.hpp"
 
-#include "relslam/sim/random.hpp"
+#include "seeded_random.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@ namespace {
 // Two landmarks 0.3 apart, the robot turning so each moves ~0.6 between frames: without
 // motion compensation the nearest previous observation is the other landmark's.
 TEST(PointMatcher, MotionCompensationKeepsCloseLandmarksApart) {
-  sim::RandomSequence rng(701, sim::Stream::Field);
+  test::SeededRandom rng(701);
   std::vector<Eigen::Vector3d> world;
   for (int i = 0; i < 40; ++i) world.emplace_back(rng.uniform(-40, 40), rng.uniform(-4, 4), rng.uniform(20, 95));
   world.push_back({0.0, 0.0, 60.0});
@@ -124,7 +124,7 @@ std::vector<PointId> brute_force_matches(const std::vector<Eigen::Vector3d>& obs
 }
 
 TEST(PointMatcher, EveryLocalIndexGivesTheBruteForceMatches) {
-  sim::RandomSequence rng(702, sim::Stream::Field);
+  test::SeededRandom rng(702);
   for (spatial::LocalIndexKind kind : {spatial::LocalIndexKind::Quadtree, spatial::LocalIndexKind::Octree, spatial::LocalIndexKind::KdTree})
     for (int trial = 0; trial < 10; ++trial) {
       std::vector<LocalCandidate> cands;

@@ -1,6 +1,6 @@
 #include "relslam/point/rlt_binning.hpp"
 
-#include "relslam/sim/random.hpp"
+#include "seeded_random.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@ namespace {
 // fixed positions; uncorrelated points jitter by 1.0 more. 60 iterations each. The
 // uncorrelated ones are a random subset; `noisy` says which.
 std::vector<ObservationRing> tracks(int n, int uncorrelated, std::uint64_t seed, std::vector<bool>* noisy = nullptr) {
-  sim::RandomSequence rng(seed, sim::Stream::Field);
+  test::SeededRandom rng(seed);
   std::vector<bool> is_noisy(static_cast<std::size_t>(n), false);
   std::fill(is_noisy.begin(), is_noisy.begin() + uncorrelated, true);
   for (int i = n - 1; i > 0; --i) std::vector<bool>::swap(is_noisy[i], is_noisy[rng.below(static_cast<std::uint64_t>(i) + 1)]);

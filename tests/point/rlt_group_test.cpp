@@ -1,6 +1,6 @@
 #include "relslam/point/rlt_group.hpp"
 
-#include "relslam/sim/random.hpp"
+#include "seeded_random.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@ namespace relslam::point {
 namespace {
 
 // Static points seen from a moving viewpoint, noise-free: n iterations, one RltPoint each.
-std::vector<RltPoint> observed_points(const std::vector<Eigen::Vector3d>& world, int iterations, sim::RandomSequence& rng,
+std::vector<RltPoint> observed_points(const std::vector<Eigen::Vector3d>& world, int iterations, test::SeededRandom& rng,
                                       std::vector<Rigid3>* poses) {
   std::vector<RltPoint> points(world.size());
   for (std::size_t i = 0; i < world.size(); ++i) points[i].id = static_cast<PointId>(i);
@@ -29,14 +29,14 @@ std::vector<RltPoint> observed_points(const std::vector<Eigen::Vector3d>& world,
   return points;
 }
 
-std::vector<Eigen::Vector3d> random_world(sim::RandomSequence& rng, int n) {
+std::vector<Eigen::Vector3d> random_world(test::SeededRandom& rng, int n) {
   std::vector<Eigen::Vector3d> world;
   for (int i = 0; i < n; ++i) world.emplace_back(rng.uniform(-40, 40), rng.uniform(-5, 5), rng.uniform(10, 90));
   return world;
 }
 
 TEST(RltGroup, NoiseFreeRelativePositionsAreTheTrueBasisCoordinates) {
-  sim::RandomSequence rng(601, sim::Stream::Field);
+  test::SeededRandom rng(601);
   const auto world = random_world(rng, 12);
   std::vector<Rigid3> poses;
   const auto points = observed_points(world, 20, rng, &poses);
@@ -51,7 +51,7 @@ TEST(RltGroup, NoiseFreeRelativePositionsAreTheTrueBasisCoordinates) {
 }
 
 TEST(RltGroup, RootRegistrationRecoversTheWorldFromTheFirstObservations) {
-  sim::RandomSequence rng(602, sim::Stream::Field);
+  test::SeededRandom rng(602);
   const auto world = random_world(rng, 10);
   std::vector<Rigid3> poses;
   const auto points = observed_points(world, 15, rng, &poses);
@@ -65,7 +65,7 @@ TEST(RltGroup, RootRegistrationRecoversTheWorldFromTheFirstObservations) {
 }
 
 TEST(RltGroup, AnchoredRegistrationUsesTheAnchorsMapPositions) {
-  sim::RandomSequence rng(603, sim::Stream::Field);
+  test::SeededRandom rng(603);
   const auto world = random_world(rng, 8);
   std::vector<Rigid3> poses;
   auto points = observed_points(world, 10, rng, &poses);
@@ -84,7 +84,7 @@ TEST(RltGroup, AnchoredRegistrationUsesTheAnchorsMapPositions) {
 }
 
 TEST(RltGroup, IterationsWithAMissingMemberAreSkipped) {
-  sim::RandomSequence rng(604, sim::Stream::Field);
+  test::SeededRandom rng(604);
   const auto world = random_world(rng, 5);
   std::vector<Rigid3> poses;
   auto points = observed_points(world, 6, rng, &poses);

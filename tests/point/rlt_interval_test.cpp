@@ -1,6 +1,6 @@
 #include "relslam/point/rlt_interval.hpp"
 
-#include "relslam/sim/random.hpp"
+#include "seeded_random.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ int brute_count(const std::set<int>& s, int a, int b) {
 }
 
 TEST(RltInterval, CountsMatchBruteForceForRandomSets) {
-  sim::RandomSequence rng(301, sim::Stream::Field);
+  test::SeededRandom rng(301);
   for (int trial = 0; trial < 20; ++trial) {
     RltInterval interval;
     std::set<int> truth;
@@ -36,7 +36,7 @@ TEST(RltInterval, CountsMatchBruteForceForRandomSets) {
 }
 
 TEST(RltInterval, InsertInAnyOrderKeepsRunsCanonical) {
-  sim::RandomSequence rng(302, sim::Stream::Field);
+  test::SeededRandom rng(302);
   RltInterval interval;
   std::set<int> truth;
   for (int i = 0; i < 300; ++i) {

@@ -1,6 +1,6 @@
 #include "relslam/point/rlt_point_charting.hpp"
 
-#include "relslam/sim/random.hpp"
+#include "seeded_random.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@ namespace relslam::point {
 namespace {
 
 TEST(RltPointCharting, EnumerationIsDuplicateFreeAndComplete) {
-  sim::RandomSequence rng(401, sim::Stream::Field);
+  test::SeededRandom rng(401);
   RltPointCharting charting(64);
   std::vector<std::set<int>> truth(200);
   for (int k = 0; k < 200; ++k) {

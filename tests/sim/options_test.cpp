@@ -45,6 +45,25 @@ TEST(SimOptions, NanIsRejected) {
   EXPECT_EQ(check(o)[0].field, "noise_sigma");
 }
 
+TEST(SimOptions, SizesFollowFromTheOptionsAlone) {
+  SimOptions o;  // one figure-eight loop: 1145 units, 3800 iterations, 100 points per 100 units
+  EXPECT_EQ(scaled_loop_length(o), 1145.0);
+  EXPECT_EQ(step_length(o), 1145.0 / 3800.0);
+  EXPECT_EQ(field_length(o), 1145.0);
+  EXPECT_EQ(landmark_count(o), 1145);
+  o.scale = 2;
+  EXPECT_EQ(iteration_count(o), 7600);
+  EXPECT_EQ(field_length(o), 2290.0);
+  o.scale = 1;
+  o.path = PathKind::Line;
+  o.iterations = 380;  // the run plus the margin that keeps the last frames full
+  EXPECT_NEAR(field_length(o), 114.5 + 110.0, 1e-12);
+  o.path = PathKind::Stationary;
+  EXPECT_EQ(field_length(o), 1145.0 + 110.0);
+  o.density = 50;
+  EXPECT_EQ(landmark_count(o), 628);  // 627.5 rounds away from zero
+}
+
 TEST(SimOptions, PathNamesRoundTrip) {
   for (PathKind kind : {PathKind::FigureEight, PathKind::Line, PathKind::Stationary})
     EXPECT_EQ(parse_path_kind(to_string(kind)), kind);

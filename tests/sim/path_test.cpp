@@ -85,6 +85,17 @@ TEST(Path, WobbleRollsThePoseButKeepsItARotation) {
   EXPECT_GT(max_left_y, std::sin(1.5 * M_PI / 180.0)) << "roll of ~2° shows in the left axis";
 }
 
+TEST(Path, StepAndFieldLengthAreTheOnesTheOptionsGive) {
+  SimOptions o;
+  o.iterations = 500;
+  for (PathKind kind : {PathKind::FigureEight, PathKind::Line, PathKind::Stationary}) {
+    o.path = kind;
+    const Path path(o);
+    EXPECT_EQ(path.step_length(), step_length(o)) << to_string(kind);
+    EXPECT_EQ(path.field_length(), field_length(o)) << to_string(kind);
+  }
+}
+
 TEST(Path, LineGoesStraightAheadAndStationaryStays) {
   SimOptions o;
   o.path = PathKind::Line;

@@ -14,6 +14,15 @@ TEST(World, LandmarkCountFollowsDensityPerHundredUnits) {
   }
 }
 
+TEST(World, SizeIsTheLandmarkCountTheOptionsGive) {
+  SimOptions o;
+  o.path = PathKind::Line;
+  o.iterations = 700;
+  o.density = 30;
+  const Path path(o);
+  EXPECT_EQ(World(o, path, 1).size(), landmark_count(o));
+}
+
 TEST(World, DenserFieldExtendsTheSparserOneWithTheSameSeed) {
   SimOptions sparse, dense;
   sparse.density = 50;

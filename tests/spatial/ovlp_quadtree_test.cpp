@@ -4,7 +4,7 @@
 #include "relslam/spatial/local_index.hpp"
 #include "relslam/spatial/ovlp_quadtree.hpp"
 
-#include "relslam/sim/random.hpp"
+#include "seeded_random.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ TEST_P(LocalIndexVariants, QueryContainsEveryPointWithinTheRadius) {
   const auto [kind, cell] = GetParam();
   constexpr double kRadius = 1.2;
   const auto index = make_local_index(kind, cell, kRadius);
-  sim::RandomSequence rng(501, sim::Stream::Field);
+  test::SeededRandom rng(501);
   for (int trial = 0; trial < 4; ++trial) {
     std::vector<IndexedPoint> points;
     for (int i = 0; i < 800; ++i) points.push_back({i, {rng.uniform(-100, 100), rng.uniform(-5, 5), rng.uniform(0, 100)}});
@@ -49,7 +49,7 @@ INSTANTIATE_TEST_SUITE_P(AllKinds, LocalIndexVariants,
                                            std::pair{LocalIndexKind::Octree, 1.5}, std::pair{LocalIndexKind::KdTree, 0.0}));
 
 TEST(OVLPQuadTree, HoldsEveryPointWithinTheOverlapOnXAndZ) {
-  sim::RandomSequence rng(503, sim::Stream::Field);
+  test::SeededRandom rng(503);
   OVLPQuadTree tree(5.0, 1.2);
   std::vector<IndexedPoint> points;
   for (int i = 0; i < 500; ++i) points.push_back({i, {rng.uniform(-50, 50), rng.uniform(-5, 5), rng.uniform(0, 50)}});
@@ -72,7 +72,7 @@ TEST(OVLPQuadTree, EmptyTreeAnswersNothing) {
 }
 
 TEST(KdTreeIndex, ReturnsExactlyThePointsWithinTheRadius) {
-  sim::RandomSequence rng(504, sim::Stream::Field);
+  test::SeededRandom rng(504);
   auto index = make_local_index(LocalIndexKind::KdTree, 0, 2.0);
   std::vector<IndexedPoint> points;
   for (int i = 0; i < 300; ++i) points.push_back({i, {rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10)}});
@@ -90,7 +90,7 @@ TEST(KdTreeIndex, ReturnsExactlyThePointsWithinTheRadius) {
 class GlobalIndexVariants : public ::testing::TestWithParam<GlobalIndexKind> {};
 
 TEST_P(GlobalIndexVariants, InsertsMovesAndRemovesLikeBruteForce) {
-  sim::RandomSequence rng(502, sim::Stream::Field);
+  test::SeededRandom rng(502);
   const auto tree = make_global_index(GetParam(), 4.0, 2.0);
   std::vector<Eigen::Vector3d> position(300);
   std::vector<bool> stored(300, false);

@@ -89,123 +89,188 @@ class Bins {
   std::vector<std::unordered_set<int>> compared_;
 };
 
-}  // namespace
+// One run of RltBinning, its steps named as in the thesis's list (6.5.3 steps 1-8).
+class BinningRun {
+ public:
+  // Step 1: every point in a bin of its own, every bin valid.
+  BinningRun(int n, const std::function<double(int, int)>& pair_std, const BinningOptions& o)
+      : n_(n), pair_std_(pair_std), o_(o), bins_(n), valid_(static_cast<std::size_t>(n)),
+        retired_(static_cast<std::size_t>(n), false) {
+    std::iota(valid_.begin(), valid_.end(), 0);
+    stop_ = valid_.size();
+    result_.is_static.assign(static_cast<std::size_t>(n), false);
+  }
 
-BinningResult rlt_binning(int n, const std::function<double(int, int)>& pair_std, const BinningOptions& o) {
-  BinningResult result;
-  result.is_static.assign(static_cast<std::size_t>(n), false);
-  if (n == 0) return result;
-  Bins bins(n);
-  std::vector<int> valid(static_cast<std::size_t>(n));
-  std::iota(valid.begin(), valid.end(), 0);
-  std::size_t stop = valid.size();
-  bool have_threshold = false;
-  double threshold = 0;
-  std::vector<bool> retired(static_cast<std::size_t>(n), false);
-  auto comparable = [&](int b, int q) { return q != b && bins.alive(q) && !retired[q] && !bins.compared(b, q); };
-  auto std_of = [&](int b, int q) {
-    ++result.comparisons;
-    const double s = pair_std(bins.representative(b), bins.representative(q));
-    bins.record_comparison(b, q);
-    return s;
-  };
+  // Step 2: rounds of pairwise comparisons until every valid bin has met every other or one
+  // bin holds the majority; then the largest bin is the static one.
+  BinningResult run() {
+    if (n_ == 0) return result_;
+    for (;;) {
+      ++result_.rounds;
+      Round round(n_);
+      const bool everyone_initiated = stop_ >= valid_.size();
+      const bool compared_any = compare_valid_bins(round);
+      if (!have_threshold_) set_threshold(round);
+      prioritise_next_round(round);
+      if (majority_bin_found()) break;
+      if (valid_.size() < 2) break;
+      if (!compared_any) {
+        if (everyone_initiated) break;  // no pair left anywhere
+        stop_ = valid_.size();          // the priority list is exhausted: everyone initiates
+      }
+    }
+    keep_largest_bin();
+    result_.threshold = threshold_;
+    return result_;
+  }
 
-  for (;;) {
-    ++result.rounds;
-    std::vector<bool> used(static_cast<std::size_t>(n), false), positive(static_cast<std::size_t>(n), false);
+ private:
+  // What one round records about its bins.
+  struct Round {
+    explicit Round(int n) : used(static_cast<std::size_t>(n), false), positive(static_cast<std::size_t>(n), false) {}
+    std::vector<bool> used;      // in a comparison this round (disjoint pairing: at most one)
+    std::vector<bool> positive;  // merged this round
+    // First round: comparisons waiting for the threshold (thesis step 4, "exit at this point").
     struct Pending {
       int b, q;
       double s;
     };
     std::vector<Pending> pending;
+  };
+  static constexpr int kDone = -2;  // b has been compared with every bin left
+  static constexpr int kBusy = -1;  // the bins b has not met are all busy this round
+
+  bool comparable(int b, int q) { return q != b && bins_.alive(q) && !retired_[q] && !bins_.compared(b, q); }
+
+  // Step 4: the standard deviation between the two bins' first points; either way the bins are
+  // never compared again.
+  double compare(int b, int q) {
+    ++result_.comparisons;
+    const double s = pair_std_(bins_.representative(b), bins_.representative(q));
+    bins_.record_comparison(b, q);
+    return s;
+  }
+
+  // Step 3: the first bin after valid_[idx] = b (cyclically) that b has not been compared with
+  // (and, pairing disjointly, that is free this round).
+  int find_partner(std::size_t idx, int b, const Round& round) {
+    bool any_left = false;
+    for (std::size_t step = 1; step < valid_.size(); ++step) {
+      const int q = valid_[(idx + step) % valid_.size()];
+      if (!comparable(b, q)) continue;
+      any_left = true;
+      if (o_.pairing != BinPairing::Disjoint || !round.used[q]) return q;
+    }
+    return any_left ? kBusy : kDone;
+  }
+
+  // Steps 3-4 for each bin of the valid list up to stop_: find a partner, compare, merge within
+  // the threshold (the first round only records). Whether any comparison was made.
+  bool compare_valid_bins(Round& round) {
     bool compared_any = false;
-    const bool everyone_initiated = stop >= valid.size();
-    for (std::size_t idx = 0; idx < stop && idx < valid.size(); ++idx) {
-      const int b = valid[idx];
-      const bool disjoint = o.pairing == BinPairing::Disjoint;
-      if (!bins.alive(b) || retired[b] || (disjoint && used[b])) continue;
-      // The first partner after b (cyclically) not yet compared (and, pairing disjointly, free).
-      int partner = -1;
-      bool any_left = false;
-      for (std::size_t step = 1; step < valid.size() && partner < 0; ++step) {
-        const int q = valid[(idx + step) % valid.size()];
-        if (!comparable(b, q)) continue;
-        any_left = true;
-        if (!disjoint || !used[q]) partner = q;
-      }
-      if (!any_left) {
-        retired[b] = true;  // compared with every bin: done
+    for (std::size_t idx = 0; idx < stop_ && idx < valid_.size(); ++idx) {
+      const int b = valid_[idx];
+      const bool disjoint = o_.pairing == BinPairing::Disjoint;
+      if (!bins_.alive(b) || retired_[b] || (disjoint && round.used[b])) continue;
+      const int partner = find_partner(idx, b, round);
+      if (partner == kDone) {
+        retired_[b] = true;  // compared with every bin: done
         continue;
       }
-      if (partner < 0) continue;  // every candidate is busy this round
-      used[b] = used[partner] = true;
+      if (partner == kBusy) continue;  // every candidate is busy this round
+      round.used[b] = round.used[partner] = true;
       compared_any = true;
-      const double s = std_of(b, partner);
-      if (!have_threshold) {
-        pending.push_back({b, partner, s});
-      } else if (s <= threshold) {
-        bins.merge(b, partner);
-        positive[b] = true;
+      const double s = compare(b, partner);
+      if (!have_threshold_) {
+        round.pending.push_back({b, partner, s});
+      } else if (s <= threshold_) {
+        bins_.merge(b, partner);
+        round.positive[b] = true;
       }
     }
-    if (!have_threshold) {  // first round: the threshold from its values, then its merges
-      std::vector<double> deviations;
-      for (const Pending& p : pending) deviations.push_back(p.s);
-      threshold = binning_threshold(deviations, o);
-      have_threshold = true;
-      for (const Pending& p : pending)
-        if (p.s <= threshold) {
-          bins.merge(bins.find(p.b), bins.find(p.q));
-          positive[bins.find(p.b)] = true;
-        }
-    }
+    return compared_any;
+  }
 
-    // Next round's order: with the heuristic, bins that merged first (they are likely the
-    // static majority) and only they initiate; the others stay as partners (thesis 6.5.3).
+  // Step 5, after the first round: the threshold from its values, then its merges. A partner
+  // may have been merged elsewhere meanwhile, hence the union-find (spec 5.7).
+  void set_threshold(Round& round) {
+    std::vector<double> deviations;
+    for (const Round::Pending& p : round.pending) deviations.push_back(p.s);
+    threshold_ = binning_threshold(deviations, o_);
+    have_threshold_ = true;
+    for (const Round::Pending& p : round.pending)
+      if (p.s <= threshold_) {
+        bins_.merge(bins_.find(p.b), bins_.find(p.q));
+        round.positive[bins_.find(p.b)] = true;
+      }
+  }
+
+  // Steps 6 and 8: the next round's valid list. With the priority heuristic, bins that merged
+  // first (they are likely the static majority) and only they initiate; the others stay as
+  // partners (thesis 6.5.3).
+  void prioritise_next_round(const Round& round) {
+    const bool heuristic = o_.priority_heuristic && result_.rounds >= 2;
     std::vector<int> first, second;
-    for (int b : valid)
-      if (bins.alive(b) && !retired[b]) (o.priority_heuristic && result.rounds >= 2 && positive[b] ? first : second).push_back(b);
-    if (o.priority_heuristic && result.rounds >= 2) {
-      valid = first;
-      valid.insert(valid.end(), second.begin(), second.end());
-      stop = first.empty() ? valid.size() : first.size();
+    for (int b : valid_)
+      if (bins_.alive(b) && !retired_[b]) (heuristic && round.positive[b] ? first : second).push_back(b);
+    if (heuristic) {
+      valid_ = first;
+      valid_.insert(valid_.end(), second.begin(), second.end());
+      stop_ = first.empty() ? valid_.size() : first.size();
     } else {
-      valid = second;
-      stop = valid.size();
+      valid_ = second;
+      stop_ = valid_.size();
     }
+  }
 
-    // A majority bin ends the pairing: every other bin is compared with it once (thesis 6.5.3).
+  int largest_bin() {
     int largest = -1;
-    for (int b = 0; b < n; ++b)
-      if (bins.alive(b) && (largest < 0 || bins.size(b) > bins.size(largest))) largest = b;
-    if (bins.size(largest) > o.majority_fraction * n) {
-      for (int b = 0; b < n; ++b)
-        if (b != largest && bins.alive(b) && !bins.compared(largest, b) && std_of(largest, b) <= threshold)
-          bins.merge(largest, b);
-      break;
-    }
-    if (valid.size() < 2) break;
-    if (!compared_any) {
-      if (everyone_initiated) break;  // no pair left anywhere
-      stop = valid.size();            // the priority list is exhausted: everyone initiates
+    for (int b = 0; b < n_; ++b)
+      if (bins_.alive(b) && (largest < 0 || bins_.size(b) > bins_.size(largest))) largest = b;
+    return largest;
+  }
+
+  // Step 7: a majority bin ends the pairing; every other bin is compared with it once.
+  bool majority_bin_found() {
+    const int largest = largest_bin();
+    if (!(bins_.size(largest) > o_.majority_fraction * n_)) return false;
+    for (int b = 0; b < n_; ++b)
+      if (b != largest && bins_.alive(b) && !bins_.compared(largest, b) && compare(largest, b) <= threshold_)
+        bins_.merge(largest, b);
+    return true;
+  }
+
+  // The largest bin is static, everything else dynamic; with recheck_members each point left
+  // out is compared once more, by itself, with that bin's representative.
+  void keep_largest_bin() {
+    const int largest = largest_bin();
+    for (int m : bins_.members(largest)) result_.is_static[m] = true;
+    result_.highest_bin = bins_.size(largest);
+    if (!o_.recheck_members) return;
+    const int reference = bins_.representative(largest);
+    for (int i = 0; i < n_; ++i) {
+      if (result_.is_static[i]) continue;
+      ++result_.comparisons;
+      if (pair_std_(reference, i) <= threshold_) result_.is_static[i] = true, ++result_.highest_bin;
     }
   }
 
-  int largest = -1;
-  for (int b = 0; b < n; ++b)
-    if (bins.alive(b) && (largest < 0 || bins.size(b) > bins.size(largest))) largest = b;
-  for (int m : bins.members(largest)) result.is_static[m] = true;
-  result.highest_bin = bins.size(largest);
-  if (o.recheck_members) {
-    const int reference = bins.representative(largest);
-    for (int i = 0; i < n; ++i) {
-      if (result.is_static[i]) continue;
-      ++result.comparisons;
-      if (pair_std(reference, i) <= threshold) result.is_static[i] = true, ++result.highest_bin;
-    }
-  }
-  result.threshold = threshold;
-  return result;
+  const int n_;
+  const std::function<double(int, int)>& pair_std_;
+  const BinningOptions& o_;
+  BinningResult result_;
+  Bins bins_;
+  std::vector<int> valid_;
+  std::size_t stop_ = 0;  // only the first stop_ bins of valid_ initiate comparisons
+  std::vector<bool> retired_;  // compared with every other bin
+  bool have_threshold_ = false;
+  double threshold_ = 0;
+};
+
+}  // namespace
+
+BinningResult rlt_binning(int n, const std::function<double(int, int)>& pair_std, const BinningOptions& o) {
+  return BinningRun(n, pair_std, o).run();
 }
 
 }  // namespace relslam::point

@@ -82,7 +82,21 @@ inline constexpr long long kMaxLandmarks = 20'000'000;
 // Every violated constraint; fields are paths inside SimOptions ("dynamic.count").
 std::vector<OptionIssue> check(const SimOptions& options);
 
+// What the options ask for, computed from them alone: check() bounds the run's size with these
+// before anything is built, and Path and World size themselves with the same functions (options
+// are the bottom of sim: they call nothing above them).
+
 // Number of iterations the options ask for (loops or the explicit count).
 long long iteration_count(const SimOptions& options);
+// Length of one figure-eight loop at this scale, units.
+double scaled_loop_length(const SimOptions& options);
+// Arc length advanced per iteration: one loop in scale·iterations_per_loop iterations,
+// constant speed (spec 4.1.2).
+double step_length(const SimOptions& options);
+// Length of the centre line the point band is generated along (spec 4.3): one loop, or the
+// straight run plus line_margin.
+double field_length(const SimOptions& options);
+// Number of static points the band gets: density per 100 units times the field length.
+long long landmark_count(const SimOptions& options);
 
 }  // namespace relslam::sim

@@ -43,7 +43,4 @@ class Path {
   Rigid3 world_T_design_;
 };
 
-// Length of the centre line the band is generated along, without building the path.
-double field_length(const SimOptions& options);
-
 }  // namespace relslam::sim

@@ -44,7 +44,4 @@ class World {
   std::vector<DynamicMotion> motions_;
 };
 
-// Number of static points the band gets: density per 100 units times the field length.
-long long landmark_count(const SimOptions& options);
-
 }  // namespace relslam::sim
