@@ -24,7 +24,8 @@ namespace {
 
 constexpr const char* kFooter = R"(
 Scenarios are JSON files in scenarios/, one per thesis experiment (s-f8.json is the
-one-loop figure eight). Every key has a default; `relslam keys` lists them and
+one-loop figure eight). Every key has a default; `relslam keys` lists them,
+`relslam algorithms` the algorithms a scenario may run, and
 `relslam scenario FILE` shows a scenario with every default filled in.
 
 Examples:
