@@ -26,45 +26,39 @@ const PointSlamOptions& checked(const PointSlamOptions& options) {
 
 }  // namespace
 
-RltMapper::RltMapper(const PointSlamOptions& options)
-    : options_(checked(options)),
-      charting_(options.charting_capacity),
-      global_index_(spatial::make_global_index(options.global_index, options.global_cell_size,
-                                               std::max(options.global_bound, options.merge_bound))),
-      matcher_(options_) {}
+RltMapper::RltMapper(const PointSlamOptions& options) : options_(checked(options)), map_(options_), matcher_(options_) {}
 
 RltMapper::RltMapper(RltMapper&&) noexcept = default;
 RltMapper::~RltMapper() = default;
 
 StepResult RltMapper::step(const ObservationFrame& frame) {
   const int k = frame.iteration;
-  if (last_iteration_ != kNone && k <= last_iteration_)
-    throw std::logic_error("RltMapper::step: iteration " + std::to_string(k) + " after " + std::to_string(last_iteration_));
+  if (map_.iteration != kNone && k <= map_.iteration)
+    throw std::logic_error("RltMapper::step: iteration " + std::to_string(k) + " after " + std::to_string(map_.iteration));
   for (const Eigen::Vector3d& p : frame.points)
     if (!p.allFinite()) throw std::logic_error("RltMapper::step: non-finite observation at iteration " + std::to_string(k));
-  if (first_iteration_ == kNone) first_iteration_ = k;
-  last_iteration_ = k;
+  if (map_.first_iteration == kNone) map_.first_iteration = k;
+  map_.iteration = k;
 
   StepResult result;
   result.iteration = k;
-  changed_ = &result.changed;
   auto clock = Clock::now();
 
   // [init] Local candidates: latest observations of points seen in the last few iterations;
   // a non-incremental global index reloads the whole map here (Fig 110).
-  charting_.begin_iteration(k);
+  map_.charting.begin_iteration(k);
   build_local_index(k, frame.odometry);
-  global_index_->prepare();
+  map_.global_index->prepare();
   result.timings.init_ms = ms_since(clock);
 
   // [load] Local, then global matching, then new RltPoints (thesis 6.2.5).
-  const MatchResult& match = matcher_.match(frame.points, k, *global_index_, points_, pose_);
+  const MatchResult& match = matcher_.match(frame.points, k, *map_.global_index, map_.points, pose_);
   result.assignment = match.assigned;
   result.local_matches = match.local;
   result.global_matches = match.global;
   for (std::size_t i = 0; i < frame.points.size(); ++i) {
     PointId& id = result.assignment[i];
-    const bool returned = id != kNone && points_[id].last_iteration() < k - options_.match_look_back;
+    const bool returned = id != kNone && map_.points[id].last_iteration() < k - options_.match_look_back;
     if (id == kNone) {
       id = create_point(frame.points[i], k);
       ++result.new_points;
@@ -75,7 +69,7 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   result.timings.load_ms = ms_since(clock);
 
   // [merge] New points that turned out to be old ones (thesis 6.5.2).
-  if (options_.merge_points) merge_due(k, result);
+  if (options_.merge_points) result.merges = merging_.merge_due(map_, k, options_.merge_bound);
   result.timings.merge_ms = ms_since(clock);
 
   // [compute] Groups with a new observation, oldest first so anchors are fresh (spec 5.5).
@@ -83,88 +77,95 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   result.timings.compute_ms = ms_since(clock);
 
   // [creation] Temporary, then final groups (thesis 6.4.3), then clean-up (6.5.5).
-  create_groups(k, result);
-  if (k % options_.temporary_cleanup_period == 0) retire_redundant_temporary_groups(k);
+  const CreationReport created = creation_.create_groups(map_, k, options_);
+  result.groups_created = created.groups_created;
+  result.dynamic_flagged = created.dynamic_flagged;
+  result.binning_comparisons = created.binning_comparisons;
+  result.timings.binning_ms = created.binning_ms;
+  check_map_frame();
+  if (k % options_.temporary_cleanup_period == 0) creation_.retire_redundant_temporary_groups(map_, k, options_);
   result.timings.create_ms = ms_since(clock);
 
   // [pose] Current position (thesis 6.1): used for the next global matching and for metrics.
   update_pose(frame, result);
   result.timings.pose_ms = ms_since(clock);
-  changed_ = nullptr;
+  result.changed = map_.take_changed();
   return result;
 }
 
 void RltMapper::build_local_index(int k, const std::optional<Rigid3>& odometry) {
   scratch_ids_.clear();
-  charting_.enumerate_unique(k - options_.match_look_back, k - 1, scratch_ids_);
+  map_.charting.enumerate_unique(k - options_.match_look_back, k - 1, scratch_ids_);
   local_candidates_.clear();
   // The latest observation, wherever in the window it was (thesis 6.2.3). Dynamic points stay
   // locally matchable, so a mover does not start a new RltPoint every frame (spec 5.4).
   for (PointId id : scratch_ids_) {
-    const RltPoint& p = points_[id];
+    const RltPoint& p = map_.points[id];
     if (!p.merged) local_candidates_.push_back({id, p.observations.latest().p, p.observations.latest().iteration});
   }
   matcher_.prepare(local_candidates_, k, options_.use_odometry ? odometry : std::nullopt);
 }
 
 PointId RltMapper::create_point(const Eigen::Vector3d& p, int k) {
-  const auto id = static_cast<PointId>(points_.size());
-  points_.emplace_back(options_.ring_capacity);
-  RltPoint& point = points_.back();
+  const auto id = static_cast<PointId>(map_.points.size());
+  map_.points.emplace_back(options_.ring_capacity);
+  RltPoint& point = map_.points.back();
   point.id = id;
   point.creation_iteration = k;
   point.first_observation = {p, k};
   record(id, p, k, true);
-  if (options_.level3.enabled) level3_waiting_.push_back(id);
-  if (options_.merge_points) merge_checks_.emplace_back(k + options_.merge_delay, id);
+  creation_.add_point(id, options_);
+  if (options_.merge_points) merging_.schedule(id, k + options_.merge_delay);
   return id;
 }
 
 void RltMapper::record(PointId id, const Eigen::Vector3d& p, int k, bool returned) {
-  RltPoint& point = points_[id];
+  RltPoint& point = map_.points[id];
   point.observations.push({p, k});
   point.interval.add(k);
-  charting_.add(id);
+  map_.charting.add(id);
   // A point starting a visible run while still ungrouped at a level waits in that level's list,
   // its run's start standing in for the creation iteration. New points always enter both.
   if (returned && !point.dynamic) {
-    if (options_.temporary_group.enabled && !point.temporary_grouped && !point.final_grouped) temporary_list_.push(id, k);
-    if (options_.final_group.enabled && !point.final_grouped) final_list_.push(id, k);
+    if (options_.temporary_group.enabled && !point.temporary_grouped && !point.final_grouped) map_.temporary_list.push(id, k);
+    if (options_.final_group.enabled && !point.final_grouped) map_.final_list.push(id, k);
   }
   // Notify its groups (thesis 6.3.3): each is computed once this iteration.
-  if (group_queued_at_.size() < groups_.size()) group_queued_at_.resize(groups_.size(), kNone);
+  if (group_queued_at_.size() < map_.groups.size()) group_queued_at_.resize(map_.groups.size(), kNone);
   for (const RltGroupRef& ref : point.groups) {
-    if (!groups_[ref.group].alive() || group_queued_at_[ref.group] == k) continue;
+    if (!map_.groups[ref.group].alive() || group_queued_at_[ref.group] == k) continue;
     group_queued_at_[ref.group] = k;
     queued_groups_.push_back(ref.group);
   }
 }
 
-void RltMapper::set_global(PointId id, const Eigen::Vector3d& g) {
-  RltPoint& p = points_[id];
-  p.global = g;
-  p.has_global = true;
-  p.has_provisional = false;
-  any_mapped_ = true;
-  global_index_->place(id, g);
-  mark_changed(id);
+void RltMapper::compute_groups(int k) {
+  // Oldest group first, so anchors are refreshed before the groups that build on them (spec 5.5).
+  std::sort(queued_groups_.begin(), queued_groups_.end());
+  for (GroupId g : queued_groups_) {
+    RltGroup& group = map_.groups[g];
+    if (group.alive()) map_.compute(group, k, k);
+  }
+  queued_groups_.clear();
 }
 
-void RltMapper::mark_changed(PointId id) {
-  if (!changed_) return;
-  if (changed_at_.size() <= static_cast<std::size_t>(id)) changed_at_.resize(static_cast<std::size_t>(id) * 2 + 16, kNone);
-  if (changed_at_[id] == last_iteration_) return;
-  changed_at_[id] = last_iteration_;
-  changed_->push_back(id);
+void RltMapper::check_map_frame() {
+  // Every point of the first iteration has had its chance to root the map and none could: the
+  // map frame (the first observations, thesis 6.3.3) can never be fixed.
+  const RltUngroupedList& lowest = map_.list(options_.temporary_group.enabled ? GroupLevel::Temporary : GroupLevel::Final);
+  const bool first_iteration_tried = lowest.empty() || lowest.front().start > map_.first_iteration;
+  if (!map_.any_mapped && failure_.empty() && first_iteration_tried && !options_.provisional_root)
+    failure_ = "no group could be anchored to the first iteration's observations (the map frame): fewer than 3 points "
+               "were seen there often enough";
 }
 
 void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   const int k = frame.iteration;
-  const std::vector<PointId>& seen = charting_.at(k);
+  const std::vector<PointId>& seen = map_.charting.at(k);
   auto register_to = [&](bool provisional) -> std::optional<Rigid3> {
     std::vector<Eigen::Vector3d> robot, world;
     for (PointId id : seen) {
-      const RltPoint& p = points_[id];
+      const RltPoint& p = map_.points[id];
       if (p.dynamic || p.merged) continue;
       if (p.has_global) {
         robot.push_back(p.observations.latest().p);
@@ -177,7 +178,7 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     return rlt_icp(robot, world);
   };
 
-  if (k == first_iteration_) {
+  if (k == map_.first_iteration) {
     pose_ = Rigid3::identity();
     result.pose_source = PoseSource::Start;
   } else if (auto pose = register_to(false)) {
@@ -197,11 +198,11 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   // Provisional positions of the unmapped points seen now (Deviation, see options).
   if (options_.match_unmapped || options_.pose_from_unmapped)
     for (PointId id : seen) {
-      RltPoint& p = points_[id];
+      RltPoint& p = map_.points[id];
       if (p.has_global || p.dynamic || p.merged) continue;
       p.provisional = pose_ * p.observations.latest().p;
       p.has_provisional = true;
-      if (options_.match_unmapped) global_index_->place(id, p.provisional);
+      if (options_.match_unmapped) map_.global_index->place(id, p.provisional);
     }
 }
 

@@ -4,19 +4,16 @@
 
 #include "relslam/core/observation.hpp"
 #include "relslam/core/rigid.hpp"
-#include "relslam/point/group_planning.hpp"
+#include "relslam/point/group_creation.hpp"
 #include "relslam/point/options.hpp"
 #include "relslam/point/point_matching.hpp"
 #include "relslam/point/rlt_group.hpp"
+#include "relslam/point/rlt_map.hpp"
 #include "relslam/point/rlt_point.hpp"
-#include "relslam/point/rlt_point_charting.hpp"
-#include "relslam/point/rlt_ungrouped_list.hpp"
-#include "relslam/spatial/global_index.hpp"
+#include "relslam/point/rlt_point_merging.hpp"
 
-#include <deque>
-#include <memory>
+#include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace relslam::point {
@@ -57,17 +54,8 @@ struct StepResult {
   StepTimings timings;
 };
 
-struct GroupStats {
-  int created = 0;          // every group ever built
-  int alive = 0;
-  int temporary_alive = 0;
-  long long alive_members = 0;  // members of the alive groups, summed (thesis Fig 123: group size)
-  int final_created = 0;
-  int level3_created = 0;
-  int dynamic_points = 0;   // flagged so far
-  int merged_points = 0;    // merged so far
-};
-
+// Sequences one iteration (spec 5.3): matching, merging (rlt_point_merging.hpp), group
+// computation, group creation (group_creation.hpp) and the current pose, all on one RltMap.
 class RltMapper {
  public:
   // logic_error if check(options) finds a problem: callers validate user input first.
@@ -80,11 +68,11 @@ class RltMapper {
   RltMapper(RltMapper&&) noexcept;
   ~RltMapper();
 
-  const std::vector<RltPoint>& points() const { return points_; }
-  const std::vector<RltGroup>& groups() const { return groups_; }
+  const std::vector<RltPoint>& points() const { return map_.points; }
+  const std::vector<RltGroup>& groups() const { return map_.groups; }
   const Rigid3& pose() const { return pose_; }
-  GroupStats group_stats() const { return stats_; }
-  int first_iteration() const { return first_iteration_; }
+  GroupStats group_stats() const { return map_.stats; }
+  int first_iteration() const { return map_.first_iteration; }
   // Empty while the run is healthy; otherwise why no map can ever be built.
   const std::string& failure() const { return failure_; }
   const PointSlamOptions& options() const { return options_; }
@@ -94,51 +82,22 @@ class RltMapper {
   void record(PointId id, const Eigen::Vector3d& p, int k, bool returned);
   PointId create_point(const Eigen::Vector3d& p, int k);
   void compute_groups(int k);
-  void anchor(RltGroup& group);
-  void create_groups(int k, StepResult& result);
-  bool try_create(GroupLevel level, const RltUngroupedList::Entry& entry, int k, StepResult& result);
-  void create_level3_groups(int k, StepResult& result);
-  // Builds the planned group and hands its new members over (ownership by level, spec 5.6).
-  void build_group(GroupLevel level, int c0, int k, const GroupPlan& plan);
-  void mark_dynamic(PointId id, StepResult& result);
-  void retire(RltGroup& group);
-  void retire_redundant_temporary_groups(int k);
-  void merge_due(int k, StepResult& result);
-  void merge(PointId newer, PointId older, int k);
+  void check_map_frame();
   void update_pose(const ObservationFrame& frame, StepResult& result);
-  void set_global(PointId id, const Eigen::Vector3d& g);
-  void mark_changed(PointId id);
-  RltUngroupedList& list(GroupLevel level) { return level == GroupLevel::Temporary ? temporary_list_ : final_list_; }
-  const GroupLevelOptions& level_options(GroupLevel level) const {
-    return level == GroupLevel::Temporary ? options_.temporary_group : options_.final_group;
-  }
 
   PointSlamOptions options_;
-  std::vector<RltPoint> points_;
-  std::vector<RltGroup> groups_;
-  RltPointCharting charting_;
-  std::unique_ptr<spatial::GlobalIndex> global_index_;
-  RltUngroupedList temporary_list_, final_list_;
-  std::vector<PointId> level3_waiting_;  // not yet level-3 grouped, creation order
+  RltMap map_;
   PointMatcher matcher_;
-  GroupPlanner planner_;
-  std::deque<GroupId> temporary_to_review_;  // temporary groups in creation order, for clean-up
-  std::deque<std::pair<int, PointId>> merge_checks_;  // (iteration due, point), in due order
-
+  GroupCreation creation_;
+  RltPointMerging merging_;
   Rigid3 pose_;
-  int first_iteration_ = kNone;
-  int last_iteration_ = kNone;
-  bool any_mapped_ = false;
-  GroupStats stats_;
   std::string failure_;
 
   // Per-iteration scratch.
   std::vector<PointId> scratch_ids_;
   std::vector<LocalCandidate> local_candidates_;
-  std::vector<GroupId> queued_groups_;
+  std::vector<GroupId> queued_groups_;  // groups notified this iteration (thesis 6.3.3)
   std::vector<int> group_queued_at_;
-  std::vector<int> changed_at_;
-  std::vector<PointId>* changed_ = nullptr;
 };
 
 }  // namespace relslam::point

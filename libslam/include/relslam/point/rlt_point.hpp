@@ -59,7 +59,8 @@ struct RltGroupRef {
   int member = 0;  // index in the group's member list
 };
 
-// One landmark of the map. Plain data kept consistent by RltMapper; readers get it const.
+// One landmark of the map. Plain data kept consistent by RltMapper and the stages it runs on its
+// RltMap (rlt_map.hpp); readers get it const.
 struct RltPoint {
   PointId id = kNone;
   int creation_iteration = 0;

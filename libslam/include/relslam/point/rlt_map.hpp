@@ -1,0 +1,76 @@
+#pragma once
+// The map of the Relative Point algorithm: the master storage of RltPoints and RltGroups that
+// the thesis keeps in RltMapper (6.4.3), with the indexes kept beside them. Eigen only.
+
+#include "relslam/point/options.hpp"
+#include "relslam/point/rlt_group.hpp"
+#include "relslam/point/rlt_point.hpp"
+#include "relslam/point/rlt_point_charting.hpp"
+#include "relslam/point/rlt_ungrouped_list.hpp"
+#include "relslam/spatial/global_index.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace relslam::point {
+
+struct GroupStats {
+  int created = 0;          // every group ever built
+  int alive = 0;
+  int temporary_alive = 0;
+  long long alive_members = 0;  // members of the alive groups, summed (thesis Fig 123: group size)
+  int final_created = 0;
+  int level3_created = 0;
+  int dynamic_points = 0;   // flagged so far
+  int merged_points = 0;    // merged so far
+};
+
+// RltMapper's steps, group creation (group_creation.hpp) and RltPoint merging
+// (rlt_point_merging.hpp) all edit this one map. Points and groups are never deleted, only
+// flagged (thesis 6.4.3: master lists, no garbage collection), so ids index the vectors.
+// Invariants, kept by the methods below (the edits that change more than one part): a point's
+// map position and the global index agree; a retired group is in no member's refs; `stats`
+// counts the alive groups and their members; `changed` lists each point whose map state
+// changed this iteration once.
+struct RltMap {
+  // Sized from the options (charting capacity, global index kind and cell).
+  explicit RltMap(const PointSlamOptions& options);
+
+  std::vector<RltPoint> points;
+  std::vector<RltGroup> groups;
+  RltPointCharting charting;
+  // Positions of the mapped points (and, with match_unmapped, provisional ones), for global
+  // matching and merging (thesis 6.5.1).
+  std::unique_ptr<spatial::GlobalIndex> global_index;
+  // RltPoints waiting for a group, one list per level (thesis 6.4.2).
+  RltUngroupedList temporary_list, final_list;
+  GroupStats stats;
+  int first_iteration = kNone;  // its robot frame is the map frame (thesis 6.3.3)
+  bool any_mapped = false;      // some point has had a map position
+  int iteration = kNone;        // the iteration being processed
+
+  RltUngroupedList& list(GroupLevel level) { return level == GroupLevel::Temporary ? temporary_list : final_list; }
+
+  // ComputeRltGroup (thesis 6.3.3): accumulates the iterations of [from, k] the group can use
+  // and, if any was added, anchors it.
+  void compute(RltGroup& group, int from, int k);
+  // Thesis 6.3.3 step 4: registers the group (as its Registration says) and writes the map
+  // position of every member it owns; anchors are registration sources and never rewritten by
+  // this group (spec 5.5).
+  void anchor(RltGroup& group);
+  // Gives a point its map position (and its place in the global index).
+  void set_global(PointId id, const Eigen::Vector3d& g);
+  // Retires a group (thesis 6.3.3: a group never changes; it is replaced): off its members'
+  // refs and out of the counts.
+  void retire(RltGroup& group);
+  // Records that a point's map state changed this iteration (StepResult::changed).
+  void mark_changed(PointId id);
+  // The points marked this iteration, in marking order; the list starts empty again.
+  std::vector<PointId> take_changed();
+
+ private:
+  std::vector<PointId> changed_;
+  std::vector<int> changed_at_;  // per point: the iteration it was last marked
+};
+
+}  // namespace relslam::point
