@@ -140,6 +140,45 @@ TEST(RltXPointsS, HallwayGroupsAreLinkedByTwoPlanesSeenLatest) {
   }
 }
 
+TEST(RltXPointsS, HallwayStaysExactWithGroupIntervalsOrOneLinkingPlane) {
+  const test::PlaneRun world = hallway_there_and_back();
+  RelativePlaneOptions group_mode;
+  group_mode.interval_mode = IntervalMode::Group;  // Fig 74's choice
+  RelativePlaneOptions one_link;
+  one_link.rules.two_linking_planes = false;  // Rule 8 off
+  for (const RelativePlaneOptions& options : {group_mode, one_link}) {
+    const RunSummary s = run(test::hallway_walls(), world, options);
+    EXPECT_LT(s.worst_pose, kNoiseFree);
+    EXPECT_LT(s.worst_map, kNoiseFree);
+    EXPECT_EQ(s.rlt_planes, s.walls_seen);
+  }
+  RltXPointsS slam(one_link, world.world_T_robot.front());
+  for (const PlaneFrame& frame : world.frames) slam.step(frame);
+  for (std::size_t k = 1; k < slam.links().size(); ++k) EXPECT_EQ(slam.links()[k].planes.size(), 1u);
+}
+
+TEST(RltXPointsS, WithoutRule3TheFourPlanesMapBreaksOnceTheRobotTurns) {
+  const std::vector<test::Wall> walls = test::four_planes_walls();
+  const test::PlaneRun world = test::run_path(walls, test::four_planes_path(1, 0.1, 5 * kPi / 180), {.always = true});
+  RelativePlaneOptions raw;
+  raw.rules.rotate_to_first = false;
+  EXPECT_GT(run(walls, world, raw).worst_map, 0.1);
+  EXPECT_LT(run(walls, world).worst_map, kNoiseFree);
+}
+
+TEST(RltXPointsS, WithoutRule4TheMapStaysInTheFrameOfTheFirstGroupsBasePlane) {
+  const std::vector<test::Wall> walls = test::four_planes_walls();
+  const test::PlaneRun world = test::run_path(walls, test::four_planes_path(1, 0.1, 5 * kPi / 180), {.always = true});
+  RelativePlaneOptions unanchored;
+  unanchored.rules.anchor_first_observation = false;
+  RltXPointsS slam(unanchored, world.world_T_robot.front());
+  for (const PlaneFrame& frame : world.frames) slam.step(frame);
+  const MapPlane& base = slam.map()[slam.xpoints().front().planes().front()];
+  ASSERT_TRUE(base.mapped);
+  EXPECT_LT(base.world_T_plane.translation.norm(), 1e-12);
+  EXPECT_NEAR(base.world_T_plane.heading, 0, 1e-12);
+}
+
 TEST(RltXPointsS, SameInputGivesTheSameRun) {
   const test::PlaneRun world = hallway_there_and_back();
   RltXPointsS a({}, world.world_T_robot.front()), b({}, world.world_T_robot.front());
