@@ -1,0 +1,82 @@
+#pragma once
+// RltMapBuilder (thesis 4.4.3.11; spec §5.8, §5.9, §5.4.2 step 3): the global map from the
+// groups and their links, the current pose from this iteration's observations, and matching an
+// observation against the map.
+
+#include "relslam/core/planar_pose.hpp"
+#include "relslam/core/plane_object.hpp"
+#include "relslam/plane/ids.hpp"
+#include "relslam/plane/plane_object.hpp"
+#include "relslam/plane/rlt_plane.hpp"
+#include "relslam/plane/rlt_xpoint.hpp"
+#include "relslam/plane/rlt_xpoint_link.hpp"
+
+#include <span>
+#include <vector>
+
+namespace relslam::plane {
+
+// One global-map entry per RltPlane (spec §5.8).
+struct MapPlane {
+  bool mapped = false;
+  PlaneObject plane;            // world frame, at `length`; plane.iteration is meaningless
+  PlanarPose world_T_plane;     // the reference point and direction (plane.pose())
+  double length = 0;
+  XPointId source = kNone;      // the group that placed it
+  KeyPoint key_point = KeyPoint::None;
+};
+
+// RltPoset (thesis 4.4.3.18): a pose and whether it could be computed.
+struct RltPoset {
+  PlanarPose world_T_robot;
+  bool valid = false;
+  int planes_used = 0;  // observations that gave it (Rule 5)
+};
+
+// An observation of this iteration and the RltPlane it was registered to.
+struct RegisteredObservation {
+  const PlaneObject* observation = nullptr;
+  PlaneId plane = kNone;
+};
+
+// A candidate registration, as MatchPlane scored it.
+struct PlaneMatch {
+  int observation = 0;  // index in the iteration's input
+  PlaneId plane = kNone;
+  double score = 0;
+};
+
+class RltMapBuilder {
+ public:
+  // BuildMap (Rules 4, 6, 8): places every group by walking the links in creation order and
+  // writes each plane of a placed group onto the map — the first group to place it wins, a
+  // later one only with a larger size [T]. X0 is put where its planes' first observations,
+  // seen from world_T_start, say (Rule 4; `anchor` false leaves it at the identity); every
+  // other group where its linking planes' two memberships agree, averaged (Rule 8).
+  void build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
+                 const std::vector<RltPlane>& planes, const PlanarPose& world_T_start, bool anchor,
+                 double same_length);
+
+  // GetPoset (Rule 5): the mean of CalculateOffset over the observations whose RltPlane is on
+  // the map at the same size; recomputed from scratch each iteration, never carried forward.
+  // Part 2 grows partial observations first (Rules 16, 19).
+  RltPoset get_poset(std::span<const RegisteredObservation> observations, double same_length) const;
+
+  // MatchPlanetoMap (Rule 11): every mapped plane not in `taken`, seen from world_T_robot,
+  // scored against `observation` (robot frame); candidates go to `out` (the caller keeps the
+  // best).
+  void match_plane_to_map(int observation_index, const PlaneObject& observation, const PlanarPose& world_T_robot,
+                          const MatchBounds& bounds, bool same_normal_direction, const std::vector<char>& taken,
+                          std::vector<PlaneMatch>& out) const;
+
+  const std::vector<MapPlane>& map() const { return map_; }
+  int mapped_count() const { return mapped_count_; }
+
+ private:
+  void place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, double same_length);
+
+  std::vector<MapPlane> map_;
+  int mapped_count_ = 0;
+};
+
+}  // namespace relslam::plane

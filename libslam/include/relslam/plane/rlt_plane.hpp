@@ -1,0 +1,67 @@
+#pragma once
+// RltPlane (thesis 4.2.1, 4.4.3.4; spec §5.2): every untransformed observation of one physical
+// plane, kept in the robot frame it was seen in (Fig 65), and its group memberships.
+
+#include "relslam/core/plane_object.hpp"
+#include "relslam/plane/ids.hpp"
+#include "relslam/plane/plane_object.hpp"
+#include "relslam/plane/rlt_plane_interval.hpp"
+#include "relslam/plane/rlt_xpoint_ref.hpp"
+
+#include <vector>
+
+namespace relslam::plane {
+
+// Invariant: the stored observations are in strictly increasing iteration order (at most one a
+// iteration) and the newest `capacity` of them are kept: a circular array that grows on
+// demand, then overwrites the oldest (the thesis's runs used 1200, Figs 98–99).
+class RltPlane {
+ public:
+  RltPlane(PlaneId id, const PlaneObject& first, int capacity);
+
+  PlaneId id() const { return id_; }
+  int created_iteration() const { return first_.iteration; }
+  // AddtoTPlane: stores the observation; logic_error unless it comes after the latest.
+  void add(const PlaneObject& observation);
+
+  // The latest stored observation: what MatchTPlane compares with (Rule 1).
+  const PlaneObject& latest() const { return (*this)[size_ - 1]; }
+  int last_iteration() const { return latest().iteration; }
+  // The first observation ever, kept after the array overwrote it (Rule 4's anchor).
+  const PlaneObject& first_observation() const { return first_; }
+  // Observations ever added (the thesis's "readings"), overwritten ones included.
+  int readings() const { return intervals_.total_size(); }
+  // Every iteration the plane was seen in, overwritten ones included (GetInterval).
+  const RltPlaneInterval& intervals() const { return intervals_; }
+
+  // Stored observations by logical index, 0 = the oldest kept.
+  int size() const { return size_; }
+  const PlaneObject& operator[](int i) const {
+    const int j = head_ + i;
+    return storage_[j < capacity_ ? j : j - capacity_];
+  }
+  // Logical index of the first stored observation at or after `iteration` (size() if none):
+  // a binary search, after which an enumeration steps in O(1) (GetPlane, thesis 4.4.3.4).
+  int lower_bound(int iteration) const;
+  // GetPlane: the observation at `iteration`, or nullptr when not seen or overwritten.
+  const PlaneObject* get_plane(int iteration) const;
+
+  // Memberships (two-way: the group lists this plane too).
+  const std::vector<RltXPointRef>& refs() const { return refs_; }
+  // GetRltXPointRef(X): nullptr when the plane is not in X.
+  const RltXPointRef* ref(XPointId x) const;
+  RltXPointRef* ref(XPointId x);
+  RltXPointRef& join(XPointId x, int iteration);
+
+ private:
+  PlaneId id_;
+  PlaneObject first_;
+  std::vector<PlaneObject> storage_;
+  int capacity_;
+  int head_ = 0;  // physical index of the oldest kept observation
+  int size_ = 0;
+  RltPlaneInterval intervals_;
+  std::vector<RltXPointRef> refs_;
+};
+
+}  // namespace relslam::plane

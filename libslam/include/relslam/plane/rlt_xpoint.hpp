@@ -1,0 +1,76 @@
+#pragma once
+// RltXPoint (thesis 4.3.2, 4.4.3.2; spec §5.5.2, §5.7): a group of RltPlanes seen together and
+// their relative map, chained from pairwise comparisons.
+
+#include "relslam/core/planar_pose.hpp"
+#include "relslam/plane/ids.hpp"
+#include "relslam/plane/options.hpp"
+#include "relslam/plane/rlt_plane.hpp"
+#include "relslam/plane/rlt_plane_compare.hpp"
+#include "relslam/plane/rlt_plane_interval.hpp"
+
+#include <vector>
+
+namespace relslam::plane {
+
+// Invariant: every plane of the chain lists this group among its refs exactly once, and the
+// chain holds each plane once. The relative map lives in those refs: the base (first) plane's
+// reference point is the group's origin.
+class RltXPoint {
+ public:
+  RltXPoint(XPointId id, int created_iteration, std::vector<PlaneId> chain);
+
+  XPointId id() const { return id_; }
+  int created_iteration() const { return created_iteration_; }
+  // The comparison chain: planes[i−1] is compared with planes[i]; planes[0] is the base.
+  // First in RltPlane creation order (spec A38: the order the sensor reported them).
+  const std::vector<PlaneId>& planes() const { return chain_; }
+  // Groups linked to this one either way (EnumXPConection).
+  const std::vector<XPointId>& adjacent() const { return adjacent_; }
+  // The last comparison of each chain edge: edges()[i] compares planes[i] with planes[i+1].
+  const std::vector<CompareResult>& edges() const { return edges_; }
+
+  // Rule 7 (CanAdd, spec §5.5.2): `candidate` was seen together with every plane of the group
+  // for at least `min_common` iterations.
+  bool can_add(const std::vector<RltPlane>& planes, const RltPlane& candidate, int min_common) const;
+  // GetMinimumInterval over all planes: the iterations in which every plane was seen.
+  void common_interval(const std::vector<RltPlane>& planes, RltPlaneInterval& out) const;
+
+  // Appends `plane` to the chain and gives it its membership.
+  void add_plane(std::vector<RltPlane>& planes, PlaneId plane, int iteration);
+  void add_adjacent(XPointId other) { adjacent_.push_back(other); }
+  // A new comparison order over the same planes (the hook of Rule 30's ReorderPlanes; Rule 2
+  // says a noise-free map does not depend on it). logic_error if the planes differ.
+  void set_chain(std::vector<PlaneId> order);
+
+  // ComputeXPoint (spec §5.7): compares each chain edge and composes the results into every
+  // plane's pose in the group frame (SE(2) composition: the thesis's "add the running offset",
+  // Rules 2, 6). A plane after an edge with no common iteration is marked invalid.
+  void compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
+
+  // Set when one of the planes got an observation or the chain changed: the group is then
+  // recomputed; groups that saw nothing new cost nothing (thesis 4.2.2).
+  bool needs_compute() const { return needs_compute_; }
+  void mark_changed() { needs_compute_ = true; }
+
+  // Placed by RltMapBuilder::build_map: world_T_xpoint.
+  const PlanarPose& world_pose() const { return world_pose_; }
+  bool placed() const { return placed_; }
+  void place(const PlanarPose& world_T_xpoint, bool placed) {
+    world_pose_ = world_T_xpoint;
+    placed_ = placed;
+  }
+
+ private:
+  XPointId id_;
+  int created_iteration_;
+  std::vector<PlaneId> chain_;
+  std::vector<XPointId> adjacent_;
+  std::vector<CompareResult> edges_;
+  bool needs_compute_ = true;
+  PlanarPose world_pose_;
+  bool placed_ = false;
+  RltPlaneInterval scratch_common_;  // reused by compute() in IntervalMode::Group
+};
+
+}  // namespace relslam::plane

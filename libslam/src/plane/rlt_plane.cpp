@@ -1,0 +1,59 @@
+#include "relslam/plane/rlt_plane.hpp"
+
+#include <algorithm>
+#include <ranges>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace relslam::plane {
+
+RltPlane::RltPlane(PlaneId id, const PlaneObject& first, int capacity) : id_(id), first_(first), capacity_(capacity) {
+  if (capacity < 1) throw std::logic_error("RltPlane: capacity must be >= 1, got " + std::to_string(capacity));
+  add(first);
+}
+
+void RltPlane::add(const PlaneObject& observation) {
+  if (size_ > 0 && observation.iteration <= last_iteration())
+    throw std::logic_error("RltPlane::add: plane " + std::to_string(id_) + " got iteration " +
+                           std::to_string(observation.iteration) + " after " + std::to_string(last_iteration()));
+  intervals_.add(observation.iteration);
+  if (size_ < capacity_) {
+    storage_.push_back(observation);  // still growing: the oldest stays at index 0
+    ++size_;
+  } else {
+    storage_[head_] = observation;  // full: the newest replaces the oldest
+    head_ = head_ + 1 < capacity_ ? head_ + 1 : 0;
+  }
+}
+
+int RltPlane::lower_bound(int iteration) const {
+  // Logical indices are sorted by iteration even when the physical array has wrapped.
+  const auto logical = std::views::iota(0, size_);
+  const auto first = std::ranges::partition_point(logical, [&](int i) { return (*this)[i].iteration < iteration; });
+  return static_cast<int>(first - logical.begin());
+}
+
+const PlaneObject* RltPlane::get_plane(int iteration) const {
+  if (iteration == last_iteration()) return &latest();  // the common question
+  const int i = lower_bound(iteration);
+  return i < size_ && (*this)[i].iteration == iteration ? &(*this)[i] : nullptr;
+}
+
+const RltXPointRef* RltPlane::ref(XPointId x) const {
+  const auto it = std::ranges::find(refs_, x, &RltXPointRef::xpoint);
+  return it == refs_.end() ? nullptr : &*it;
+}
+
+RltXPointRef* RltPlane::ref(XPointId x) { return const_cast<RltXPointRef*>(std::as_const(*this).ref(x)); }
+
+RltXPointRef& RltPlane::join(XPointId x, int iteration) {
+  if (ref(x) != nullptr)
+    throw std::logic_error("RltPlane::join: plane " + std::to_string(id_) + " is already in X" + std::to_string(x));
+  RltXPointRef& joined = refs_.emplace_back();
+  joined.xpoint = x;
+  joined.join_iteration = iteration;
+  return joined;
+}
+
+}  // namespace relslam::plane

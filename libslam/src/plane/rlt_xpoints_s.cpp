@@ -1,0 +1,326 @@
+#include "relslam/plane/rlt_xpoints_s.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace relslam::plane {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Milliseconds since `start`, which moves on to now.
+double lap(Clock::time_point& start) {
+  const Clock::time_point now = Clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+  start = now;
+  return ms;
+}
+
+}  // namespace
+
+RltXPointsS::RltXPointsS(const RelativePlaneOptions& options, const PlanarPose& world_T_start)
+    : options_(options), world_T_start_(world_T_start) {
+  const std::vector<OptionIssue> issues = check(options);
+  if (!issues.empty())
+    throw std::logic_error("RltXPointsS: options." + issues.front().field + ": " + issues.front().problem);
+}
+
+RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
+  if (started_ && frame.iteration <= iteration_)
+    throw std::logic_error("RltXPointsS::step: iteration " + std::to_string(frame.iteration) + " after " +
+                           std::to_string(iteration_));
+  RelativePlaneStep result;
+  result.iteration = frame.iteration;
+  Clock::time_point t = Clock::now();
+  start_iteration(frame.iteration);
+  add_planes(frame, result);
+  result.timings.add_ms = lap(t);
+  manage_xpoints(result);
+  result.timings.manage_ms = lap(t);
+  compute_xpoints(result);
+  result.timings.compute_ms = lap(t);
+  builder_.build_map(links_, xpoints_, planes_, world_T_start_, options_.rules.anchor_first_observation,
+                     options_.same_length);
+  result.timings.build_ms = lap(t);
+  get_poset();
+  result.timings.pose_ms = lap(t);
+
+  result.world_T_robot = pose_.world_T_robot;
+  result.pose_valid = pose_.valid;
+  result.pose_planes = pose_.planes_used;
+  result.assignment = assignment_;
+  result.map = builder_.map();
+  result.groups = xpoints_;
+  result.links = links_;
+  result.current_group = current_;
+  return result;
+}
+
+void RltXPointsS::start_iteration(int iteration) {
+  iteration_ = iteration;
+  started_ = true;
+  // Only RltPlanes seen within the iteration gap can pass MatchPlane's last test, so Rule 1
+  // needs to look at no others (spec §5.15: registration linear in the planes seen).
+  const int gap = options_.local_match.max_iteration_gap;
+  std::erase_if(recent_, [&](PlaneId p) {
+    const bool stale = gap >= 0 && iteration - planes_[p].last_iteration() > gap;
+    if (stale) in_recent_[p] = 0;
+    return stale;
+  });
+  taken_.assign(planes_.size(), 0);
+  // Part 2: clear RltXPointChart and the global-match list here (Rules 21, 22).
+}
+
+void RltXPointsS::add_planes(const PlaneFrame& frame, RelativePlaneStep& result) {
+  // The frame's planes stamped with its iteration (MatchPlane's gap test and the arrays use it).
+  stamped_.assign(frame.planes.begin(), frame.planes.end());
+  for (PlaneObject& p : stamped_) p.iteration = frame.iteration;
+  assignment_.assign(stamped_.size(), kNone);
+  const RuleSwitches& rules = options_.rules;
+  const std::vector<MapPlane>& map = builder_.map();
+
+  // Rule 1: each observation against the previous observation of every recently seen RltPlane
+  // (thesis 4.2.1: "the last added untransformed plane in every rltplane"). Deviation: the
+  // thesis tries the current group, its neighbours, the map, then the unassigned list, as a
+  // saving; those groups hold every RltPlane that can pass the gap test, and the map only
+  // takes observations no recent plane matched, so the outcome is the same.
+  matches_.clear();
+  for (int i = 0; i < static_cast<int>(stamped_.size()); ++i)
+    for (PlaneId p : recent_) {
+      const bool mapped = p < static_cast<PlaneId>(map.size()) && map[p].mapped;
+      if (!rules.local_registration && mapped) continue;  // Rule 1 off: mapped planes via the pose
+      const double score = match_plane(planes_[p].latest(), stamped_[i], options_.local_match, rules.normal_direction);
+      if (score >= 0) matches_.push_back({i, p, score});
+    }
+  register_matches(result.local_matches);
+
+  // Rule 11: what no recent RltPlane took is placed with the last pose and matched to the map.
+  if (rules.global_matching && last_valid_pose_.valid) {
+    matches_.clear();
+    for (int i = 0; i < static_cast<int>(stamped_.size()); ++i)
+      if (assignment_[i] == kNone)
+        builder_.match_plane_to_map(i, stamped_[i], last_valid_pose_.world_T_robot, options_.global_match,
+                                    rules.normal_direction, taken_, matches_);
+    register_matches(result.global_matches);
+    // Part 2: the re-acquired planes go to the global-match list for ManageXPoints (Rule 21).
+  }
+
+  // Anything left is a plane not seen before: a new RltPlane in the unassigned list.
+  for (int i = 0; i < static_cast<int>(stamped_.size()); ++i)
+    if (assignment_[i] == kNone) {
+      assignment_[i] = create_plane(stamped_[i]);
+      ++result.new_planes;
+    }
+}
+
+void RltXPointsS::register_matches(int& counter) {
+  // Best score first across all pairs (spec §5.4.1: at most one observation per RltPlane per
+  // iteration); ties in input order, then creation order, so runs are deterministic.
+  std::ranges::sort(matches_, [](const PlaneMatch& x, const PlaneMatch& y) {
+    if (x.score != y.score) return x.score > y.score;
+    return std::pair(x.observation, x.plane) < std::pair(y.observation, y.plane);
+  });
+  for (const PlaneMatch& m : matches_) {
+    if (assignment_[m.observation] != kNone || taken_[m.plane]) continue;
+    assignment_[m.observation] = m.plane;
+    add_to_plane(m.plane, stamped_[m.observation]);
+    ++counter;
+  }
+}
+
+void RltXPointsS::add_to_plane(PlaneId plane, const PlaneObject& observation) {
+  // AddtoTPlane: store it, and every group holding the plane has new data to compute.
+  planes_[plane].add(observation);
+  taken_[plane] = 1;
+  for (const RltXPointRef& ref : planes_[plane].refs()) xpoints_[ref.xpoint].mark_changed();
+  if (!in_recent_[plane]) {
+    in_recent_[plane] = 1;
+    recent_.push_back(plane);
+  }
+  // Part 2: RltXPointChart::ChartXPoints(plane) (Rule 22).
+}
+
+PlaneId RltXPointsS::create_plane(const PlaneObject& observation) {
+  const PlaneId id = static_cast<PlaneId>(planes_.size());
+  planes_.emplace_back(id, observation, options_.plane_capacity);
+  unassigned_.push_back(id);
+  recent_.push_back(id);
+  in_recent_.push_back(1);
+  taken_.push_back(1);
+  return id;
+}
+
+void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
+  // Spec §5.5.1 step A, with the bootstrap of A23: the first group waits for two planes.
+  if (xpoints_.empty()) bootstrap(result);
+  if (!xpoints_.empty()) {
+    std::size_t kept = 0;
+    for (PlaneId q : unassigned_) {
+      const bool grouped =
+          planes_[q].readings() >= options_.min_readings && (join_group(q) || make_new_xpoint(q, result));
+      if (grouped)
+        ++result.planes_grouped;
+      else
+        unassigned_[kept++] = q;
+    }
+    unassigned_.resize(kept);
+  }
+  // Part 2: step B, the globally matched planes (Rules 21, 29, 37).
+  upkeep_unassigned();
+  // Part 2: step D picks the current group by charting (Rule 22). Until then the working
+  // group stays current — the group last started — as before Rule 22 in the thesis (4.3.5).
+}
+
+bool RltXPointsS::bootstrap(RelativePlaneStep& result) {
+  // X0: the ready unassigned planes, in creation order, that share min_common iterations.
+  candidates_.clear();
+  RltPlaneInterval shared, narrowed;
+  for (PlaneId q : unassigned_) {
+    if (planes_[q].readings() < options_.min_readings) continue;
+    if (!candidates_.empty()) {
+      if (RltPlaneInterval::common_size(shared, planes_[q].intervals()) < options_.min_common) continue;
+      RltPlaneInterval::minimum_interval(shared, planes_[q].intervals(), narrowed);
+      std::swap(shared, narrowed);
+    } else {
+      shared = planes_[q].intervals();
+    }
+    candidates_.push_back(q);
+  }
+  if (candidates_.size() < 2) return false;
+  create_xpoint(candidates_, kNone, {});
+  std::erase_if(unassigned_, [&](PlaneId q) { return std::ranges::find(candidates_, q) != candidates_.end(); });
+  ++result.groups_created;
+  result.planes_grouped += static_cast<int>(candidates_.size());
+  return true;
+}
+
+bool RltXPointsS::join_group(PlaneId plane) {
+  if (current_ == kNone) return false;
+  // Rule 7 in the working group, then in its neighbours (spec §5.5.1 A).
+  const auto fits = [&](XPointId x) {
+    return !options_.rules.common_interval || xpoints_[x].can_add(planes_, planes_[plane], options_.min_common);
+  };
+  XPointId target = fits(current_) ? current_ : kNone;
+  for (std::size_t k = 0; target == kNone && k < xpoints_[current_].adjacent().size(); ++k)
+    if (fits(xpoints_[current_].adjacent()[k])) target = xpoints_[current_].adjacent()[k];
+  if (target == kNone) return false;
+  xpoints_[target].add_plane(planes_, plane, iteration_);
+  return true;
+}
+
+bool RltXPointsS::make_new_xpoint(PlaneId plane, RelativePlaneStep& result) {
+  // TraverseToLink (Rule 12): depth first over every group from the working one, each visited
+  // once; the first that can give linking planes is linked to.
+  visited_.assign(xpoints_.size(), 0);
+  stack_.assign(1, current_);
+  std::vector<PlaneId> linking;
+  while (!stack_.empty()) {
+    const XPointId x = stack_.back();
+    stack_.pop_back();
+    if (visited_[x]) continue;
+    visited_[x] = 1;
+    if (link_to_new_xpoint(x, plane, linking)) {
+      std::vector<PlaneId> chain = linking;
+      chain.push_back(plane);
+      std::ranges::sort(chain);  // creation order (spec §5.5.3)
+      current_ = create_xpoint(std::move(chain), x, std::move(linking));
+      ++result.groups_created;
+      return true;
+    }
+    if (!options_.rules.traverse_to_link) break;
+    const std::vector<XPointId>& next = xpoints_[x].adjacent();
+    stack_.insert(stack_.end(), next.rbegin(), next.rend());
+  }
+  return false;  // retried next iteration (spec A22)
+}
+
+bool RltXPointsS::link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<PlaneId>& linking) {
+  // LinkToNewXPoint (Rules 8, 9): planes of `from` placed in it and seen recently together
+  // with the new plane.
+  const RltPlane& q = planes_[plane];
+  candidates_.clear();
+  for (PlaneId l : xpoints_[from].planes()) {
+    const RltPlane& link = planes_[l];
+    if (l == plane || !link.ref(from)->valid || iteration_ - link.last_iteration() > options_.link_window) continue;
+    if (RltPlaneInterval::common_size(link.intervals(), q.intervals()) >= options_.min_common) candidates_.push_back(l);
+  }
+  // Rule 9: latest first seen first (off: earliest); creation order breaks ties.
+  const bool latest = options_.rules.latest_linking_planes;
+  std::ranges::sort(candidates_, [&](PlaneId x, PlaneId y) {
+    const int cx = planes_[x].created_iteration(), cy = planes_[y].created_iteration();
+    if (cx != cy) return latest ? cx > cy : cx < cy;
+    return x < y;
+  });
+  linking.clear();
+  if (candidates_.empty()) return false;
+  if (!options_.rules.two_linking_planes) {
+    linking.push_back(candidates_.front());
+    return true;
+  }
+  // Rule 8: a second plane seen with both; among the equally recent ones the farthest from the
+  // first, for a better-conditioned average (spec A21: the thesis's "distance").
+  for (std::size_t a = 0; a + 1 < candidates_.size(); ++a) {
+    const RltPlane& first = planes_[candidates_[a]];
+    RltPlaneInterval::minimum_interval(first.intervals(), q.intervals(), scratch_interval_);
+    PlaneId best = kNone;
+    double best_distance = -1;
+    for (std::size_t b = a + 1; b < candidates_.size(); ++b) {
+      const RltPlane& second = planes_[candidates_[b]];
+      if (best != kNone && second.created_iteration() != planes_[best].created_iteration()) break;
+      if (RltPlaneInterval::common_size(scratch_interval_, second.intervals()) < options_.min_common) continue;
+      const double distance =
+          (second.ref(from)->pose.translation - first.ref(from)->pose.translation).norm();
+      if (distance > best_distance) {
+        best = candidates_[b];
+        best_distance = distance;
+      }
+    }
+    if (best != kNone) {
+      linking = {candidates_[a], best};
+      return true;
+    }
+  }
+  return false;
+}
+
+XPointId RltXPointsS::create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking) {
+  const XPointId id = static_cast<XPointId>(xpoints_.size());
+  for (PlaneId p : chain) planes_[p].join(id, iteration_);
+  xpoints_.emplace_back(id, iteration_, std::move(chain));
+  links_.push_back({from, id, std::move(linking), from == kNone, iteration_});
+  if (from != kNone) {
+    xpoints_[from].add_adjacent(id);
+    xpoints_[id].add_adjacent(from);
+  }
+  if (current_ == kNone) current_ = id;
+  return id;
+}
+
+void RltXPointsS::upkeep_unassigned() {
+  // Spec §5.5.1 C [P]: planes that left the view, or were seen too rarely, leave the list.
+  std::erase_if(unassigned_, [&](PlaneId q) {
+    const RltPlane& p = planes_[q];
+    return iteration_ - p.last_iteration() > options_.unseen_drop ||
+           (p.readings() < options_.min_readings && iteration_ - p.created_iteration() > options_.unassigned_drop);
+  });
+}
+
+void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
+  for (RltXPoint& x : xpoints_)
+    if (x.needs_compute()) {
+      x.compute(planes_, options_);
+      ++result.groups_computed;
+    }
+}
+
+void RltXPointsS::get_poset() {
+  registered_.clear();
+  for (std::size_t i = 0; i < stamped_.size(); ++i) registered_.push_back({&stamped_[i], assignment_[i]});
+  pose_ = builder_.get_poset(registered_, options_.same_length);
+  if (pose_.valid) last_valid_pose_ = pose_;
+}
+
+}  // namespace relslam::plane

@@ -1,0 +1,44 @@
+#include "relslam/plane/options.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+namespace relslam::plane {
+namespace {
+
+bool names(const std::vector<OptionIssue>& issues, const std::string& field) {
+  return std::ranges::any_of(issues, [&](const OptionIssue& i) { return i.field == field; });
+}
+
+TEST(RelativePlaneOptions, DefaultsAreValid) { EXPECT_TRUE(check(RelativePlaneOptions{}).empty()); }
+
+TEST(RelativePlaneOptions, DefaultsAreTheSpecValues) {
+  const RelativePlaneOptions o;
+  EXPECT_NEAR(std::cos(o.local_match.max_normal_angle_rad), std::cos(15.0 * std::numbers::pi / 180), 1e-15);
+  EXPECT_EQ(o.local_match.max_iteration_gap, 5);
+  EXPECT_LT(o.global_match.max_iteration_gap, 0);  // global matching has no gap test
+  EXPECT_GT(o.global_match.max_offset_change, o.local_match.max_offset_change);
+  EXPECT_EQ(o.plane_capacity, 1200);
+  EXPECT_EQ(o.interval_mode, IntervalMode::Pair);
+}
+
+TEST(RelativePlaneOptions, ViolationsNameTheirField) {
+  RelativePlaneOptions o;
+  o.local_match.max_iteration_gap = 0;
+  o.global_match.min_overlap_fraction = 1.5;
+  o.plane_capacity = 0;
+  o.min_common = o.min_readings + 1;
+  o.local_match.max_normal_angle_rad = 2.0;
+  const std::vector<OptionIssue> issues = check(o);
+  EXPECT_TRUE(names(issues, "local_match.max_iteration_gap"));
+  EXPECT_TRUE(names(issues, "global_match.min_overlap_fraction"));
+  EXPECT_TRUE(names(issues, "plane_capacity"));
+  EXPECT_TRUE(names(issues, "min_common"));
+  EXPECT_TRUE(names(issues, "local_match.max_normal_angle_rad"));
+  EXPECT_EQ(issues.size(), 5u);
+}
+
+}  // namespace
+}  // namespace relslam::plane
