@@ -17,7 +17,7 @@ from pathlib import Path
 LIBSLAM = {"core": 0, "spatial": 1, "point": 2, "plane": 2, "em": 2}
 # sim: one concept per file, ranked by file stem (src/ and include/relslam/sim/ alike).
 SIM = {
-    "random": 0, "centerline": 0, "frustum": 0,
+    "random": 0, "checked": 0, "centerline": 0, "frustum": 0,
     "options": 1, "figure_eight": 1, "straight_line": 1,
     "path": 2,
     "world": 3, "column_grid": 3,
