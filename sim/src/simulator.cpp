@@ -1,5 +1,6 @@
 #include "relslam/sim/simulator.hpp"
 
+#include "checked.hpp"
 #include "column_grid.hpp"
 #include "relslam/sim/random.hpp"
 
@@ -16,12 +17,6 @@ constexpr double kCullSigmas = 10.0;
 // Horizontal size of the culling cells: a few cells across the band, so whole cells drop
 // out while the frustum's edge cuts only a thin layer of them [C].
 constexpr double kCellSize = 10.0;
-
-const SimOptions& checked(const SimOptions& options) {
-  const std::vector<OptionIssue> issues = check(options);
-  if (!issues.empty()) throw OptionError(issues.front().field, issues.front().problem);
-  return options;
-}
 
 struct Detection {
   int id;

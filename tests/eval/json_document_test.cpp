@@ -51,6 +51,15 @@ TEST(JsonDocument, RepeatedKeyIsAnError) {
   }
 }
 
+TEST(JsonDocument, NumberTooLargeForADoubleIsMalformedAtItsLine) {
+  try {
+    parse_json("{\n  \"a\": 1,\n  \"b\": 1e400\n}", "big.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "big.json:3: malformed JSON: number overflow parsing '1e400'");
+  }
+}
+
 TEST(JsonDocument, EmptyTextIsMalformed) { EXPECT_THROW(parse_json("", "empty.json"), InputError); }
 
 TEST(JsonDocument, MissingFileIsAnInputError) {

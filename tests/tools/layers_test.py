@@ -17,11 +17,11 @@ from pathlib import Path
 LIBSLAM = {"core": 0, "spatial": 1, "point": 2, "plane": 2, "em": 2}
 # sim: one concept per file, ranked by file stem (src/ and include/relslam/sim/ alike).
 SIM = {
-    "random": 0, "centerline": 0, "frustum": 0,
-    "options": 1, "figure_eight": 1, "straight_line": 1,
-    "path": 2,
-    "world": 3, "column_grid": 3,
-    "simulator": 4,
+    "random": 0, "checked": 0, "centerline": 0, "frustum": 0, "viewing_frustum": 0, "planar_world": 0,
+    "options": 1, "figure_eight": 1, "straight_line": 1, "plane_noise": 1, "planar_path": 1,
+    "path": 2, "plane_sensor": 2,
+    "world": 3, "column_grid": 3, "planar_map": 3,
+    "simulator": 4, "planar_simulator": 4,
 }
 # eval: relslam/eval/<layer>/... or, for internal headers, "<layer>/x.hpp" under eval/src.
 EVAL = ["config", "io", "metrics", "sources", "algorithms", "experiments", "cli"]

@@ -128,6 +128,14 @@ JsonDocument parse_json(const std::string& text, const std::string& file) {
     doc.value = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(file, line_at_byte(text, e.byte > 0 ? e.byte - 1 : 0), "", "malformed JSON: " + strip_prefix(e.what()));
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number too large for a double ("1e400"): the exception has no position, but it quotes
+    // the number, so the line is where that text first appears.
+    const std::string what = e.what();  // "[json.exception.out_of_range.406] number overflow ..."
+    const std::string message = what.substr(what.find("] ") == std::string::npos ? 0 : what.find("] ") + 2);
+    const std::size_t open = message.find('\''), close = message.rfind('\'');
+    const std::size_t at = open < close ? text.find(message.substr(open + 1, close - open - 1)) : std::string::npos;
+    throw InputError(file, at == std::string::npos ? 0 : line_at_byte(text, at), "", "malformed JSON: " + message);
   }
   int line = 1;
   LineRecorder recorder(&line, file, &doc.lines);

@@ -6,7 +6,18 @@
 namespace relslam::sim {
 
 // Independent streams, so that e.g. changing the noise never moves a landmark (issue #2, spec 4.5).
-enum class Stream : std::uint64_t { Field = 1, Noise = 2, Dynamics = 3, Shuffle = 4 };
+// The planar world's sensor has its own: a wall's rigid pose noise, its end jitter (so turning
+// σ_end on leaves the pose noise unchanged) and the optional output shuffle
+// (relative_plane_em.md §3.6, A38).
+enum class Stream : std::uint64_t {
+  Field = 1,
+  Noise = 2,
+  Dynamics = 3,
+  Shuffle = 4,
+  PlanePose = 5,
+  PlaneEnds = 6,
+  PlaneShuffle = 7,
+};
 
 // A short random sequence that is a pure function of (seed, stream, a, b).
 // Why counter-based instead of one long std::mt19937_64 per stream: the noise on landmark `b`

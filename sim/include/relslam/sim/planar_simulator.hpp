@@ -1,0 +1,42 @@
+#pragma once
+// The seeded planar-world simulator of thesis Chapter 4 (relative_plane_em.md §3): a robot on
+// its path, reporting the walls it sees. Part of relslam/sim.
+
+#include "relslam/sim/planar_map.hpp"
+#include "relslam/sim/plane_sensor.hpp"
+#include "relslam/sim/planar_path.hpp"
+#include "relslam/sim/planar_world.hpp"
+
+#include <cstdint>
+#include <optional>
+
+namespace relslam::sim {
+
+// Builds the path once; frame(k) is then a pure function of (map, seed, k), like Simulator:
+// frames can be made in any order and from several threads, and the same seed gives the same
+// bits.
+class PlanarSimulator {
+ public:
+  // Throws OptionError when the world, the path or the sensor fails its check().
+  PlanarSimulator(const PlanarMap& map, std::uint64_t seed);
+
+  int iterations() const { return path_.iterations(); }
+  const PlanarWorld& world() const { return world_; }
+  const PlanarPath& path() const { return path_; }
+  const PlaneSensorOptions& sensor() const { return sensor_.options(); }
+
+  // The true pose at k (spec §3.2) and what the sensor reports there (spec §3.4).
+  PlaneSimFrame frame(int k) const;
+
+ private:
+  PlanarWorld world_;
+  PlanarPath path_;
+  PlaneSensor sensor_;
+};
+
+// The first iteration at which the map's sensor, without noise, reports at least `count`
+// planes; none if the path never sees that many at once. A map whose path never sees two walls
+// together gives the algorithm nothing to relate (Rule 7; spec A26).
+std::optional<int> first_iteration_seeing(const PlanarMap& map, int count);
+
+}  // namespace relslam::sim

@@ -1,0 +1,63 @@
+#pragma once
+// The planar world: vertical, infinitely thin walls of constant height on a flat floor
+// (thesis 4.4.2.4 `PlaneManager`; relative_plane_em.md §3.1). Part of relslam/sim: Eigen only.
+
+#include "relslam/core/option_issue.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace relslam::sim {
+
+// Iterations first..last, both included.
+struct IterationWindow {
+  int first = 0;
+  int last = 0;
+  bool contains(int k) const { return first <= k && k <= last; }
+};
+
+// One wall in world (x, z). Invariant (checked by check()): a != b, so the front normal
+// n = Rot(+90°)(b − a)/|b − a| is defined; it points to the side the wall is seen from.
+struct Wall {
+  int id = 0;  // unique, >= 0; the truth tag of every plane this wall produces
+  Eigen::Vector2d a = Eigen::Vector2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::UnitX();
+  // The walls' height is static in the thesis's simulator [T 4.2.3]; the value is [R].
+  double height = 2.5;
+  // A one-sided wall has only its front; with back-face culling on it is invisible from
+  // behind. A two-sided wall is always seen, with the face that looks at the robot [R].
+  bool one_sided = true;
+  // For the scripted sensor only: the iterations in which the wall is reported, at full size
+  // (the thesis's `RltMapBuilderUnitTest` table of Fig. 71, spec §3.4) [T].
+  std::vector<IterationWindow> scripted_windows;
+
+  // A one-sided wall of the default height from a to b (front on the left of a→b).
+  static Wall between(int id, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    Wall w;
+    w.id = id;
+    w.a = a;
+    w.b = b;
+    return w;
+  }
+
+  Eigen::Vector2d tangent() const { return (b - a).normalized(); }
+  Eigen::Vector2d normal() const {
+    const Eigen::Vector2d u = tangent();
+    return {-u.y(), u.x()};
+  }
+  double length() const { return (b - a).norm(); }
+  // True when p lies strictly on the front side (the back-face test of spec §3.4 step 1).
+  bool faces(const Eigen::Vector2d& p) const { return normal().dot(p - a) > 0.0; }
+};
+
+// The map. Its order is the sensor's output order: the thesis's comparison order inside X0
+// followed the order in which the simulator stored planes 1–5 (Fig. 94; spec A38) [T].
+struct PlanarWorld {
+  std::vector<Wall> walls;
+};
+
+// Every violated constraint; fields name the wall by its position: "walls[3].b".
+std::vector<OptionIssue> check(const PlanarWorld& world);
+
+}  // namespace relslam::sim
