@@ -59,6 +59,7 @@ TEST(PointSlamOptions, EveryFieldIsDescribed) {
   EXPECT_EQ(test::described_count<PointSlamOptions>(), test::member_count<PointSlamOptions>());
   EXPECT_EQ(test::described_count<GroupLevelOptions>("level"), test::member_count<GroupLevelOptions>());
   EXPECT_EQ(test::described_count<Level3Options>(), test::member_count<Level3Options>());
+  EXPECT_EQ(test::described_count<BinningOptions>(), test::member_count<BinningOptions>());
 }
 
 TEST(PointSlamOptions, LevelPresetsAreValid) {

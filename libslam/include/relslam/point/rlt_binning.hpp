@@ -62,6 +62,7 @@ void describe(OptionsOf<BinningOptions> auto& o, auto& f) {
   f.field("majority_fraction", o.majority_fraction, "a bin holding more than this share ends the pairing (thesis: 0.5)",
           above(0.0), at_most(1.0));
   f.field("priority_heuristic", o.priority_heuristic, "bins that merged initiate the next round (thesis 6.5.3)");
+  f.field("recheck_members", o.recheck_members, "each point outside the largest bin is compared once more with it");
 }
 
 struct BinningResult {
