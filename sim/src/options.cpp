@@ -1,7 +1,7 @@
 #include "relslam/sim/options.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 namespace relslam::sim {
@@ -44,47 +44,18 @@ double field_length(const SimOptions& o) {
 long long landmark_count(const SimOptions& o) { return std::llround(o.density * field_length(o) / 100.0); }
 
 std::vector<OptionIssue> check(const SimOptions& o) {
-  std::vector<OptionIssue> issues;
-  require_at_least(issues, "loops", o.loops, 1);
-  if (o.iterations) {
-    require_at_least(issues, "iterations", *o.iterations, 1);
-    require_at_most(issues, "iterations", *o.iterations, static_cast<double>(kMaxIterations));
-  }
-  require_above(issues, "scale", o.scale, 0.0);
-  require_at_most(issues, "scale", o.scale, 1000.0);
-  require_at_least(issues, "density", o.density, 0.0);
-  require_at_least(issues, "noise_sigma", o.noise_sigma, 0.0);
-  require_above(issues, "loop_length", o.loop_length, 0.0);
-  require_at_least(issues, "iterations_per_loop", o.iterations_per_loop, 1);
-  require_at_least(issues, "incline_height", o.incline_height, 0.0);
-  require_at_least(issues, "band_half_width", o.band_half_width, 0.0);
-  require_at_least(issues, "band_half_height", o.band_half_height, 0.0);
-  require_at_least(issues, "line_margin", o.line_margin, 0.0);
-  if (issues.empty() && !o.iterations && static_cast<double>(o.loops) * o.scale * o.iterations_per_loop > kMaxIterations)
-    issues.push_back({"loops", "asks for more than " + std::to_string(kMaxIterations) + " iterations"});
-  if (issues.empty() && landmark_count(o) > kMaxLandmarks)
-    issues.push_back({"density", "would create " + std::to_string(landmark_count(o)) + " landmarks; the limit is " +
-                                     std::to_string(kMaxLandmarks)});
-
-  const Frustum& f = o.frustum;
-  require_at_least(issues, "frustum.near", f.near, 0.0);
-  if (!(f.far > f.near))
-    issues.push_back({"frustum.far", "must be > frustum.near (" + format_number(f.near) + "), got " + format_number(f.far)});
-  require_above(issues, "frustum.half_angle_deg", f.half_angle_rad * 180.0 / std::numbers::pi, 0.0);
-  require_at_most(issues, "frustum.half_angle_deg", f.half_angle_rad * 180.0 / std::numbers::pi, 89.0);
-  require_above(issues, "frustum.half_height", f.half_height, 0.0);
-
-  const DynamicOptions& d = o.dynamic;
-  require_at_least(issues, "dynamic.count", d.count, 0);
-  require_at_least(issues, "dynamic.count_visible_for", d.count_visible_for, 0);
-  require_at_least(issues, "dynamic.fraction", d.fraction, 0.0);
-  require_at_most(issues, "dynamic.fraction", d.fraction, 1.0);
-  if (d.count > 0 && d.fraction > 0)
-    issues.push_back({"dynamic.fraction", "set either dynamic.count or dynamic.fraction, not both"});
-  require_at_least(issues, "dynamic.amplitude", d.amplitude, 0.0);
-  require_at_least(issues, "dynamic.vertical_ratio", d.vertical_ratio, 0.0);
-  require_above(issues, "dynamic.period_min", d.period_min, 0.0);
-  require_at_least(issues, "dynamic.period_max", d.period_max, d.period_min);
+  std::vector<OptionIssue> issues = check_fields(o);
+  // The run's size follows from the top-level fields, so it is bounded only when none of them
+  // has an issue (a field without a '.'); it then comes before the frustum's and dynamics'.
+  if (std::any_of(issues.begin(), issues.end(), [](const OptionIssue& i) { return i.field.find('.') == std::string::npos; }))
+    return issues;
+  std::vector<OptionIssue> size_issues;
+  if (!o.iterations && static_cast<double>(o.loops) * o.scale * o.iterations_per_loop > kMaxIterations)
+    size_issues.push_back({"loops", "asks for more than " + std::to_string(kMaxIterations) + " iterations"});
+  else if (landmark_count(o) > kMaxLandmarks)
+    size_issues.push_back({"density", "would create " + std::to_string(landmark_count(o)) + " landmarks; the limit is " +
+                                   std::to_string(kMaxLandmarks)});
+  issues.insert(issues.begin(), size_issues.begin(), size_issues.end());
   return issues;
 }
 

@@ -1,4 +1,5 @@
 #include "relslam/sim/planar_path.hpp"
+#include "relslam/core/option_fields.hpp"
 
 #include "checked.hpp"
 

@@ -1,4 +1,5 @@
 #include "relslam/sim/planar_world.hpp"
+#include "relslam/core/option_fields.hpp"
 
 #include <cmath>
 #include <map>

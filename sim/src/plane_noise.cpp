@@ -1,4 +1,5 @@
 #include "relslam/sim/plane_noise.hpp"
+#include "relslam/core/option_fields.hpp"
 
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/sim/random.hpp"

@@ -1,4 +1,5 @@
 #include "relslam/sim/plane_sensor.hpp"
+#include "relslam/core/option_fields.hpp"
 
 #include "checked.hpp"
 #include "relslam/sim/random.hpp"

@@ -1,4 +1,5 @@
 #include "relslam/sim/viewing_frustum.hpp"
+#include "relslam/core/option_fields.hpp"
 
 #include <cmath>
 

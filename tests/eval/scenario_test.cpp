@@ -3,6 +3,7 @@
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/scenario_keys.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
+#include "described_fields.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -190,6 +191,29 @@ TEST(ScenarioKeys, FixedKeyNamesExist) {
   for (const char* key : {"seed", "sim.path", "sim.loops", "sim.iterations", "sim.scale", "sim.density",
                           "sim.noise_sigma", "sim.dynamic.count", "sim.dynamic.fraction", "algorithms"})
     EXPECT_NE(find_scenario_key(key), nullptr) << key;
+}
+
+TEST(ScenarioKeys, HarnessOptionsAreCheckedByTheirDescriptions) {
+  EXPECT_EQ(error_of("{\"ekf6d\": {\"std_yaw_deg\": -2}}"), "scenarios/t.json:1: ekf6d.std_yaw_deg: must be > 0, got -2");
+  EXPECT_EQ(error_of("{\"ekf2d\": {\"stds_q_no_odometry\": [1, 1]}}"),
+            "scenarios/t.json:1: ekf2d.stds_q_no_odometry: needs 3 values (x, y, heading), got 2");
+  EXPECT_EQ(error_of("{\"victoria_park\": {\"window\": \"9:1\"}}"),
+            "scenarios/t.json:1: victoria_park.window: the window's first scan comes after its last: \"9:1\"");
+  EXPECT_EQ(error_of("{\"victoria_park\": {\"max_range\": -1}}"), "scenarios/t.json:1: victoria_park.max_range: must be > 0, got -1");
+  EXPECT_EQ(error_of("{\"binning_bench\": {\"percentages\": [5, 101]}}"),
+            "scenarios/t.json:1: binning_bench.percentages: must be <= 100, got 101");
+}
+
+// Each field of the harness's option structs has a scenario key: describe() visits as many
+// fields as the struct has members (a nested struct once; its own line counts its fields).
+// libslam's and sim's structs are counted in tests/point and tests/sim.
+TEST(ScenarioKeys, EveryOptionFieldIsDescribed) {
+  EXPECT_EQ(test::described_count<Ekf6dOptions>(), test::member_count<Ekf6dOptions>());
+  EXPECT_EQ(test::described_count<Ekf2dOptions>(), test::member_count<Ekf2dOptions>());
+  EXPECT_EQ(test::described_count<VictoriaParkOptions>(), test::member_count<VictoriaParkOptions>());
+  EXPECT_EQ(test::described_count<DetectionFilter>(), test::member_count<DetectionFilter>());
+  EXPECT_EQ(test::described_count<BinningBenchOptions>(), test::member_count<BinningBenchOptions>());
+  EXPECT_EQ(test::described_count<OutputOptions>(), test::member_count<OutputOptions>());
 }
 
 TEST(ScenarioKeys, ReadmeTableIsGeneratedFromTheRegistry) {

@@ -103,7 +103,7 @@ TEST(VictoriaPark, ASmallLogReadsScanByScan) {
   EXPECT_EQ(log.scans[0].trees.size(), 2u);
   EXPECT_EQ(log.scans[2].index, 3);  // after the list
   EXPECT_DOUBLE_EQ(log.scans[2].time, 1.280);
-  const DetectionFilter near{0, 15, 0.15};
+  const DetectionFilter near{.min_range = 0, .max_range = 15, .min_diameter = 0.15};
   EXPECT_FALSE(kept(near, log.scans[0].trees[0]));  // 20 m
   EXPECT_FALSE(kept(near, log.scans[0].trees[1]));  // 0.1 m across
   EXPECT_TRUE(kept(near, log.scans[1].trees[0]));

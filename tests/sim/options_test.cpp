@@ -1,5 +1,7 @@
 #include "relslam/sim/options.hpp"
 
+#include "described_fields.hpp"
+
 #include <gtest/gtest.h>
 
 namespace relslam::sim {
@@ -62,6 +64,27 @@ TEST(SimOptions, SizesFollowFromTheOptionsAlone) {
   EXPECT_EQ(field_length(o), 1145.0 + 110.0);
   o.density = 50;
   EXPECT_EQ(landmark_count(o), 628);  // 627.5 rounds away from zero
+}
+
+TEST(SimOptions, RunSizeIsBoundedOnceTheTopLevelFieldsAreValid) {
+  SimOptions o;
+  o.loops = 1'000'000;
+  o.frustum.far = 0.5;  // the size still leads: it is computed from the top-level fields alone
+  std::vector<std::string> problems;
+  for (const OptionIssue& i : check(o)) problems.push_back(i.field + ": " + i.problem);
+  EXPECT_EQ(problems, (std::vector<std::string>{"loops: asks for more than 100000000 iterations",
+                                                "frustum.far: must be > frustum.near (1), got 0.5"}));
+  o.scale = -1;  // a top-level issue: the size is not computed
+  ASSERT_EQ(check(o).size(), 2u);
+  EXPECT_EQ(check(o)[0].field, "scale");
+}
+
+// Each field has a scenario key: describe() visits as many fields as the struct has members
+// (a nested struct once; its own fields are counted by its own line).
+TEST(SimOptions, EveryFieldIsDescribed) {
+  EXPECT_EQ(test::described_count<SimOptions>(), test::member_count<SimOptions>());
+  EXPECT_EQ(test::described_count<Frustum>(), test::member_count<Frustum>());
+  EXPECT_EQ(test::described_count<DynamicOptions>(), test::member_count<DynamicOptions>());
 }
 
 TEST(SimOptions, PathNamesRoundTrip) {

@@ -5,25 +5,24 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <type_traits>
 
 namespace relslam::eval {
+
+std::string_view to_string(ScenarioKind kind) {
+  switch (kind) {
+    case ScenarioKind::Simulation: return "simulation";
+    case ScenarioKind::BinningBenchmark: return "binning_benchmark";
+    case ScenarioKind::VictoriaPark: return "victoria_park";
+  }
+  return "?";
+}
+
 namespace {
 
 using nlohmann::json;
-using sim::DynamicOptions;
-using sim::Frustum;
-using sim::SimOptions;
-
-// member<&A::b, &B::c>(a) is a.b.c, const or not.
-template <auto First, auto... Rest>
-constexpr auto& member(auto& object) {
-  if constexpr (sizeof...(Rest) == 0)
-    return object.*First;
-  else
-    return member<Rest...>(object.*First);
-}
 
 std::string shown(const json& value) {
   std::string text = value.dump();
@@ -31,6 +30,10 @@ std::string shown(const json& value) {
 }
 
 std::string expected(const std::string& what, const json& value) { return "expected " + what + ", got " + shown(value); }
+
+// ---- Codecs: how a field is spelled in a scenario file ---------------------------------------
+// A codec gives the key's type (for people), whether --set passes the raw text, parse (writes
+// the field only when the value is good, else says what is wrong) and show.
 
 // Parsers turn a JSON value into a field value, or say what is wrong with it.
 std::string parse_number(const json& v, double& out) {
@@ -45,7 +48,7 @@ std::string parse_degrees(const json& v, double& out) {
   out = v.get<double>() * std::numbers::pi / 180.0;
   return "";
 }
-json show_degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+json show_degrees(const double& radians) { return radians * 180.0 / std::numbers::pi; }
 
 // Integral floats (3800.0) are integers; 2.5 is not.
 std::string parse_integer(const json& v, int& out) {
@@ -86,47 +89,6 @@ std::string parse_text(const json& v, std::string& out) {
   return "";
 }
 
-// The one way a key is bound to a field: `parse` writes the field only when the value is good.
-template <auto... Path, class Parse, class Show>
-ScenarioKey bind(std::string key, std::string type, std::string help, bool text_value, Parse parse, Show show) {
-  return {std::move(key), std::move(type), std::move(help), text_value,
-          [show](const Scenario& s) { return json(show(member<Path...>(s))); },
-          [parse](Scenario& s, const json& v) -> std::string {
-            auto value = member<Path...>(s);
-            std::string problem = parse(v, value);
-            if (problem.empty()) member<Path...>(s) = std::move(value);
-            return problem;
-          }};
-}
-
-constexpr auto as_is = [](const auto& field) { return json(field); };
-
-template <auto... Path>
-ScenarioKey number(std::string key, std::string help) {
-  return bind<Path...>(std::move(key), "number", std::move(help), false, parse_number, as_is);
-}
-template <auto... Path>
-ScenarioKey degrees(std::string key, std::string help) {
-  return bind<Path...>(std::move(key), "number (degrees)", std::move(help), false, parse_degrees, show_degrees);
-}
-template <auto... Path>
-ScenarioKey integer(std::string key, std::string help) {
-  return bind<Path...>(std::move(key), "integer", std::move(help), false, parse_integer, as_is);
-}
-template <auto... Path>
-ScenarioKey optional_integer(std::string key, std::string help) {
-  return bind<Path...>(std::move(key), "integer or null", std::move(help), false, parse_optional_integer,
-                       show_optional_integer);
-}
-template <auto... Path>
-ScenarioKey boolean(std::string key, std::string help) {
-  return bind<Path...>(std::move(key), "true or false", std::move(help), false, parse_boolean, as_is);
-}
-template <auto... Path>
-ScenarioKey text(std::string key, std::string help) {
-  return bind<Path...>(std::move(key), "string", std::move(help), true, parse_text, as_is);
-}
-
 // A non-empty list of numbers (positive integers when Integral).
 template <class T>
 std::string parse_list(const json& v, std::vector<T>& out) {
@@ -147,171 +109,137 @@ std::string parse_list(const json& v, std::vector<T>& out) {
   return "";
 }
 
-template <auto... Path>
-ScenarioKey integer_list(std::string key, std::string help) {
-  return bind<Path...>(std::move(key), "list of integers", std::move(help), false, parse_list<int>, as_is);
-}
-template <auto... Path>
-ScenarioKey number_list(std::string key, std::string help) {
-  return bind<Path...>(std::move(key), "list of numbers", std::move(help), false, parse_list<double>, as_is);
+template <class T>
+json as_is(const T& field) {
+  return json(field);
 }
 
-// An enum spelled by name; ToString/Parse are the enum's own conversions.
-template <auto ToString, auto Parse, auto... Path>
-ScenarioKey choice(std::string key, std::string help, const std::vector<std::string>& names) {
-  std::string list;
-  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-  auto parse = [list](const json& v, auto& out) -> std::string {
-    const auto parsed = v.is_string() ? Parse(v.get<std::string>()) : std::nullopt;
-    if (!parsed) return expected("one of " + list, v);
-    out = *parsed;
-    return "";
-  };
-  return bind<Path...>(std::move(key), "one of: " + list, std::move(help), true, parse,
-                       [](const auto& field) { return json(std::string(ToString(field))); });
-}
+// A field read and written through two functions.
+template <class T>
+struct PlainCodec {
+  const char* type_name;
+  std::string (*parse)(const json&, T&);
+  json (*show)(const T&) = as_is<T>;
+  bool text_value = false;
+  std::string type() const { return type_name; }
+};
 
-std::string_view kind_name(ScenarioKind kind) {
-  switch (kind) {
-    case ScenarioKind::Simulation: return "simulation";
-    case ScenarioKind::BinningBenchmark: return "binning_benchmark";
-    case ScenarioKind::VictoriaPark: return "victoria_park";
+// The codec of each field type describe() can name with f.field(...).
+PlainCodec<double> codec_for(const double&) { return {"number", parse_number}; }
+PlainCodec<int> codec_for(const int&) { return {"integer", parse_integer}; }
+PlainCodec<std::optional<int>> codec_for(const std::optional<int>&) {
+  return {"integer or null", parse_optional_integer, show_optional_integer};
+}
+PlainCodec<bool> codec_for(const bool&) { return {"true or false", parse_boolean}; }
+PlainCodec<std::string> codec_for(const std::string&) { return {"string", parse_text, as_is<std::string>, true}; }
+PlainCodec<std::vector<int>> codec_for(const std::vector<int>&) { return {"list of integers", parse_list<int>}; }
+PlainCodec<std::vector<double>> codec_for(const std::vector<double>&) { return {"list of numbers", parse_list<double>}; }
+const PlainCodec<double> kDegrees{"number (degrees)", parse_degrees, show_degrees};
+
+// An enum spelled by name: to_string of each of `values`. Lives as long as the values it spans.
+template <class E>
+struct ChoiceCodec {
+  std::span<const E> values;
+  bool text_value = true;
+  std::string names() const {
+    std::string list;
+    for (E value : values) list += (list.empty() ? "" : ", ") + std::string(to_string(value));
+    return list;
   }
-  return "?";
-}
-std::optional<ScenarioKind> parse_kind(std::string_view name) {
-  for (ScenarioKind k : {ScenarioKind::Simulation, ScenarioKind::BinningBenchmark, ScenarioKind::VictoriaPark})
-    if (name == kind_name(k)) return k;
-  return std::nullopt;
+  std::string type() const { return "one of: " + names(); }
+  std::string parse(const json& v, E& out) const {
+    if (v.is_string())
+      for (E value : values)
+        if (v.get<std::string>() == to_string(value)) {
+          out = value;
+          return "";
+        }
+    return expected("one of " + names(), v);
+  }
+  json show(const E& value) const { return std::string(to_string(value)); }
+};
+
+// ---- Keys from descriptions ------------------------------------------------------------------
+
+// Hands every field of a description to act(key, help, codec, field), the key prefixed.
+template <class Act>
+class CodecVisitor {
+ public:
+  CodecVisitor(Act& act, std::string prefix) : act_(act), prefix_(std::move(prefix)) {}
+
+  template <class T, class... Checks>
+  void field(std::string_view name, T& value, std::string_view help, const Checks&...) {
+    act_(key(name), help, codec_for(value), value);
+  }
+  template <class... Checks>
+  void degrees(std::string_view name, auto& radians, std::string_view help, const Checks&...) {
+    act_(key(name), help, kDegrees, radians);
+  }
+  template <class E, std::size_t N>
+  void choice(std::string_view name, E& value, std::string_view help, const std::remove_const_t<E> (&values)[N]) {
+    act_(key(name), help, ChoiceCodec<std::remove_const_t<E>>{values}, value);
+  }
+  template <class Options, class... Extra>
+  void nested(std::string_view name, Options& options, const Extra&... extra) {
+    CodecVisitor inner(act_, name.empty() ? prefix_ : key(name) + ".");
+    describe(options, inner, extra...);
+  }
+
+ private:
+  std::string key(std::string_view name) const { return prefix_ + std::string(name); }
+  Act& act_;
+  std::string prefix_;
+};
+
+// A key whose field visit(scenario, use) hands to use(codec, field); read and write go through
+// the codec, and write stores the value only when the codec accepts it.
+template <class Visit>
+ScenarioKey make_key(std::string key, std::string type, std::string help, bool text_value, Visit visit) {
+  return {std::move(key), std::move(type), std::move(help), text_value,
+          [visit](const Scenario& s) {
+            json out;
+            visit(s, [&](const auto& codec, const auto& field) { out = codec.show(field); });
+            return out;
+          },
+          [visit](Scenario& s, const json& v) {
+            std::string problem;
+            visit(s, [&](const auto& codec, auto& field) {
+              auto value = field;
+              problem = codec.parse(v, value);
+              if (problem.empty()) field = std::move(value);
+            });
+            return problem;
+          }};
 }
 
-std::string_view basis_name(point::BasisSelection b) {
-  return b == point::BasisSelection::Farthest ? "farthest" : "first_three";
-}
-std::optional<point::BasisSelection> parse_basis(std::string_view name) {
-  if (name == "farthest") return point::BasisSelection::Farthest;
-  if (name == "first_three") return point::BasisSelection::FirstThree;
-  return std::nullopt;
+// A key of a field of Scenario itself.
+template <auto Field, class Codec>
+ScenarioKey scenario_key(std::string key, std::string help, Codec codec) {
+  return make_key(std::move(key), codec.type(), std::move(help), codec.text_value,
+                  [codec](auto& s, const auto& use) { use(codec, s.*Field); });
 }
 
-constexpr auto local_index_name = static_cast<std::string_view (*)(spatial::LocalIndexKind)>(&spatial::to_string);
-constexpr auto global_index_name = static_cast<std::string_view (*)(spatial::GlobalIndexKind)>(&spatial::to_string);
-std::string_view pairing_name(point::BinPairing p) { return p == point::BinPairing::Disjoint ? "disjoint" : "every_bin"; }
-std::optional<point::BinPairing> parse_pairing(std::string_view name) {
-  if (name == "disjoint") return point::BinPairing::Disjoint;
-  if (name == "every_bin") return point::BinPairing::EveryBin;
-  return std::nullopt;
-}
-
-// The keys of one group level, relative_point.<level>.<field>.
-template <auto Level>
-void add_level_keys(std::vector<ScenarioKey>& keys, const std::string& level, const std::string& what) {
-  using point::GroupLevelOptions;
-  using point::PointSlamOptions;
-  const std::string p = "relative_point." + level + ".";
-  keys.push_back(boolean<&Scenario::relative_point, Level, &GroupLevelOptions::enabled>(
-      p + "enabled", what + ": formed at all (one level only: the thesis's early version, 6.8)"));
-  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::look_ahead>(
-      p + "look_ahead", what + ": iterations waited before grouping; new members come from [c0, c0+A]"));
-  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::look_back>(
-      p + "look_back", what + ": previously mapped candidates come from [c0-B, c0+A]"));
-  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::accuracy_reduction>(
-      p + "accuracy_reduction", what + ": members need A minus this many observations in [c0, c0+A]"));
-  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::prev_min>(
-      p + "prev_min", what + ": PrevGroupMin, previously mapped members needed"));
-  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::prev_max>(
-      p + "prev_max", what + ": PrevGroupMax, previously mapped members kept"));
-  keys.push_back(integer<&Scenario::relative_point, Level, &GroupLevelOptions::next_min>(
-      p + "next_min", what + ": NextGroupMin, ungrouped members needed"));
-  keys.push_back(boolean<&Scenario::relative_point, Level, &GroupLevelOptions::binning>(
-      p + "binning", what + ": RltBinning removes dynamic members (thesis 6.5.3)"));
-}
-
-std::vector<ScenarioKey> relative_point_keys() {
-  using point::PointSlamOptions;
-  std::vector<ScenarioKey> keys = {
-      integer<&Scenario::relative_point, &PointSlamOptions::match_look_back>(
-          "relative_point.match_look_back", "local matching looks this many iterations back (thesis 6.2.3)"),
-      number<&Scenario::relative_point, &PointSlamOptions::local_bound>(
-          "relative_point.local_bound", "local matching bound, units (frame motion plus noise)"),
-      boolean<&Scenario::relative_point, &PointSlamOptions::compensate_motion>(
-          "relative_point.compensate_motion", "predict local candidates by the fitted frame motion (beyond the thesis)"),
-      number<&Scenario::relative_point, &PointSlamOptions::compensated_bound>(
-          "relative_point.compensated_bound", "local bound after motion compensation, units (noise only)"),
-      number<&Scenario::relative_point, &PointSlamOptions::motion_outlier_cut>(
-          "relative_point.motion_outlier_cut", "motion fit keeps pairs within this many median residuals"),
-      number<&Scenario::relative_point, &PointSlamOptions::global_bound>(
-          "relative_point.global_bound", "global matching bound, units (thesis 6.5.1)"),
-      number<&Scenario::relative_point, &PointSlamOptions::local_cell_size>(
-          "relative_point.local_cell_size", "local OVLPQuadTree cell, units; 1.5 = the thesis's small quads"),
-      number<&Scenario::relative_point, &PointSlamOptions::global_cell_size>("relative_point.global_cell_size",
-                                                                             "global incremental grid cell, units"),
+// The keys of the options struct scenario.*Options, "<prefix>.<field>", in its description's
+// order. A key finds its field again by its place in that order (describe() visits every field,
+// always in the same order).
+template <auto Options>
+void add_keys(std::vector<ScenarioKey>& keys, const std::string& prefix) {
+  int index = 0;
+  auto add = [&](std::string key, std::string_view help, const auto& codec, const auto&) {
+    const auto visit = [place = index++](auto& s, const auto& use) {
+      int i = 0;
+      auto pick = [&](const std::string&, std::string_view, const auto& codec, auto& field) {
+        if (i++ == place) use(codec, field);
+      };
+      CodecVisitor<decltype(pick)> fields(pick, "");
+      describe(s.*Options, fields);
+    };
+    keys.push_back(make_key(std::move(key), codec.type(), std::string(help), codec.text_value, visit));
   };
-  add_level_keys<&PointSlamOptions::temporary_group>(keys, "temporary_group", "temporary groups");
-  add_level_keys<&PointSlamOptions::final_group>(keys, "final_group", "final groups");
-  using point::Level3Options;
-  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::level3, &Level3Options::enabled>(
-      "relative_point.level3.enabled", "level-3 groups over a point's whole visible run, once out of view (6.5.5)"));
-  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::level3, &Level3Options::gap>(
-      "relative_point.level3.gap", "level 3: iterations unseen that end a visible run"));
-  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::level3, &Level3Options::prev_min>(
-      "relative_point.level3.prev_min", "level 3: already grouped members that register a new group"));
-  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::level3, &Level3Options::binning>(
-      "relative_point.level3.binning", "level 3: RltBinning removes dynamic members"));
-  keys.push_back(choice<basis_name, parse_basis, &Scenario::relative_point, &PointSlamOptions::basis>(
-      "relative_point.basis", "basis points: farthest (thesis 6.5.4) or first_three (Fig 119)", {"farthest", "first_three"}));
-  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::min_basis_ratio>(
-      "relative_point.min_basis_ratio", "reject a basis whose third point is this close to the line, relative"));
-  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::temporary_cleanup_period>(
-      "relative_point.temporary_cleanup_period", "iterations between removals of redundant temporary groups"));
-  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::match_unmapped>(
-      "relative_point.match_unmapped", "global matching also finds unmapped points (beyond the thesis)"));
-  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::pose_from_unmapped>(
-      "relative_point.pose_from_unmapped", "pose from unmapped points when < 3 mapped are seen (beyond the thesis)"));
-  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::provisional_root>(
-      "relative_point.provisional_root",
-      "temporary groups lacking mapped points in view register to provisional positions (beyond the thesis)"));
-  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::use_odometry>(
-      "relative_point.use_odometry",
-      "frames with odometry: predict local matches and bridge unregistrable frames with it (beyond the thesis)"));
-  keys.push_back(choice<local_index_name, spatial::parse_local_index, &Scenario::relative_point, &PointSlamOptions::local_index>(
-      "relative_point.local_index", "local matching index (thesis 6.6.2)", {"quadtree", "octree", "kdtree"}));
-  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::octree_cell_size>(
-      "relative_point.octree_cell_size", "octree cell, units"));
-  keys.push_back(choice<global_index_name, spatial::parse_global_index, &Scenario::relative_point, &PointSlamOptions::global_index>(
-      "relative_point.global_index", "global index: incremental (thesis 6.5.1) or rebuilt each iteration (Fig 110)",
-      {"incremental", "rebuilt"}));
-  using point::BinningOptions;
-  keys.push_back(choice<pairing_name, parse_pairing, &Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::pairing>(
-      "relative_point.binning.pairing", "bins meet disjointly per round, or every bin initiates (spec 5.7)",
-      {"disjoint", "every_bin"}));
-  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::abs_gap>(
-      "relative_point.binning.abs_gap", "threshold gap, absolute part, units"));
-  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::rel_gap>(
-      "relative_point.binning.rel_gap", "threshold gap, relative part"));
-  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::threshold_margin>(
-      "relative_point.binning.threshold_margin", "threshold gets half the minimum gap as a margin"));
-  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::min_pair_samples>(
-      "relative_point.binning.min_pair_samples", "common observations a pair needs"));
-  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::majority_fraction>(
-      "relative_point.binning.majority_fraction", "a bin holding more than this share ends the pairing (thesis: 0.5)"));
-  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::binning, &BinningOptions::priority_heuristic>(
-      "relative_point.binning.priority_heuristic", "bins that merged initiate the next round (thesis 6.5.3)"));
-  keys.push_back(boolean<&Scenario::relative_point, &PointSlamOptions::merge_points>(
-      "relative_point.merge_points", "merge new points into older ones found at the same place (thesis 6.5.2)"));
-  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::merge_delay>(
-      "relative_point.merge_delay", "iterations after creation a point is checked for merging"));
-  keys.push_back(number<&Scenario::relative_point, &PointSlamOptions::merge_bound>(
-      "relative_point.merge_bound", "merging bound, units"));
-  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::ring_capacity>(
-      "relative_point.ring_capacity", "observations kept per RltPoint"));
-  keys.push_back(integer<&Scenario::relative_point, &PointSlamOptions::charting_capacity>(
-      "relative_point.charting_capacity", "iterations kept by RltPointCharting (2048 with level 3)"));
-  return keys;
+  const Scenario defaults;
+  CodecVisitor<decltype(add)> fields(add, prefix + ".");
+  describe(defaults.*Options, fields);
 }
-
-constexpr auto path_kind_name = static_cast<std::string_view (*)(sim::PathKind)>(&sim::to_string);
-constexpr auto far_cap_name = static_cast<std::string_view (*)(sim::FarCap)>(&sim::to_string);
 
 ScenarioKey seed_key() {
   return {"seed", "integer >= 0", "seed of every random choice (field, noise, dynamics, shuffle)", false,
@@ -342,139 +270,26 @@ ScenarioKey algorithms_key() {
           }};
 }
 
+// Every key, in the order of the README's table: the scenario's own, then each options
+// struct's from its description (seed and algorithms have their own rules).
 std::vector<ScenarioKey> build_keys() {
   std::vector<ScenarioKey> keys = {
-      text<&Scenario::name>("name", "experiment name; defaults to the file name without .json"),
-      text<&Scenario::description>("description", "what the experiment reproduces (thesis figures)"),
-      choice<kind_name, parse_kind, &Scenario::kind>(
-          "kind", "simulation, the synthetic binning benchmark S-BIN, or the Victoria Park data set",
-          {"simulation", "binning_benchmark", "victoria_park"}),
+      scenario_key<&Scenario::name>("name", "experiment name; defaults to the file name without .json",
+                                    codec_for(std::string())),
+      scenario_key<&Scenario::description>("description", "what the experiment reproduces (thesis figures)",
+                                           codec_for(std::string())),
+      scenario_key<&Scenario::kind>("kind", "simulation, the synthetic binning benchmark S-BIN, or the Victoria Park data set",
+                                    ChoiceCodec<ScenarioKind>{kScenarioKinds}),
       seed_key(),
-      choice<path_kind_name, sim::parse_path_kind, &Scenario::sim, &SimOptions::path>(
-          "sim.path", "robot path (thesis 6.6.1, 6.7.2)", {"figure_eight", "line", "stationary"}),
-      integer<&Scenario::sim, &SimOptions::loops>("sim.loops", "times round the figure eight; 1 loop = 3800 iterations"),
-      optional_integer<&Scenario::sim, &SimOptions::iterations>("sim.iterations",
-                                                                "run length in iterations; overrides sim.loops"),
-      number<&Scenario::sim, &SimOptions::scale>("sim.scale", "multiplies path lengths; 2 = the double-size eight (Fig 136)"),
-      number<&Scenario::sim, &SimOptions::density>("sim.density", "points per 100 units of path (thesis 6.6.2)"),
-      number<&Scenario::sim, &SimOptions::noise_sigma>("sim.noise_sigma",
-                                                       "std. deviation of white Gaussian noise per axis, units"),
-      boolean<&Scenario::sim, &SimOptions::range_noise>("sim.range_noise",
-                                                        "noise grows with range: sigma·(1 + range/far)"),
-      number<&Scenario::sim, &SimOptions::loop_length>("sim.loop_length", "figure-eight loop length at scale 1, units"),
-      integer<&Scenario::sim, &SimOptions::iterations_per_loop>("sim.iterations_per_loop",
-                                                                "iterations per loop at scale 1; sets the speed"),
-      number<&Scenario::sim, &SimOptions::incline_height>("sim.incline_height",
-                                                          "height of the crossing above the start, units"),
-      boolean<&Scenario::sim, &SimOptions::wobble>("sim.wobble", "add small roll and pitch oscillations (all 6 DOF move)"),
-      number<&Scenario::sim, &SimOptions::band_half_width>("sim.band_half_width",
-                                                           "point band extends this far left and right, units"),
-      number<&Scenario::sim, &SimOptions::band_half_height>("sim.band_half_height",
-                                                            "point band extends this far up and down, units"),
-      number<&Scenario::sim, &SimOptions::line_margin>("sim.line_margin", "line field runs this far past the end, units"),
-      number<&Scenario::sim, &SimOptions::frustum, &Frustum::near>("sim.frustum.near", "nearest visible depth, units"),
-      number<&Scenario::sim, &SimOptions::frustum, &Frustum::far>("sim.frustum.far", "farthest visible depth, units"),
-      degrees<&Scenario::sim, &SimOptions::frustum, &Frustum::half_angle_rad>("sim.frustum.half_angle_deg",
-                                                                              "half the horizontal field of view"),
-      number<&Scenario::sim, &SimOptions::frustum, &Frustum::half_height>("sim.frustum.half_height",
-                                                                          "visible height band |y| <= this, units"),
-      choice<far_cap_name, sim::parse_far_cap, &Scenario::sim, &SimOptions::frustum, &Frustum::far_cap>(
-          "sim.frustum.far_cap", "far end: flat plane z <= far, or range |p| <= far", {"plane", "range"}),
-      integer<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::count>(
-          "sim.dynamic.count", "dynamic points chosen among those visible at iteration 0 (S-DYN: 2)"),
-      integer<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::count_visible_for>(
-          "sim.dynamic.count_visible_for", "counted movers are seen at iteration 0 and this many iterations later"),
-      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::fraction>(
-          "sim.dynamic.fraction", "share of all points made dynamic (S-DYN3: 0.03)"),
-      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::amplitude>("sim.dynamic.amplitude",
-                                                                               "dynamic wander amplitude, units"),
-      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::vertical_ratio>(
-          "sim.dynamic.vertical_ratio", "vertical amplitude as a share of the horizontal one"),
-      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::period_min>("sim.dynamic.period_min",
-                                                                                "shortest wander period, iterations"),
-      number<&Scenario::sim, &SimOptions::dynamic, &DynamicOptions::period_max>("sim.dynamic.period_max",
-                                                                                "longest wander period, iterations"),
-      algorithms_key(),
-      boolean<&Scenario::output, &OutputOptions::observations_csv>("output.observations_csv",
-                                                                   "write observations.csv (large at high density)"),
-      boolean<&Scenario::output, &OutputOptions::rawlog>("output.rawlog", "write observations.rawlog for MRPT tools"),
-      boolean<&Scenario::output, &OutputOptions::rawlog_landmark_ids>(
-          "output.rawlog_landmark_ids", "rawlog carries true landmark ids (else -1: unknown association)"),
-      boolean<&Scenario::output, &OutputOptions::rawlog_gzip>("output.rawlog_gzip", "gzip-compress the rawlog"),
   };
-  for (ScenarioKey& k : relative_point_keys()) keys.push_back(std::move(k));
-  constexpr auto ekf_method_name = static_cast<std::string_view (*)(EkfMethod)>(&to_string);
-  constexpr auto ekf_association_name = static_cast<std::string_view (*)(EkfAssociation)>(&to_string);
-  const std::vector<ScenarioKey> ekf = {
-      choice<ekf_method_name, parse_ekf_method, &Scenario::ekf6d, &Ekf6dOptions::method>(
-          "ekf6d.method", "EKF update: davison (thesis 6.7) or full", {"davison", "full"}),
-      choice<ekf_association_name, parse_ekf_association, &Scenario::ekf6d, &Ekf6dOptions::association>(
-          "ekf6d.association", "known (true ids, as the thesis), or ids withheld: jcbb or nn", {"known", "jcbb", "nn"}),
-      number<&Scenario::ekf6d, &Ekf6dOptions::std_range>("ekf6d.std_range", "sensor model range std. deviation, units"),
-      degrees<&Scenario::ekf6d, &Ekf6dOptions::std_yaw_rad>("ekf6d.std_yaw_deg", "sensor model yaw std. deviation"),
-      degrees<&Scenario::ekf6d, &Ekf6dOptions::std_pitch_rad>("ekf6d.std_pitch_deg", "sensor model pitch std. deviation"),
-      number_list<&Scenario::ekf6d, &Ekf6dOptions::stds_q>("ekf6d.stds_q",
-                                                           "motion noise without odometry: x, y, z, qr, qx, qy, qz"),
-      number<&Scenario::ekf6d, &Ekf6dOptions::chi2_threshold>("ekf6d.chi2_threshold",
-                                                              "data association individual compatibility (jcbb, nn)"),
-      number<&Scenario::ekf6d, &Ekf6dOptions::time_budget_ms>("ekf6d.time_budget_ms",
-                                                              "stop the EKF past this time per iteration (thesis: 1 s)"),
-      integer<&Scenario::ekf6d, &Ekf6dOptions::budget_iterations>("ekf6d.budget_iterations",
-                                                                  "...once its mean over this many iterations exceeds it"),
-  };
-  keys.insert(keys.end(), ekf.begin(), ekf.end());
-  const std::vector<ScenarioKey> ekf2d = {
-      choice<ekf_method_name, parse_ekf_method, &Scenario::ekf2d, &Ekf2dOptions::method>(
-          "ekf2d.method", "planar EKF update: davison or full", {"davison", "full"}),
-      choice<ekf_association_name, parse_ekf_association, &Scenario::ekf2d, &Ekf2dOptions::association>(
-          "ekf2d.association", "jcbb or nn (Victoria Park has no ids), or known", {"known", "jcbb", "nn"}),
-      choice<ekf_association_name, parse_ekf_association, &Scenario::ekf2d, &Ekf2dOptions::association_no_odometry>(
-          "ekf2d.association_no_odometry", "ekf2d_no_odometry's association: nn (bounded time per scan), jcbb or known",
-          {"known", "jcbb", "nn"}),
-      number<&Scenario::ekf2d, &Ekf2dOptions::std_range>("ekf2d.std_range", "planar EKF: range std. deviation, m"),
-      degrees<&Scenario::ekf2d, &Ekf2dOptions::std_yaw_rad>("ekf2d.std_yaw_deg", "planar EKF: bearing std. deviation"),
-      number_list<&Scenario::ekf2d, &Ekf2dOptions::stds_q_no_odometry>(
-          "ekf2d.stds_q_no_odometry", "planar EKF without odometry: motion noise per scan x, y (m), heading (rad)"),
-      number<&Scenario::ekf2d, &Ekf2dOptions::odometry_std_xy>("ekf2d.odometry_std_xy",
-                                                               "odometry std. deviation per scan, m (floor)"),
-      number<&Scenario::ekf2d, &Ekf2dOptions::odometry_std_xy_ratio>("ekf2d.odometry_std_xy_ratio",
-                                                                     "...plus this share of the distance moved"),
-      degrees<&Scenario::ekf2d, &Ekf2dOptions::odometry_std_heading_rad>("ekf2d.odometry_std_heading_deg",
-                                                                         "odometry heading std. deviation per scan (floor)"),
-      number<&Scenario::ekf2d, &Ekf2dOptions::odometry_std_heading_ratio>("ekf2d.odometry_std_heading_ratio",
-                                                                          "...plus this share of the heading change"),
-      number<&Scenario::ekf2d, &Ekf2dOptions::chi2_threshold>("ekf2d.chi2_threshold",
-                                                              "planar EKF: data association compatibility"),
-      number<&Scenario::ekf2d, &Ekf2dOptions::time_budget_ms>("ekf2d.time_budget_ms",
-                                                              "stop the planar EKF past this time per scan"),
-      integer<&Scenario::ekf2d, &Ekf2dOptions::budget_iterations>("ekf2d.budget_iterations",
-                                                                  "...once its mean over this many scans exceeds it"),
-      text<&Scenario::victoria_park, &VictoriaParkOptions::window>(
-          "victoria_park.window", "scans FIRST:LAST (1-based, of 7249) or all; relslam victoria-park --window overrides"),
-      number<&Scenario::victoria_park, &VictoriaParkOptions::filter, &DetectionFilter::min_range>(
-          "victoria_park.min_range", "trees nearer than this are dropped, m"),
-      number<&Scenario::victoria_park, &VictoriaParkOptions::filter, &DetectionFilter::max_range>(
-          "victoria_park.max_range", "trees farther than this are dropped, m"),
-      number<&Scenario::victoria_park, &VictoriaParkOptions::filter, &DetectionFilter::min_diameter>(
-          "victoria_park.min_diameter", "trees thinner than this are dropped, m"),
-  };
-  keys.insert(keys.end(), ekf2d.begin(), ekf2d.end());
-  using B = BinningBenchOptions;
-  const std::vector<ScenarioKey> bench = {
-      integer_list<&Scenario::binning_bench, &B::points>("binning_bench.points", "S-BIN: points per binning (Fig 111's x)"),
-      number_list<&Scenario::binning_bench, &B::percentages>("binning_bench.percentages",
-                                                              "S-BIN: shares of uncorrelated points, percent"),
-      integer<&Scenario::binning_bench, &B::seeds>("binning_bench.seeds", "S-BIN: repetitions per cell"),
-      integer<&Scenario::binning_bench, &B::iterations>("binning_bench.iterations", "S-BIN: observations per point"),
-      number<&Scenario::binning_bench, &B::static_sigma>("binning_bench.static_sigma", "S-BIN: jitter of every point, units"),
-      number<&Scenario::binning_bench, &B::noisy_sigma>("binning_bench.noisy_sigma",
-                                                         "S-BIN: extra jitter of uncorrelated points, units"),
-      boolean<&Scenario::binning_bench, &B::correlated>("binning_bench.correlated",
-                                                        "S-BIN: add Fig 114's mix with 4 correlated groups"),
-      number<&Scenario::binning_bench, &B::correlated_step_sigma>("binning_bench.correlated_step_sigma",
-                                                                  "S-BIN: random-walk step of a correlated group, units"),
-  };
-  keys.insert(keys.end(), bench.begin(), bench.end());
+  add_keys<&Scenario::sim>(keys, "sim");
+  keys.push_back(algorithms_key());
+  add_keys<&Scenario::output>(keys, "output");
+  add_keys<&Scenario::relative_point>(keys, "relative_point");
+  add_keys<&Scenario::ekf6d>(keys, "ekf6d");
+  add_keys<&Scenario::ekf2d>(keys, "ekf2d");
+  add_keys<&Scenario::victoria_park>(keys, "victoria_park");
+  add_keys<&Scenario::binning_bench>(keys, "binning_bench");
   return keys;
 }
 

@@ -159,22 +159,20 @@ class Loader {
   std::map<std::string, KeyOrigin> origins_;
 };
 
+// The checks of every options struct: the algorithm's and the simulator's own check() (their
+// descriptions plus the rules between fields), the harness's from their descriptions alone.
 void check_semantics(const LoadedScenario& loaded) {
+  const Scenario& s = loaded.scenario;
   std::vector<InputError> errors;
-  for (const OptionIssue& issue : sim::check(loaded.scenario.sim)) errors.push_back(loaded.error("sim." + issue.field, issue.problem));
-  for (const OptionIssue& issue : point::check(loaded.scenario.relative_point))
-    errors.push_back(loaded.error("relative_point." + issue.field, issue.problem));
-  for (const OptionIssue& issue : check(loaded.scenario.ekf6d)) errors.push_back(loaded.error("ekf6d." + issue.field, issue.problem));
-  for (const OptionIssue& issue : check(loaded.scenario.ekf2d)) errors.push_back(loaded.error("ekf2d." + issue.field, issue.problem));
-  for (const OptionIssue& issue : check(loaded.scenario.victoria_park.filter))
-    errors.push_back(loaded.error("victoria_park." + issue.field, issue.problem));
-  try {
-    parse_scan_window(loaded.scenario.victoria_park.window, "victoria_park.window");
-  } catch (const InputError& e) {
-    errors.push_back(loaded.error("victoria_park.window", e.problem()));
-  }
-  for (const OptionIssue& issue : check(loaded.scenario.binning_bench))
-    errors.push_back(loaded.error("binning_bench." + issue.field, issue.problem));
+  const auto add = [&](const std::string& prefix, const std::vector<OptionIssue>& issues) {
+    for (const OptionIssue& issue : issues) errors.push_back(loaded.error(prefix + "." + issue.field, issue.problem));
+  };
+  add("sim", sim::check(s.sim));
+  add("relative_point", point::check(s.relative_point));
+  add("ekf6d", check_fields(s.ekf6d));
+  add("ekf2d", check_fields(s.ekf2d));
+  add("victoria_park", check_fields(s.victoria_park));
+  add("binning_bench", check_fields(s.binning_bench));
   if (errors.empty()) return;
   if (errors.size() == 1) throw errors.front();
   // Report every problem at once; the first one is the error's own location.

@@ -6,14 +6,6 @@
 
 namespace relslam::eval {
 
-std::vector<OptionIssue> check(const DetectionFilter& f) {
-  std::vector<OptionIssue> issues;
-  require_at_least(issues, "min_range", f.min_range, 0.0);
-  require_above(issues, "max_range", f.max_range, f.min_range);
-  require_at_least(issues, "min_diameter", f.min_diameter, 0.0);
-  return issues;
-}
-
 ScanWindow parse_scan_window(const std::string& text, const std::string& field) {
   if (text == "all") return {};
   const std::size_t colon = text.find(':');
@@ -28,6 +20,14 @@ ScanWindow parse_scan_window(const std::string& text, const std::string& field) 
   const ScanWindow w{number(text.substr(0, colon)), number(text.substr(colon + 1))};
   if (w.first > w.last) throw InputError("", 0, field, "the window's first scan comes after its last: \"" + text + "\"");
   return w;
+}
+
+void ScanWindowText::operator()(std::vector<OptionIssue>& issues, const std::string& field, const std::string& text) const {
+  try {
+    parse_scan_window(text, field);
+  } catch (const InputError& e) {
+    issues.push_back({field, e.problem()});
+  }
 }
 
 }  // namespace relslam::eval

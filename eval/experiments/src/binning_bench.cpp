@@ -72,8 +72,6 @@ BinningBenchRow bin(const Tracks& t, const point::BinningOptions& options, const
   return row;
 }
 
-const char* pairing_name(point::BinPairing p) { return p == point::BinPairing::Disjoint ? "disjoint" : "every_bin"; }
-
 }  // namespace
 
 std::vector<BinningBenchRow> run_binning_bench(const BinningBenchOptions& o, std::uint64_t base_seed) {
@@ -108,9 +106,9 @@ void write_binning_bench(const std::filesystem::path& dir, const std::vector<Bin
   using Key = std::tuple<std::string, std::string, bool, double, int>;  // variant, pairing, heuristic, percent, n
   std::map<Key, std::vector<const BinningBenchRow*>> cells;
   for (const BinningBenchRow& r : rows) {
-    all.row(r.n, r.percent, r.variant, pairing_name(r.pairing), r.heuristic, r.seed, r.comparisons, r.highest_bin,
+    all.row(r.n, r.percent, r.variant, std::string(to_string(r.pairing)), r.heuristic, r.seed, r.comparisons, r.highest_bin,
             r.threshold, r.wrongly_flagged, r.missed);
-    cells[{r.variant, pairing_name(r.pairing), r.heuristic, r.percent, r.n}].push_back(&r);
+    cells[{r.variant, std::string(to_string(r.pairing)), r.heuristic, r.percent, r.n}].push_back(&r);
   }
   all.close();
   CsvWriter means(dir / "binning_bench_means.csv",

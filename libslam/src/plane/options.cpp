@@ -1,4 +1,5 @@
 #include "relslam/plane/options.hpp"
+#include "relslam/core/option_fields.hpp"
 
 #include <numbers>
 #include <string>

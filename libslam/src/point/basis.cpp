@@ -4,6 +4,10 @@
 
 namespace relslam::point {
 
+std::string_view to_string(BasisSelection selection) {
+  return selection == BasisSelection::Farthest ? "farthest" : "first_three";
+}
+
 std::optional<BasisFrame> basis_frame(const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2,
                                       double epsilon) {
   const Eigen::Vector3d x_axis = b0 - b1;  // B1 lands on the negative x axis

@@ -8,6 +8,8 @@
 
 namespace relslam::point {
 
+std::string_view to_string(BinPairing pairing) { return pairing == BinPairing::Disjoint ? "disjoint" : "every_bin"; }
+
 double pair_distance_std(const ObservationRing& a, const ObservationRing& b, int start, int end, int min_samples) {
   // Walk both rings (each in iteration order) from start; collect the common iterations.
   thread_local std::vector<double> d;

@@ -31,9 +31,7 @@ class OptionError : public std::invalid_argument {
 // Shortest text that reads back to the same double ("0.1", "-5", "1e+20").
 std::string format_number(double value);
 
-// Helpers that phrase the common constraints the same way everywhere.
-void require_at_least(std::vector<OptionIssue>& issues, const std::string& field, double value, double minimum);
-void require_above(std::vector<OptionIssue>& issues, const std::string& field, double value, double bound);
-void require_at_most(std::vector<OptionIssue>& issues, const std::string& field, double value, double maximum);
+// The common constraints (at_least, above, at_most, ...) are checks of option_fields.hpp,
+// phrased the same way everywhere.
 
 }  // namespace relslam

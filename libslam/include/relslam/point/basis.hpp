@@ -5,6 +5,7 @@
 
 #include <array>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace relslam::point {
@@ -27,6 +28,7 @@ enum class BasisSelection {
   Farthest,    // thesis 6.5.4: farthest pair, then the point farthest from their line
   FirstThree,  // the first three members, the early version compared in Fig 119
 };
+std::string_view to_string(BasisSelection selection);  // "farthest", "first_three"
 
 // Indices of (B0, B1, B2) among `positions`. Farthest: O(n^2) search for the farthest pair
 // (B0 the earlier of the two), then O(n) for the point farthest from their line; nothing if

@@ -1,13 +1,18 @@
 #pragma once
-// Every constant of the Relative Point algorithm, with its default and its source.
+// Every constant of the Relative Point algorithm, with its default and its source, and beside
+// each struct its description: key name, help and checks per field (core/option_fields.hpp).
 // Tags: [T] thesis-stated, [I] inferred, [C] chosen (../shared/specs/relative_point.md §5.14).
 
+#include "relslam/core/option_fields.hpp"
 #include "relslam/core/option_issue.hpp"
 #include "relslam/point/basis.hpp"
 #include "relslam/point/rlt_binning.hpp"
 #include "relslam/spatial/global_index.hpp"
 #include "relslam/spatial/local_index.hpp"
 
+#include <algorithm>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace relslam::point {
@@ -31,11 +36,33 @@ struct GroupLevelOptions {
   bool binning = true;
 };
 
+// The keys of one level (relative_point.<level>.*); `what` names the level in the help lines.
+void describe(OptionsOf<GroupLevelOptions> auto& l, auto& f, std::string_view what) {
+  const std::string level(what);
+  f.field("enabled", l.enabled, level + ": formed at all (one level only: the thesis's early version, 6.8)");
+  f.field("look_ahead", l.look_ahead, level + ": iterations waited before grouping; new members come from [c0, c0+A]",
+          at_least(1));
+  f.field("look_back", l.look_back, level + ": previously mapped candidates come from [c0-B, c0+A]", at_least(0));
+  f.field("accuracy_reduction", l.accuracy_reduction,
+          level + ": members need A minus this many observations in [c0, c0+A]", at_least(0), at_most(l.look_ahead));
+  // Three anchors fix a rigid motion.
+  f.field("prev_min", l.prev_min, level + ": PrevGroupMin, previously mapped members needed", at_least(3));
+  f.field("prev_max", l.prev_max, level + ": PrevGroupMax, previously mapped members kept", at_least(l.prev_min));
+  f.field("next_min", l.next_min, level + ": NextGroupMin, ungrouped members needed", at_least(1));
+  f.field("binning", l.binning, level + ": RltBinning removes dynamic members (thesis 6.5.3)");
+}
+
 // Temporary level: a short look-ahead so new points are mapped within a few iterations
 // (thesis 6.5.5 "a few iterations"); too short a window to bin [C values, spec A11, I].
-inline GroupLevelOptions temporary_level_defaults() { return {true, 10, 10, 2, 6, 20, 1, false}; }
+inline GroupLevelOptions temporary_level_defaults() {
+  return {.enabled = true, .look_ahead = 10, .look_back = 10, .accuracy_reduction = 2, .prev_min = 6, .prev_max = 20,
+          .next_min = 1, .binning = false};
+}
 // Final level: the thesis's constants, with NextGroupMin at its best value 1, binned [T].
-inline GroupLevelOptions final_level_defaults() { return {true, 60, 60, 10, 20, 20, 1, true}; }
+inline GroupLevelOptions final_level_defaults() {
+  return {.enabled = true, .look_ahead = 60, .look_back = 60, .accuracy_reduction = 10, .prev_min = 20, .prev_max = 20,
+          .next_min = 1, .binning = true};
+}
 
 // Level 3 (thesis 6.5.5, spec 5.12): a constant-free level. When a point has gone out of view,
 // a group is formed over its first visible run from the points seen in it: three mapped ones
@@ -50,6 +77,14 @@ struct Level3Options {
   int prev_min = 3;      // registering members (three fix a rigid motion) [T outline]
   bool binning = true;   // RltBinning removes dynamic members
 };
+
+// The keys of level 3 (relative_point.level3.*).
+void describe(OptionsOf<Level3Options> auto& l, auto& f) {
+  f.field("enabled", l.enabled, "level-3 groups over a point's whole visible run, once out of view (6.5.5)");
+  f.field("gap", l.gap, "level 3: iterations unseen that end a visible run", at_least(0));
+  f.field("prev_min", l.prev_min, "level 3: already grouped members that register a new group", at_least(3));
+  f.field("binning", l.binning, "level 3: RltBinning removes dynamic members");
+}
 
 struct PointSlamOptions {
   // Local matching compares with the latest observation of points seen in the last
@@ -138,7 +173,68 @@ struct PointSlamOptions {
   int charting_capacity = 512;
 };
 
-// Every violated constraint, fields named as in the struct ("final_group.prev_min").
+// Iterations of history the final and temporary levels look at, plus local matching's
+// look-back and the two iterations around them: what the observation rings and the charting
+// must keep.
+inline int history_window(const PointSlamOptions& o) {
+  return std::max(o.final_group.look_back + o.final_group.look_ahead,
+                  o.temporary_group.look_back + o.temporary_group.look_ahead) +
+         o.match_look_back + 2;
+}
+
+// The scenario keys of PointSlamOptions (relative_point.*): help and checks per field, in the
+// order of the key table. A bound that is another field's value is read from `o`.
+void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
+  f.field("match_look_back", o.match_look_back, "local matching looks this many iterations back (thesis 6.2.3)",
+          at_least(1));
+  f.field("local_bound", o.local_bound, "local matching bound, units (frame motion plus noise)", above(0.0));
+  f.field("compensate_motion", o.compensate_motion,
+          "predict local candidates by the fitted frame motion (beyond the thesis)");
+  f.field("compensated_bound", o.compensated_bound, "local bound after motion compensation, units (noise only)",
+          above(0.0), at_most(o.local_bound));
+  f.field("motion_outlier_cut", o.motion_outlier_cut, "motion fit keeps pairs within this many median residuals",
+          above(1.0));
+  f.field("global_bound", o.global_bound, "global matching bound, units (thesis 6.5.1)", above(0.0));
+  // The cell overlap must hold a whole matching bound.
+  f.field("local_cell_size", o.local_cell_size, "local OVLPQuadTree cell, units; 1.5 = the thesis's small quads",
+          at_least(o.local_bound));
+  f.field("global_cell_size", o.global_cell_size, "global incremental grid cell, units",
+          at_least(std::max(o.global_bound, o.merge_bound)));
+  f.nested("temporary_group", o.temporary_group, "temporary groups");
+  f.nested("final_group", o.final_group, "final groups");
+  f.nested("level3", o.level3);
+  f.choice("basis", o.basis, "basis points: farthest (thesis 6.5.4) or first_three (Fig 119)",
+           {BasisSelection::Farthest, BasisSelection::FirstThree});
+  f.field("min_basis_ratio", o.min_basis_ratio, "reject a basis whose third point is this close to the line, relative",
+          above(0.0));
+  f.field("temporary_cleanup_period", o.temporary_cleanup_period,
+          "iterations between removals of redundant temporary groups", at_least(1));
+  f.field("match_unmapped", o.match_unmapped, "global matching also finds unmapped points (beyond the thesis)");
+  f.field("pose_from_unmapped", o.pose_from_unmapped,
+          "pose from unmapped points when < 3 mapped are seen (beyond the thesis)");
+  f.field("provisional_root", o.provisional_root,
+          "temporary groups lacking mapped points in view register to provisional positions (beyond the thesis)",
+          holds(!o.provisional_root || o.pose_from_unmapped,
+                "needs pose_from_unmapped (its groups register to provisional positions)"));
+  f.field("use_odometry", o.use_odometry,
+          "frames with odometry: predict local matches and bridge unregistrable frames with it (beyond the thesis)");
+  f.choice("local_index", o.local_index, "local matching index (thesis 6.6.2)",
+           {spatial::LocalIndexKind::Quadtree, spatial::LocalIndexKind::Octree, spatial::LocalIndexKind::KdTree});
+  f.field("octree_cell_size", o.octree_cell_size, "octree cell, units", at_least(o.local_bound));
+  f.choice("global_index", o.global_index,
+           "global index: incremental (thesis 6.5.1) or rebuilt each iteration (Fig 110)",
+           {spatial::GlobalIndexKind::Incremental, spatial::GlobalIndexKind::Rebuilt});
+  f.nested("binning", o.binning);
+  f.field("merge_points", o.merge_points, "merge new points into older ones found at the same place (thesis 6.5.2)");
+  f.field("merge_delay", o.merge_delay, "iterations after creation a point is checked for merging", at_least(1));
+  f.field("merge_bound", o.merge_bound, "merging bound, units", above(0.0));
+  f.field("ring_capacity", o.ring_capacity, "observations kept per RltPoint", at_least(history_window(o)));
+  f.field("charting_capacity", o.charting_capacity, "iterations kept by RltPointCharting (2048 with level 3)",
+          at_least(history_window(o)));
+}
+
+// Every violated constraint, fields named as in the struct ("final_group.prev_min"): the
+// description's checks, then the one rule no single field carries.
 std::vector<OptionIssue> check(const PointSlamOptions& options);
 
 }  // namespace relslam::point

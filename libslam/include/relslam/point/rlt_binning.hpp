@@ -3,9 +3,11 @@
 // viewpoint. Two static points keep a constant distance in every untransformed observation,
 // so the standard deviation of that distance separates correlated pairs from the rest.
 
+#include "relslam/core/option_fields.hpp"
 #include "relslam/point/rlt_point.hpp"
 
 #include <functional>
+#include <string_view>
 #include <vector>
 
 namespace relslam::point {
@@ -22,6 +24,7 @@ enum class BinPairing {
   // polynomial growth from 20-30 % uncorrelated points (Fig 113).
   EveryBin,
 };
+std::string_view to_string(BinPairing pairing);  // "disjoint", "every_bin"
 
 struct BinningOptions {
   BinPairing pairing = BinPairing::Disjoint;
@@ -47,6 +50,20 @@ struct BinningOptions {
   // (one comparison per point left out) [C].
   bool recheck_members = true;
 };
+
+// The scenario keys of BinningOptions (relative_point.binning.*): help and checks per field.
+void describe(OptionsOf<BinningOptions> auto& o, auto& f) {
+  f.choice("pairing", o.pairing, "bins meet disjointly per round, or every bin initiates (spec 5.7)",
+           {BinPairing::Disjoint, BinPairing::EveryBin});
+  f.field("abs_gap", o.abs_gap, "threshold gap, absolute part, units", at_least(0.0));
+  f.field("rel_gap", o.rel_gap, "threshold gap, relative part", at_least(0.0));
+  f.field("threshold_margin", o.threshold_margin, "threshold gets half the minimum gap as a margin");
+  f.field("min_pair_samples", o.min_pair_samples, "common observations a pair needs", at_least(2));
+  f.field("majority_fraction", o.majority_fraction, "a bin holding more than this share ends the pairing (thesis: 0.5)",
+          above(0.0), at_most(1.0));
+  f.field("priority_heuristic", o.priority_heuristic, "bins that merged initiate the next round (thesis 6.5.3)");
+  f.field("recheck_members", o.recheck_members, "each point outside the largest bin is compared once more with it");
+}
 
 struct BinningResult {
   std::vector<bool> is_static;  // per input point: in the largest bin

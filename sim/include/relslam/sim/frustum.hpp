@@ -1,6 +1,8 @@
 #pragma once
 // The sensor's viewing volume in the robot frame. Part of relslam/sim: Eigen only.
 
+#include "relslam/core/option_fields.hpp"
+
 #include <Eigen/Core>
 #include <cmath>
 #include <numbers>
@@ -58,5 +60,14 @@ struct Frustum {
   // Full vertical opening angle seen from the sensor (for MRPT's fieldOfView_pitch).
   double vertical_field_of_view_rad() const;
 };
+
+// The scenario keys of the frustum (sim.frustum.*): help and checks per field.
+void describe(OptionsOf<Frustum> auto& f, auto& fields) {
+  fields.field("near", f.near, "nearest visible depth, units", at_least(0.0));
+  fields.field("far", f.far, "farthest visible depth, units", above(f.near, "near"));
+  fields.degrees("half_angle_deg", f.half_angle_rad, "half the horizontal field of view", above(0.0), at_most(89.0));
+  fields.field("half_height", f.half_height, "visible height band |y| <= this, units", above(0.0));
+  fields.choice("far_cap", f.far_cap, "far end: flat plane z <= far, or range |p| <= far", {FarCap::Plane, FarCap::Range});
+}
 
 }  // namespace relslam::sim

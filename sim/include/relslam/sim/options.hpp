@@ -1,8 +1,10 @@
 #pragma once
-// Everything that defines a simulated world and sensor, with one documented default each.
-// Part of relslam/sim: no I/O. Tags: [T] thesis-stated, [I] inferred, [C] chosen
-// (../shared/specs/relative_point.md §4).
+// Everything that defines a simulated world and sensor, with one documented default each and,
+// beside each struct, its description: key name, help and checks per field
+// (core/option_fields.hpp). Part of relslam/sim: no I/O. Tags: [T] thesis-stated,
+// [I] inferred, [C] chosen (../shared/specs/relative_point.md §4).
 
+#include "relslam/core/option_fields.hpp"
 #include "relslam/core/option_issue.hpp"
 #include "relslam/sim/frustum.hpp"
 
@@ -37,6 +39,19 @@ struct DynamicOptions {
   double period_min = 150.0;    // iterations; slow enough that local matching still tracks them [C]
   double period_max = 400.0;    // iterations [C]
 };
+
+// The scenario keys of DynamicOptions (sim.dynamic.*).
+void describe(OptionsOf<DynamicOptions> auto& d, auto& f) {
+  f.field("count", d.count, "dynamic points chosen among those visible at iteration 0 (S-DYN: 2)", at_least(0));
+  f.field("count_visible_for", d.count_visible_for,
+          "counted movers are seen at iteration 0 and this many iterations later", at_least(0));
+  f.field("fraction", d.fraction, "share of all points made dynamic (S-DYN3: 0.03)", at_least(0.0), at_most(1.0),
+          holds(!(d.count > 0 && d.fraction > 0), "set either dynamic.count or dynamic.fraction, not both"));
+  f.field("amplitude", d.amplitude, "dynamic wander amplitude, units", at_least(0.0));
+  f.field("vertical_ratio", d.vertical_ratio, "vertical amplitude as a share of the horizontal one", at_least(0.0));
+  f.field("period_min", d.period_min, "shortest wander period, iterations", above(0.0));
+  f.field("period_max", d.period_max, "longest wander period, iterations", at_least(d.period_min));
+}
 
 struct SimOptions {
   PathKind path = PathKind::FigureEight;  // [T] figure eight is the main test track
@@ -79,7 +94,28 @@ struct SimOptions {
 inline constexpr long long kMaxIterations = 100'000'000;
 inline constexpr long long kMaxLandmarks = 20'000'000;
 
-// Every violated constraint; fields are paths inside SimOptions ("dynamic.count").
+// The scenario keys of SimOptions (sim.*): help and checks per field.
+void describe(OptionsOf<SimOptions> auto& o, auto& f) {
+  f.choice("path", o.path, "robot path (thesis 6.6.1, 6.7.2)", {PathKind::FigureEight, PathKind::Line, PathKind::Stationary});
+  f.field("loops", o.loops, "times round the figure eight; 1 loop = 3800 iterations", at_least(1));
+  f.field("iterations", o.iterations, "run length in iterations; overrides sim.loops", at_least(1), at_most(kMaxIterations));
+  f.field("scale", o.scale, "multiplies path lengths; 2 = the double-size eight (Fig 136)", above(0.0), at_most(1000.0));
+  f.field("density", o.density, "points per 100 units of path (thesis 6.6.2)", at_least(0.0));
+  f.field("noise_sigma", o.noise_sigma, "std. deviation of white Gaussian noise per axis, units", at_least(0.0));
+  f.field("range_noise", o.range_noise, "noise grows with range: sigma·(1 + range/far)");
+  f.field("loop_length", o.loop_length, "figure-eight loop length at scale 1, units", above(0.0));
+  f.field("iterations_per_loop", o.iterations_per_loop, "iterations per loop at scale 1; sets the speed", at_least(1));
+  f.field("incline_height", o.incline_height, "height of the crossing above the start, units", at_least(0.0));
+  f.field("wobble", o.wobble, "add small roll and pitch oscillations (all 6 DOF move)");
+  f.field("band_half_width", o.band_half_width, "point band extends this far left and right, units", at_least(0.0));
+  f.field("band_half_height", o.band_half_height, "point band extends this far up and down, units", at_least(0.0));
+  f.field("line_margin", o.line_margin, "line field runs this far past the end, units", at_least(0.0));
+  f.nested("frustum", o.frustum);
+  f.nested("dynamic", o.dynamic);
+}
+
+// Every violated constraint; fields are paths inside SimOptions ("dynamic.count"): the
+// description's checks, and the run's size bounded by kMaxIterations and kMaxLandmarks.
 std::vector<OptionIssue> check(const SimOptions& options);
 
 // What the options ask for, computed from them alone: check() bounds the run's size with these

@@ -1,7 +1,8 @@
 #pragma once
-// Settings of the synthetic RltBinning benchmark S-BIN (thesis 6.5.3, Figs 111-116; spec 8.6).
+// Settings of the synthetic RltBinning benchmark S-BIN (thesis 6.5.3, Figs 111-116; spec 8.6);
+// describe() gives each field's key, help and checks (relslam/core/option_fields.hpp).
 
-#include "relslam/core/option_issue.hpp"
+#include "relslam/core/option_fields.hpp"
 
 #include <vector>
 
@@ -21,7 +22,17 @@ struct BinningBenchOptions {
   double correlated_step_sigma = 0.5;  // random-walk step of a correlated group, units [C]
 };
 
-// Every violated constraint, fields named as in the struct.
-std::vector<OptionIssue> check(const BinningBenchOptions& options);
+// The scenario keys of BinningBenchOptions (binning_bench.*): help and checks per field.
+void describe(OptionsOf<BinningBenchOptions> auto& o, auto& f) {
+  f.field("points", o.points, "S-BIN: points per binning (Fig 111's x)", at_most(100000));
+  f.field("percentages", o.percentages, "S-BIN: shares of uncorrelated points, percent", at_least(0.0), at_most(100.0));
+  f.field("seeds", o.seeds, "S-BIN: repetitions per cell", at_least(1));
+  f.field("iterations", o.iterations, "S-BIN: observations per point", at_least(5));
+  f.field("static_sigma", o.static_sigma, "S-BIN: jitter of every point, units", at_least(0.0));
+  f.field("noisy_sigma", o.noisy_sigma, "S-BIN: extra jitter of uncorrelated points, units", at_least(0.0));
+  f.field("correlated", o.correlated, "S-BIN: add Fig 114's mix with 4 correlated groups");
+  f.field("correlated_step_sigma", o.correlated_step_sigma, "S-BIN: random-walk step of a correlated group, units",
+          at_least(0.0));
+}
 
 }  // namespace relslam::eval

@@ -2,8 +2,9 @@
 // Settings of MRPT's planar EKF-SLAM (CRangeBearingKFSLAM2D), the Victoria Park reference
 // (thesis 6.8; spec mrpt §1.5, §5). Run with the vehicle's odometry (algorithm ekf2d) and,
 // for comparison with the odometry-free algorithms, without it (ekf2d_no_odometry).
+// describe() gives each field's key, help and checks (relslam/core/option_fields.hpp).
 
-#include "relslam/core/option_issue.hpp"
+#include "relslam/core/option_fields.hpp"
 #include "relslam/eval/config/ekf6d_options.hpp"
 
 #include <numbers>
@@ -38,6 +39,26 @@ struct Ekf2dOptions {
   int budget_iterations = 20;
 };
 
-std::vector<OptionIssue> check(const Ekf2dOptions& options);
+// The scenario keys of Ekf2dOptions (ekf2d.*): help and checks per field.
+void describe(OptionsOf<Ekf2dOptions> auto& o, auto& f) {
+  f.choice("method", o.method, "planar EKF update: davison or full", kEkfMethods);
+  f.choice("association", o.association, "jcbb or nn (Victoria Park has no ids), or known", kEkfAssociations);
+  f.choice("association_no_odometry", o.association_no_odometry,
+           "ekf2d_no_odometry's association: nn (bounded time per scan), jcbb or known", kEkfAssociations);
+  f.field("std_range", o.std_range, "planar EKF: range std. deviation, m", above(0.0));
+  f.degrees("std_yaw_deg", o.std_yaw_rad, "planar EKF: bearing std. deviation", above(0.0));
+  f.field("stds_q_no_odometry", o.stds_q_no_odometry,
+          "planar EKF without odometry: motion noise per scan x, y (m), heading (rad)", length(3, "x, y, heading"),
+          above(0.0));
+  f.field("odometry_std_xy", o.odometry_std_xy, "odometry std. deviation per scan, m (floor)", above(0.0));
+  f.field("odometry_std_xy_ratio", o.odometry_std_xy_ratio, "...plus this share of the distance moved", at_least(0.0));
+  f.degrees("odometry_std_heading_deg", o.odometry_std_heading_rad, "odometry heading std. deviation per scan (floor)",
+            above(0.0));
+  f.field("odometry_std_heading_ratio", o.odometry_std_heading_ratio, "...plus this share of the heading change",
+          at_least(0.0));
+  f.field("chi2_threshold", o.chi2_threshold, "planar EKF: data association compatibility", above(0.0), at_most(1.0));
+  f.field("time_budget_ms", o.time_budget_ms, "stop the planar EKF past this time per scan", above(0.0));
+  f.field("budget_iterations", o.budget_iterations, "...once its mean over this many scans exceeds it", at_least(1));
+}
 
 }  // namespace relslam::eval

@@ -1,8 +1,9 @@
 #pragma once
 // Settings of the MRPT 6D EKF baseline (thesis 6.7; spec mrpt §1, §6.2). The defaults are
-// the thesis's choices where it states them.
+// the thesis's choices where it states them; describe() gives each field's key, help and
+// checks (relslam/core/option_fields.hpp).
 
-#include "relslam/core/option_issue.hpp"
+#include "relslam/core/option_fields.hpp"
 
 #include <array>
 #include <numbers>
@@ -16,6 +17,7 @@ enum class EkfMethod {
   Davison,  // "EKF à la Davison": faster and, in the thesis's tests, more accurate [T]
   Full,     // the full EKF update
 };
+inline constexpr EkfMethod kEkfMethods[] = {EkfMethod::Davison, EkfMethod::Full};
 std::string_view to_string(EkfMethod method);
 std::optional<EkfMethod> parse_ekf_method(std::string_view name);
 
@@ -24,6 +26,7 @@ enum class EkfAssociation {
   Jcbb,   // ids withheld: joint compatibility branch and bound
   Nn,     // ids withheld: nearest neighbour
 };
+inline constexpr EkfAssociation kEkfAssociations[] = {EkfAssociation::Known, EkfAssociation::Jcbb, EkfAssociation::Nn};
 std::string_view to_string(EkfAssociation association);
 std::optional<EkfAssociation> parse_ekf_association(std::string_view name);
 
@@ -48,9 +51,19 @@ struct Ekf6dOptions {
   int budget_iterations = 20;
 };
 
-std::vector<OptionIssue> check(const Ekf6dOptions& options);
-// The checks every MRPT filter's options share: association gate and time budget.
-void check_filter_limits(std::vector<OptionIssue>& issues, double chi2_threshold, double time_budget_ms,
-                         int budget_iterations);
+// The scenario keys of Ekf6dOptions (ekf6d.*): help and checks per field.
+void describe(OptionsOf<Ekf6dOptions> auto& o, auto& f) {
+  f.choice("method", o.method, "EKF update: davison (thesis 6.7) or full", kEkfMethods);
+  f.choice("association", o.association, "known (true ids, as the thesis), or ids withheld: jcbb or nn", kEkfAssociations);
+  f.field("std_range", o.std_range, "sensor model range std. deviation, units", above(0.0));
+  f.degrees("std_yaw_deg", o.std_yaw_rad, "sensor model yaw std. deviation", above(0.0));
+  f.degrees("std_pitch_deg", o.std_pitch_rad, "sensor model pitch std. deviation", above(0.0));
+  f.field("stds_q", o.stds_q, "motion noise without odometry: x, y, z, qr, qx, qy, qz",
+          length(7, "x, y, z, qr, qx, qy, qz"), above(0.0));
+  f.field("chi2_threshold", o.chi2_threshold, "data association individual compatibility (jcbb, nn)", above(0.0),
+          at_most(1.0));
+  f.field("time_budget_ms", o.time_budget_ms, "stop the EKF past this time per iteration (thesis: 1 s)", above(0.0));
+  f.field("budget_iterations", o.budget_iterations, "...once its mean over this many iterations exceeds it", at_least(1));
+}
 
 }  // namespace relslam::eval

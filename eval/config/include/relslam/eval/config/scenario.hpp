@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace relslam::eval {
@@ -25,6 +26,9 @@ enum class ScenarioKind {
   BinningBenchmark,  // the synthetic RltBinning benchmark S-BIN (thesis Figs 111–116)
   VictoriaPark,      // the Victoria Park data set (thesis 6.8), run by relslam victoria-park
 };
+inline constexpr ScenarioKind kScenarioKinds[] = {ScenarioKind::Simulation, ScenarioKind::BinningBenchmark,
+                                                  ScenarioKind::VictoriaPark};
+std::string_view to_string(ScenarioKind kind);  // "simulation", "binning_benchmark", "victoria_park"
 
 // What `relslam simulate` writes besides ground truth and the manifest.
 struct OutputOptions {
@@ -38,6 +42,14 @@ struct OutputOptions {
   // gzip the rawlog; MRPT reads both. Off because compressing costs more than writing.
   bool rawlog_gzip = false;
 };
+
+// The scenario keys of OutputOptions (output.*).
+void describe(OptionsOf<OutputOptions> auto& o, auto& f) {
+  f.field("observations_csv", o.observations_csv, "write observations.csv (large at high density)");
+  f.field("rawlog", o.rawlog, "write observations.rawlog for MRPT tools");
+  f.field("rawlog_landmark_ids", o.rawlog_landmark_ids, "rawlog carries true landmark ids (else -1: unknown association)");
+  f.field("rawlog_gzip", o.rawlog_gzip, "gzip-compress the rawlog");
+}
 
 // One parameter of a sweep and the values it takes (read by `relslam sweep`).
 struct SweepAxis {
