@@ -1,7 +1,8 @@
 #pragma once
 // The registry of scenario keys: one entry per key with its type and meaning. Loading,
-// --set, manifest.json and the README's key table all come from it; the defaults come from
-// the option structs' initialisers, so a default is written in exactly one place.
+// --set, manifest.json and the README's key table all come from it. The keys, help lines and
+// checks come from each options struct's describe() and the defaults from its initialisers,
+// so each is written in exactly one place.
 
 #include "relslam/eval/config/scenario.hpp"
 
