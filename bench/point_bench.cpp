@@ -59,7 +59,9 @@ void BM_DoubleSizeEightTimeIsFlat(benchmark::State& state) {
   std::vector<double> x, y;
   for (std::size_t k = 200 + 11; k < ms.size(); ++k) {
     x.push_back(static_cast<double>(k));
-    y.push_back(std::accumulate(ms.begin() + static_cast<std::ptrdiff_t>(k - 11), ms.begin() + static_cast<std::ptrdiff_t>(k + 1), 0.0) / 12.0);
+    y.push_back(std::accumulate(ms.begin() + static_cast<std::ptrdiff_t>(k - 11),
+                                ms.begin() + static_cast<std::ptrdiff_t>(k + 1), 0.0) /
+                12.0);
   }
   const double mx = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
   const double my = std::accumulate(y.begin(), y.end(), 0.0) / static_cast<double>(y.size());

@@ -23,7 +23,8 @@ std::vector<ObservationFrame> frames_of(const sim::SimOptions& o, std::uint64_t 
   return frames;
 }
 
-std::vector<point::StepTimings> timings_of(const std::vector<ObservationFrame>& frames, const point::PointSlamOptions& o) {
+std::vector<point::StepTimings> timings_of(const std::vector<ObservationFrame>& frames,
+                                           const point::PointSlamOptions& o) {
   point::RltMapper mapper(o);
   std::vector<point::StepTimings> t;
   for (const ObservationFrame& f : frames) t.push_back(mapper.step(f).timings);
@@ -75,7 +76,8 @@ void BM_BinningComparisonsAtTenPercent(benchmark::State& state) {
   o.pairing = static_cast<point::BinPairing>(state.range(1));
   point::BinningResult r;
   for (auto _ : state)
-    r = point::rlt_binning(n, [&](int i, int j) { return point::pair_distance_std(rings[i], rings[j], 0, 59, 5); }, o);
+    r = point::rlt_binning(
+        n, [&](int i, int j) { return point::pair_distance_std(rings[i], rings[j], 0, 59, 5); }, o);
   state.counters["comparisons"] = r.comparisons;
   state.counters["n_ln_n"] = n * std::log(static_cast<double>(n));
   state.counters["ratio"] = r.comparisons / (n * std::log(static_cast<double>(n)));

@@ -1,14 +1,14 @@
 // Simulating one figure-eight loop (3800 iterations), issue #2 §7: target under 2 s at
 // density 550 (~535 visible points per frame) including writing the rawlog, on 2 cores.
-#include "relslam/eval/sources/frame_stream.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/sources/frame_stream.hpp"
 #include "relslam/eval/sources/simulated_world.hpp"
 #include "relslam/eval/sources/simulation_recorder.hpp"
 
 #include <benchmark/benchmark.h>
 
-#include <filesystem>
 #include <unistd.h>
+#include <filesystem>
 
 namespace {
 
@@ -26,9 +26,11 @@ void BM_SimulateLoop(benchmark::State& state) {
   long long detections = 0;
   for (auto _ : state) {
     const sim::Simulator simulator(s.sim, s.seed);
-    for (int k = 0; k < simulator.iterations(); ++k) detections += static_cast<long long>(simulator.frame(k).observation.points.size());
+    for (int k = 0; k < simulator.iterations(); ++k)
+      detections += static_cast<long long>(simulator.frame(k).observation.points.size());
   }
-  state.counters["visible_per_frame"] = static_cast<double>(detections) / (3800.0 * static_cast<double>(state.iterations()));
+  state.counters["visible_per_frame"] =
+      static_cast<double>(detections) / (3800.0 * static_cast<double>(state.iterations()));
 }
 BENCHMARK(BM_SimulateLoop)->Arg(25)->Arg(100)->Arg(550)->Unit(benchmark::kMillisecond)->Iterations(3);
 

@@ -22,7 +22,8 @@ const std::optional<eval::VictoriaParkLog>& data() {
     std::filesystem::path dir = eval::victoria_park_dir();
     if (!std::filesystem::exists(dir / "measurements.dat"))
       dir = std::filesystem::path(RELSLAM_SOURCE_DIR) / "../shared/datasets/victoria_park";
-    return std::filesystem::exists(dir / "measurements.dat") ? std::optional(eval::read_victoria_park(dir)) : std::nullopt;
+    return std::filesystem::exists(dir / "measurements.dat") ? std::optional(eval::read_victoria_park(dir))
+                                                             : std::nullopt;
   }();
   return log;
 }
@@ -32,7 +33,8 @@ const std::optional<eval::VictoriaParkLog>& data() {
 eval::LoadedScenario configured(int levels, const std::string& window) {
   std::vector<std::string> set = {"victoria_park.window=" + window};
   if (window == "all") set.push_back("relative_point.use_odometry=true");
-  if (levels == 1) set.insert(set.end(), {"relative_point.temporary_group.enabled=false", "relative_point.final_group.binning=false"});
+  if (levels == 1)
+    set.insert(set.end(), {"relative_point.temporary_group.enabled=false", "relative_point.final_group.binning=false"});
   if (levels == 3) set.push_back("relative_point.level3.enabled=true");
   return eval::load_with_overrides(std::string(RELSLAM_SOURCE_DIR) + "/scenarios/victoria-park.json", set);
 }
@@ -65,10 +67,7 @@ void BM_VictoriaParkLevels(benchmark::State& state) {
   state.counters["s_per_7249"] = seconds / static_cast<double>(frames.size()) * 7249.0;
   state.counters["mapped"] = static_cast<double>(mapped);
 }
-BENCHMARK(BM_VictoriaParkLevels)
-    ->ArgsProduct({{1, 2, 3}, {0, 1, 2}})
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(3);
+BENCHMARK(BM_VictoriaParkLevels)->ArgsProduct({{1, 2, 3}, {0, 1, 2}})->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 

@@ -4,12 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace relslam::test {
 
@@ -91,7 +91,9 @@ CsvTable read_csv(const std::filesystem::path& file) {
   return t;
 }
 
-std::filesystem::path source_path(const std::string& relative) { return std::filesystem::path(RELSLAM_SOURCE_DIR) / relative; }
+std::filesystem::path source_path(const std::string& relative) {
+  return std::filesystem::path(RELSLAM_SOURCE_DIR) / relative;
+}
 
 std::filesystem::path victoria_park_data() {
   const char* env = std::getenv("RELSLAM_VICTORIA_PARK");

@@ -47,14 +47,15 @@ std::vector<OptionIssue> check(const SimOptions& o) {
   std::vector<OptionIssue> issues = check_fields(o);
   // The run's size follows from the top-level fields, so it is bounded only when none of them
   // has an issue (a field without a '.'); it then comes before the frustum's and dynamics'.
-  if (std::any_of(issues.begin(), issues.end(), [](const OptionIssue& i) { return i.field.find('.') == std::string::npos; }))
+  if (std::any_of(issues.begin(), issues.end(),
+                  [](const OptionIssue& i) { return i.field.find('.') == std::string::npos; }))
     return issues;
   std::vector<OptionIssue> size_issues;
   if (!o.iterations && static_cast<double>(o.loops) * o.scale * o.iterations_per_loop > kMaxIterations)
     size_issues.push_back({"loops", "asks for more than " + std::to_string(kMaxIterations) + " iterations"});
   else if (landmark_count(o) > kMaxLandmarks)
-    size_issues.push_back({"density", "would create " + std::to_string(landmark_count(o)) + " landmarks; the limit is " +
-                                   std::to_string(kMaxLandmarks)});
+    size_issues.push_back({"density", "would create " + std::to_string(landmark_count(o)) +
+                                          " landmarks; the limit is " + std::to_string(kMaxLandmarks)});
   issues.insert(issues.begin(), size_issues.begin(), size_issues.end());
   return issues;
 }

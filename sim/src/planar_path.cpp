@@ -40,7 +40,8 @@ void check_operation(std::vector<OptionIssue>& issues, const std::string& field,
   const bool moves = op.kind != PathOperationKind::Turn;
   if (moves) require_above(issues, field + ".distance", op.distance, 0.0);
   if (!moves && (!std::isfinite(op.angle_rad) || op.angle_rad == 0.0))
-    issues.push_back({field + ".angle_deg", "must be a finite non-zero angle, got " + format_number(op.angle_rad / kDegree)});
+    issues.push_back(
+        {field + ".angle_deg", "must be a finite non-zero angle, got " + format_number(op.angle_rad / kDegree)});
   if (op.kind == PathOperationKind::Arc && !std::isfinite(op.angle_rad))
     issues.push_back({field + ".angle_deg", "must be finite, got " + format_number(op.angle_rad / kDegree)});
   if (op.kind == PathOperationKind::Move && op.angle_rad != 0.0)
@@ -49,12 +50,13 @@ void check_operation(std::vector<OptionIssue>& issues, const std::string& field,
     issues.push_back({field + ".distance", "a TURN is in place; use ARC to move while turning"});
 }
 
-
 // In doubles, so that a typo (MOVE 1e300, loops 2e9) cannot overflow before check() rejects it.
 double iteration_total(const PathProgram& p) {
   double per_loop = 0, then = 0;
-  for (const PathOperation& op : p.steps) per_loop += std::ceil(step_span(op, p.speed, p.turn_rate_rad) - kWholeStepTolerance);
-  for (const PathOperation& op : p.then) then += std::ceil(step_span(op, p.speed, p.turn_rate_rad) - kWholeStepTolerance);
+  for (const PathOperation& op : p.steps)
+    per_loop += std::ceil(step_span(op, p.speed, p.turn_rate_rad) - kWholeStepTolerance);
+  for (const PathOperation& op : p.then)
+    then += std::ceil(step_span(op, p.speed, p.turn_rate_rad) - kWholeStepTolerance);
   return 1.0 + p.loops * per_loop + then;
 }
 
@@ -71,13 +73,14 @@ std::vector<OptionIssue> check(const PathProgram& p) {
   std::vector<OptionIssue> issues;
   if (!p.start.translation.allFinite() || !std::isfinite(p.start.heading))
     issues.push_back({"start", "must be finite, got (" + format_number(p.start.translation.x()) + ", " +
-                                   format_number(p.start.translation.y()) + ", " + format_number(p.start.heading / kDegree) +
-                                   "°)"});
+                                   format_number(p.start.translation.y()) + ", " +
+                                   format_number(p.start.heading / kDegree) + "°)"});
   require_above(issues, "speed", p.speed, 0.0);
   require_above(issues, "turn_rate_deg", p.turn_rate_rad / kDegree, 0.0);
   require_at_least(issues, "loops", p.loops, 1);
   if (p.steps.empty()) issues.push_back({"steps", "is empty; a path needs at least one MOVE, TURN or ARC"});
-  for (std::size_t i = 0; i < p.steps.size(); ++i) check_operation(issues, "steps[" + std::to_string(i) + "]", p.steps[i]);
+  for (std::size_t i = 0; i < p.steps.size(); ++i)
+    check_operation(issues, "steps[" + std::to_string(i) + "]", p.steps[i]);
   for (std::size_t i = 0; i < p.then.size(); ++i) check_operation(issues, "then[" + std::to_string(i) + "]", p.then[i]);
   if (issues.empty() && iteration_total(p) > static_cast<double>(kMaxPathIterations))
     issues.push_back({"steps", "the path takes " + format_number(iteration_total(p)) + " iterations; the limit is " +

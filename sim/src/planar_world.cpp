@@ -8,7 +8,9 @@
 namespace relslam::sim {
 namespace {
 
-std::string point_text(const Eigen::Vector2d& p) { return "[" + format_number(p.x()) + ", " + format_number(p.y()) + "]"; }
+std::string point_text(const Eigen::Vector2d& p) {
+  return "[" + format_number(p.x()) + ", " + format_number(p.y()) + "]";
+}
 
 }  // namespace
 
@@ -25,12 +27,14 @@ std::vector<OptionIssue> check(const PlanarWorld& world) {
       ends_finite = false;
     }
     // A zero-length wall has no tangent, hence no normal and no front.
-    if (ends_finite && w.a == w.b) issues.push_back({field + ".b", "equals a " + point_text(w.a) + "; a wall needs two distinct ends"});
+    if (ends_finite && w.a == w.b)
+      issues.push_back({field + ".b", "equals a " + point_text(w.a) + "; a wall needs two distinct ends"});
     require_above(issues, field + ".height", w.height, 0.0);
     if (w.id < 0) issues.push_back({field + ".id", "must be >= 0, got " + std::to_string(w.id)});
     const auto [it, fresh] = first_with_id.emplace(w.id, i);
     if (!fresh)
-      issues.push_back({field + ".id", "repeats the id " + std::to_string(w.id) + " of walls[" + std::to_string(it->second) + "]"});
+      issues.push_back(
+          {field + ".id", "repeats the id " + std::to_string(w.id) + " of walls[" + std::to_string(it->second) + "]"});
     for (std::size_t j = 0; j < w.scripted_windows.size(); ++j) {
       const IterationWindow& window = w.scripted_windows[j];
       if (window.first < 0 || window.last < window.first)

@@ -10,7 +10,8 @@
 namespace relslam::sim {
 namespace {
 
-void append_prefixed(std::vector<OptionIssue>& issues, const std::string& prefix, const std::vector<OptionIssue>& more) {
+void append_prefixed(std::vector<OptionIssue>& issues, const std::string& prefix,
+                     const std::vector<OptionIssue>& more) {
   for (const OptionIssue& issue : more) issues.push_back({prefix + issue.field, issue.problem});
 }
 
@@ -38,8 +39,8 @@ std::string_view to_string(PlaneVisibility mode) {
 }
 
 std::optional<PlaneVisibility> parse_plane_visibility(std::string_view name) {
-  for (PlaneVisibility mode : {PlaneVisibility::Frustum, PlaneVisibility::FullSize, PlaneVisibility::AlwaysVisible,
-                               PlaneVisibility::Scripted})
+  for (PlaneVisibility mode :
+       {PlaneVisibility::Frustum, PlaneVisibility::FullSize, PlaneVisibility::AlwaysVisible, PlaneVisibility::Scripted})
     if (name == to_string(mode)) return mode;
   return std::nullopt;
 }
@@ -52,7 +53,8 @@ std::vector<OptionIssue> check(const PlaneSensorOptions& o) {
   return issues;
 }
 
-PlaneSensor::PlaneSensor(const PlaneSensorOptions& options, std::uint64_t seed) : options_(checked(options)), seed_(seed) {}
+PlaneSensor::PlaneSensor(const PlaneSensorOptions& options, std::uint64_t seed)
+    : options_(checked(options)), seed_(seed) {}
 
 PlaneSimFrame PlaneSensor::observe(const PlanarWorld& world, const PlanarPose& world_T_robot, int k) const {
   const PlaneSensorOptions& o = options_;
@@ -66,7 +68,8 @@ PlaneSimFrame PlaneSensor::observe(const PlanarWorld& world, const PlanarPose& w
     if (!seen_from_both_sides && !wall.faces(world_T_robot.translation)) continue;
 
     const Eigen::Vector2d true_a = world_T_robot.inverse_apply(wall.a), true_b = world_T_robot.inverse_apply(wall.b);
-    const std::pair<Eigen::Vector2d, Eigen::Vector2d> noisy = draw_wall_noise(o.noise, seed_, wall.id, k).apply(true_a, true_b);
+    const std::pair<Eigen::Vector2d, Eigen::Vector2d> noisy =
+        draw_wall_noise(o.noise, seed_, wall.id, k).apply(true_a, true_b);
     const Eigen::Vector2d& a = noisy.first;
     const Eigen::Vector2d& b = noisy.second;
     // End jitter larger than the wall collapses or turns it over: nothing to report.

@@ -39,7 +39,9 @@ SimFrame Simulator::frame(int k) const {
   const Rigid3 pose = path_.world_T_robot(k);
   const Frustum::Prepared frustum = options_.frustum.prepare();
   const double sigma0 = options_.noise_sigma;
-  auto sigma_at = [&](double range) { return options_.range_noise ? sigma0 * (1.0 + range / options_.frustum.far) : sigma0; };
+  auto sigma_at = [&](double range) {
+    return options_.range_noise ? sigma0 * (1.0 + range / options_.frustum.far) : sigma0;
+  };
 
   std::vector<Detection> seen;
   auto observe = [&](int id, const Eigen::Vector3d& p_world) {

@@ -59,11 +59,10 @@ std::optional<SegmentClip> ViewingFrustum::clip(const Eigen::Vector2d& a, const 
   const double tan_half = std::tan(half_angle_rad);
   SegmentClip clip;
   // The side edges z = ±x·tan α and the near line, as outward normals: n·p <= bound inside.
-  const bool inside = clip_half_plane({-1.0, 0.0}, -near, a, d, clip) &&
-                      clip_half_plane({-tan_half, 1.0}, 0.0, a, d, clip) &&
-                      clip_half_plane({-tan_half, -1.0}, 0.0, a, d, clip) &&
-                      (shape == FrustumShape::Planar ? clip_half_plane({1.0, 0.0}, far, a, d, clip)
-                                                     : clip_circle(far, a, d, clip));
+  const bool inside =
+      clip_half_plane({-1.0, 0.0}, -near, a, d, clip) && clip_half_plane({-tan_half, 1.0}, 0.0, a, d, clip) &&
+      clip_half_plane({-tan_half, -1.0}, 0.0, a, d, clip) &&
+      (shape == FrustumShape::Planar ? clip_half_plane({1.0, 0.0}, far, a, d, clip) : clip_circle(far, a, d, clip));
   if (!inside) return std::nullopt;
   return clip;
 }

@@ -16,7 +16,8 @@ TEST(BenchBinningCommand, WritesEveryBinningAndTheMeansPerCell) {
   const auto rows = test::read_lines(dir / "bin/binning_bench.csv");
   // 2 pairings x 2 heuristic settings x 2 sizes x 2 seeds x (3 shares + the correlated mix).
   EXPECT_EQ(rows.size(), 1u + 2 * 2 * 2 * 2 * 4);
-  EXPECT_EQ(rows[0], "n,percent,variant,pairing,heuristic,seed,comparisons,highest_bin,threshold,wrongly_flagged,missed");
+  EXPECT_EQ(rows[0],
+            "n,percent,variant,pairing,heuristic,seed,comparisons,highest_bin,threshold,wrongly_flagged,missed");
   int zero_percent = 0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     std::stringstream in(rows[i]);
@@ -34,7 +35,8 @@ TEST(BenchBinningCommand, WritesEveryBinningAndTheMeansPerCell) {
 
 TEST(BenchBinningCommand, RefusesASimulationScenario) {
   test::ScratchDir dir;
-  const auto r = test::run_relslam({"bench-binning", test::source_path("scenarios/s-f8.json").string(), "--out", (dir / "x").string()});
+  const auto r = test::run_relslam(
+      {"bench-binning", test::source_path("scenarios/s-f8.json").string(), "--out", (dir / "x").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("bench-binning needs a scenario of kind binning_benchmark"), std::string::npos) << r.err;
 }

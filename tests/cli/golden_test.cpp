@@ -37,15 +37,16 @@ void expect_same_table(const std::filesystem::path& expected, const std::filesys
     const auto a = split(want[i], separator), b = split(got[i], separator);
     ASSERT_EQ(a.size(), b.size()) << actual.filename() << " line " << i + 1;
     for (std::size_t j = 0; j < a.size(); ++j)
-      ASSERT_TRUE(same_field(a[j], b[j])) << actual.filename() << " line " << i + 1 << " field " << j + 1 << ": want "
-                                          << a[j] << ", got " << b[j];
+      ASSERT_TRUE(same_field(a[j], b[j]))
+          << actual.filename() << " line " << i + 1 << " field " << j + 1 << ": want " << a[j] << ", got " << b[j];
   }
 }
 
 TEST(GoldenSimulation, TinySeededRunMatchesTheCommittedFiles) {
   test::ScratchDir dir;
   const auto golden = test::source_path("tests/data/golden_sim");
-  const auto r = test::run_relslam({"simulate", (golden / "scenario.json").string(), "--out", (dir / "run").string(), "-q"});
+  const auto r =
+      test::run_relslam({"simulate", (golden / "scenario.json").string(), "--out", (dir / "run").string(), "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::vector<std::pair<std::string, char>> files = {{"ground_truth_path.tum", ' '},
                                                            {"ground_truth_landmarks.csv", ','},
@@ -53,7 +54,8 @@ TEST(GoldenSimulation, TinySeededRunMatchesTheCommittedFiles) {
                                                            {"sim_iterations.csv", ','},
                                                            {"observations.csv", ','}};
   if (std::getenv("RELSLAM_UPDATE_GOLDEN")) {
-    for (const auto& [file, separator] : files) std::filesystem::copy_file(dir / "run" / file, golden / file, std::filesystem::copy_options::overwrite_existing);
+    for (const auto& [file, separator] : files)
+      std::filesystem::copy_file(dir / "run" / file, golden / file, std::filesystem::copy_options::overwrite_existing);
     GTEST_SKIP() << "golden files rewritten in " << golden;
   }
   for (const auto& [file, separator] : files) expect_same_table(golden / file, dir / "run" / file, separator);

@@ -32,8 +32,8 @@ TEST(MapRender, TopViewPutsForwardRightAndLeftUp) {
   ASSERT_EQ(image.cols, 400);
   ASSERT_EQ(image.rows, 400);
   // A box is a 5x5 outline around its point: its left edge sits 2 pixels left of the point.
-  EXPECT_EQ(image.at<cv::Vec3b>(200, 200 + 160 - 2), kBox);   // z = 40 -> 160 px right of centre
-  EXPECT_EQ(image.at<cv::Vec3b>(200 - 120, 200 - 2), kBox);   // x = 30 -> 120 px above centre
+  EXPECT_EQ(image.at<cv::Vec3b>(200, 200 + 160 - 2), kBox);  // z = 40 -> 160 px right of centre
+  EXPECT_EQ(image.at<cv::Vec3b>(200 - 120, 200 - 2), kBox);  // x = 30 -> 120 px above centre
   // Two 5x5 outlines and nothing else green above the legend.
   EXPECT_EQ(count_colour(image(cv::Rect(0, 0, 400, 270)), kBox), 2 * 16);
   options.view = RenderView::Side;
@@ -68,8 +68,8 @@ class RenderCli : public ::testing::Test {
 test::ScratchDir* RenderCli::dir_ = nullptr;
 
 TEST_F(RenderCli, DrawsTheReplayedMapAtTheAskedSize) {
-  const auto r = test::run_relslam({"render", run_dir(), "--iteration", "120", "--width", "640", "--height", "480", "--out",
-                                    out("map.png"), "-q"});
+  const auto r = test::run_relslam(
+      {"render", run_dir(), "--iteration", "120", "--width", "640", "--height", "480", "--out", out("map.png"), "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // The replay reached the very pose the run recorded: no warning.
   EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
@@ -97,8 +97,8 @@ TEST_F(RenderCli, DrawsTheEkfAndACloseUp) {
 }
 
 TEST_F(RenderCli, AVideoHasAFramePerStep) {
-  const auto r = test::run_relslam({"render", run_dir(), "--video", out("run.mp4"), "--every", "10", "--width", "320",
-                                    "--height", "240", "-q"});
+  const auto r = test::run_relslam(
+      {"render", run_dir(), "--video", out("run.mp4"), "--every", "10", "--width", "320", "--height", "240", "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   cv::VideoCapture video(out("run.mp4"));
   ASSERT_TRUE(video.isOpened());

@@ -1,7 +1,7 @@
 #include "test_support.hpp"
 
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 
 #include <cmath>
 #include <cstdlib>
@@ -23,9 +23,19 @@ bool is_timing(const std::string& column) {
 }
 
 std::vector<std::string> run_args(const std::filesystem::path& out, std::vector<std::string> extra = {}) {
-  std::vector<std::string> args = {"run", test::source_path("scenarios/s-f8.json").string(), "--out", out.string(), "-q",
-                                   "--set", "sim.iterations=400", "--set", "sim.density=50",
-                                   "--set", "output.observations_csv=false", "--set", "output.rawlog=false"};
+  std::vector<std::string> args = {"run",
+                                   test::source_path("scenarios/s-f8.json").string(),
+                                   "--out",
+                                   out.string(),
+                                   "-q",
+                                   "--set",
+                                   "sim.iterations=400",
+                                   "--set",
+                                   "sim.density=50",
+                                   "--set",
+                                   "output.observations_csv=false",
+                                   "--set",
+                                   "output.rawlog=false"};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }
@@ -71,7 +81,8 @@ TEST(RunCommand, FinalLandmarkErrorIsTheSumOfTheMapLandmarksErrors) {
     const Eigen::Vector3d p(landmarks.number(i, "x"), landmarks.number(i, "y"), landmarks.number(i, "z"));
     double nearest = 1e300;
     for (std::size_t j = 0; j < truth.rows.size(); ++j)
-      nearest = std::min(nearest, (p - Eigen::Vector3d(truth.number(j, "x"), truth.number(j, "y"), truth.number(j, "z"))).norm());
+      nearest = std::min(
+          nearest, (p - Eigen::Vector3d(truth.number(j, "x"), truth.number(j, "y"), truth.number(j, "z"))).norm());
     EXPECT_NEAR(landmarks.number(i, "error"), nearest, 1e-12);
   }
   const std::size_t last = iterations.rows.size() - 1;
@@ -99,8 +110,9 @@ TEST(RunCommand, SameSeedGivesIdenticalResultsApartFromMeasuredTimes) {
 
 TEST(RunCommand, NoiseFreeRunScoresZeroErrors) {
   test::ScratchDir dir;
-  ASSERT_EQ(run_relslam(run_args(dir / "run", {"--set", "sim.noise_sigma=0", "--set", "relative_point.compensated_bound=0.001",
-                                               "--set", "relative_point.global_bound=0.001"}))
+  ASSERT_EQ(run_relslam(
+                run_args(dir / "run", {"--set", "sim.noise_sigma=0", "--set", "relative_point.compensated_bound=0.001",
+                                       "--set", "relative_point.global_bound=0.001"}))
                 .exit_code,
             0);
   const Table iterations = read_csv(dir / "run/relative_point/iterations.csv");

@@ -45,17 +45,25 @@ void write_mrpt_truth(const std::filesystem::path& run, const std::filesystem::p
 }
 
 std::vector<std::string> small_ekf_run(const std::filesystem::path& out) {
-  return {"run", test::source_path("scenarios/s-ekf-f8.json").string(), "--out", out.string(), "-q",
-          "--set", "sim.iterations=150", "--set", "output.observations_csv=false"};
+  return {"run",
+          test::source_path("scenarios/s-ekf-f8.json").string(),
+          "--out",
+          out.string(),
+          "-q",
+          "--set",
+          "sim.iterations=150",
+          "--set",
+          "output.observations_csv=false"};
 }
 
 TEST(RunRawlog, RecordedObservationsScoreAsTheSimulatedOnes) {
   test::ScratchDir dir;
   ASSERT_EQ(run_relslam(small_ekf_run(dir / "sim")).exit_code, 0);
   write_mrpt_truth(dir / "sim", dir / "path.txt", dir / "landmarks.txt");
-  const auto r = run_relslam({"run", test::source_path("scenarios/s-ekf-f8.json").string(), "--out", (dir / "log").string(),
-                              "-q", "--rawlog", (dir / "sim/observations.rawlog").string(), "--truth-path",
-                              (dir / "path.txt").string(), "--truth-landmarks", (dir / "landmarks.txt").string()});
+  const auto r =
+      run_relslam({"run", test::source_path("scenarios/s-ekf-f8.json").string(), "--out", (dir / "log").string(), "-q",
+                   "--rawlog", (dir / "sim/observations.rawlog").string(), "--truth-path", (dir / "path.txt").string(),
+                   "--truth-landmarks", (dir / "landmarks.txt").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const CsvTable simulated = read_csv(dir / "sim/summary.csv"), recorded = read_csv(dir / "log/summary.csv");
   ASSERT_EQ(recorded.rows.size(), 3u);  // relative_point, ekf6d, their ratio
@@ -75,7 +83,8 @@ TEST(RunRawlog, RecordedObservationsScoreAsTheSimulatedOnes) {
 TEST(RunRawlog, WithoutTruthTheRunStillMapsAndSaysWhatItCannotScore) {
   test::ScratchDir dir;
   ASSERT_EQ(run_relslam(small_ekf_run(dir / "sim")).exit_code, 0);
-  const auto r = run_relslam({"run", "--out", (dir / "log").string(), "-q", "--rawlog", (dir / "sim/observations.rawlog").string()});
+  const auto r = run_relslam(
+      {"run", "--out", (dir / "log").string(), "-q", "--rawlog", (dir / "sim/observations.rawlog").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const CsvTable summary = read_csv(dir / "log/summary.csv");
   ASSERT_GE(summary.rows.size(), 2u);
@@ -90,8 +99,8 @@ TEST(RunRawlog, ATruthPathShorterThanTheLogIsABadInput) {
   test::ScratchDir dir;
   ASSERT_EQ(run_relslam(small_ekf_run(dir / "sim")).exit_code, 0);
   test::write_file(dir / "path.txt", "0 0 0 0 0 0\n");
-  const auto r = run_relslam({"run", "--out", (dir / "log").string(), "-q", "--rawlog", (dir / "sim/observations.rawlog").string(),
-                              "--truth-path", (dir / "path.txt").string()});
+  const auto r = run_relslam({"run", "--out", (dir / "log").string(), "-q", "--rawlog",
+                              (dir / "sim/observations.rawlog").string(), "--truth-path", (dir / "path.txt").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("path.txt: --truth-path: 1 rows for 150 frames"), std::string::npos) << r.err;
 }

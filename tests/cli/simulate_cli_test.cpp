@@ -16,8 +16,10 @@ using test::run_relslam;
 const std::string kSmall = "--set=sim.iterations=120";
 
 std::vector<std::string> simulate_args(const std::filesystem::path& out, std::vector<std::string> extra = {}) {
-  std::vector<std::string> args = {"simulate", test::source_path("scenarios/s-f8.json").string(), "--out", out.string(),
-                                   "--set", "sim.density=25", "--set", "sim.iterations=120"};
+  std::vector<std::string> args = {"simulate", test::source_path("scenarios/s-f8.json").string(),
+                                   "--out",    out.string(),
+                                   "--set",    "sim.density=25",
+                                   "--set",    "sim.iterations=120"};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }
@@ -43,7 +45,8 @@ TEST(SimulateCommand, WritesEveryFileOfTheRunFolder) {
 
   // observations.csv holds exactly the visible counts of sim_iterations.csv.
   long long visible = 0;
-  for (std::size_t i = 1; i < iterations.size(); ++i) visible += std::stoll(iterations[i].substr(iterations[i].rfind(',', iterations[i].size() - 3) + 1));
+  for (std::size_t i = 1; i < iterations.size(); ++i)
+    visible += std::stoll(iterations[i].substr(iterations[i].rfind(',', iterations[i].size() - 3) + 1));
   const auto observations = test::read_lines(dir / "run/observations.csv");
   EXPECT_EQ(observations.at(0), "iteration,x,y,z,true_id");
   EXPECT_EQ(static_cast<long long>(observations.size()) - 1, visible);
@@ -153,7 +156,8 @@ TEST(Cli, HelpTeachesTheSubcommands) {
 }
 
 TEST(Cli, ScenarioCommandPrintsTheResolvedScenario) {
-  const auto r = run_relslam({"scenario", test::source_path("scenarios/s-dyn.json").string(), "--set", "sim.density=30"});
+  const auto r =
+      run_relslam({"scenario", test::source_path("scenarios/s-dyn.json").string(), "--set", "sim.density=30"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["sim"]["density"], 30.0);
@@ -170,7 +174,8 @@ namespace {
 TEST(RawlogCommand, SummarisesAndExportsASimulatedRawlog) {
   test::ScratchDir dir;
   ASSERT_EQ(test::run_relslam(simulate_args(dir / "run")).exit_code, 0);
-  const auto r = test::run_relslam({"rawlog", (dir / "run/observations.rawlog").string(), "--csv", (dir / "o.csv").string()});
+  const auto r =
+      test::run_relslam({"rawlog", (dir / "run/observations.rawlog").string(), "--csv", (dir / "o.csv").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("actions/sensory frames, action first"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("120 frames in 240 records"), std::string::npos) << r.out;

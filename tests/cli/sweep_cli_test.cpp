@@ -49,7 +49,8 @@ TEST(SweepCommand, TwoByTwoByTwoSeedsGivesEightRunsAndTheirStatistics) {
     std::vector<double> values;
     for (std::size_t j = 0; j < runs.rows.size(); ++j)
       if (runs.text(j, "sim.noise_sigma") == aggregate.text(i, "sim.noise_sigma") &&
-          runs.text(j, "relative_point.final_group.prev_min") == aggregate.text(i, "relative_point.final_group.prev_min")) {
+          runs.text(j, "relative_point.final_group.prev_min") ==
+              aggregate.text(i, "relative_point.final_group.prev_min")) {
         EXPECT_EQ(runs.text(j, "status"), "ok");
         values.push_back(runs.number(j, "final_mean_landmark_error"));
       }
@@ -64,18 +65,19 @@ TEST(SweepCommand, TwoByTwoByTwoSeedsGivesEightRunsAndTheirStatistics) {
   // More noise, more error (averaged over seeds and the other parameter).
   double low = 0, high = 0;
   for (std::size_t i = 0; i < aggregate.rows.size(); ++i)
-    (aggregate.text(i, "sim.noise_sigma") == "0.05" ? low : high) += aggregate.number(i, "final_mean_landmark_error_mean");
+    (aggregate.text(i, "sim.noise_sigma") == "0.05" ? low : high) +=
+        aggregate.number(i, "final_mean_landmark_error_mean");
   EXPECT_LT(low, high);
 }
 
 TEST(SweepCommand, ARunInASweepIsTheRunRelslamRunMakes) {
   test::ScratchDir dir;
-  ASSERT_EQ(run_relslam(small({"sweep", test::source_path("scenarios/s-f8.json").string(), "--out", (dir / "sweep").string(),
-                               "-q", "--param", "sim.noise_sigma=0.07", "--seeds", "2"}))
+  ASSERT_EQ(run_relslam(small({"sweep", test::source_path("scenarios/s-f8.json").string(), "--out",
+                               (dir / "sweep").string(), "-q", "--param", "sim.noise_sigma=0.07", "--seeds", "2"}))
                 .exit_code,
             0);
-  ASSERT_EQ(run_relslam(small({"run", test::source_path("scenarios/s-f8.json").string(), "--out", (dir / "run").string(),
-                               "-q", "--set", "sim.noise_sigma=0.07", "--set", "seed=2"}))
+  ASSERT_EQ(run_relslam(small({"run", test::source_path("scenarios/s-f8.json").string(), "--out",
+                               (dir / "run").string(), "-q", "--set", "sim.noise_sigma=0.07", "--set", "seed=2"}))
                 .exit_code,
             0);
   const auto swept = dir / "sweep/sim.noise_sigma=0.07/seed-2";
@@ -94,7 +96,8 @@ TEST(SweepCommand, ScenarioVariantsAreAnAxis) {
   const CsvTable aggregate = read_csv(dir / "sweep/aggregate.csv");
   ASSERT_EQ(aggregate.rows.size(), 2u);
   std::map<std::string, double> error;
-  for (std::size_t i = 0; i < 2; ++i) error[aggregate.text(i, "variant")] = aggregate.number(i, "final_mean_landmark_error_mean");
+  for (std::size_t i = 0; i < 2; ++i)
+    error[aggregate.text(i, "variant")] = aggregate.number(i, "final_mean_landmark_error_mean");
   EXPECT_LT(error.at("quiet"), error.at("loud"));
 }
 
@@ -113,9 +116,9 @@ TEST(SweepCommand, ABadValueFailsBeforeAnyRun) {
 
 TEST(TuneEkfCommand, RanksTheTrialsAndRecordsTheBest) {
   test::ScratchDir dir;
-  const auto r = run_relslam(small({"tune-ekf", test::source_path("scenarios/s-ekf-f8.json").string(), "--out",
-                                    (dir / "tune").string(), "-q", "--std-range", "0.05,0.4", "--std-angle-deg", "0.5",
-                                    "--q-scale", "1", "--iterations", "60"}));
+  const auto r = run_relslam(
+      small({"tune-ekf", test::source_path("scenarios/s-ekf-f8.json").string(), "--out", (dir / "tune").string(), "-q",
+             "--std-range", "0.05,0.4", "--std-angle-deg", "0.5", "--q-scale", "1", "--iterations", "60"}));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const CsvTable tune = read_csv(dir / "tune/tune.csv");
   ASSERT_EQ(tune.rows.size(), 2u);

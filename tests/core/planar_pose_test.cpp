@@ -1,5 +1,5 @@
-#include "relslam/core/plane_object.hpp"
 #include "relslam/core/planar_pose.hpp"
+#include "relslam/core/plane_object.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,9 +5,7 @@
 namespace relslam {
 namespace {
 
-Rigid3 sample_pose() {
-  return {rotation_about(Eigen::Vector3d(1, 2, 3).normalized(), 0.7), Eigen::Vector3d(4, -5, 6)};
-}
+Rigid3 sample_pose() { return {rotation_about(Eigen::Vector3d(1, 2, 3).normalized(), 0.7), Eigen::Vector3d(4, -5, 6)}; }
 
 TEST(Rigid3, InverseComposesToIdentity) {
   const Rigid3 a_T_b = sample_pose();

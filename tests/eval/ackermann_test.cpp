@@ -42,10 +42,10 @@ TEST(Ackermann, ConstantSteeringTurnsAtTheModelsRate) {
 
 TEST(Ackermann, InputsAreHeldUntilTheNextAndZeroBeforeTheFirst) {
   const DeadReckoning dr({{1.0, 2.0, 0.0}, {2.0, 4.0, 0.0}});
-  EXPECT_NEAR(dr.motion(0.0, 1.0).x, 0.0, 1e-12);   // before any input: standing
-  EXPECT_NEAR(dr.motion(0.5, 1.5).x, 1.0, 1e-12);   // 0.5 s at 2 m/s
-  EXPECT_NEAR(dr.motion(1.5, 2.5).x, 3.0, 1e-12);   // 0.5 s at 2, then 0.5 s at 4
-  EXPECT_NEAR(dr.motion(3.0, 4.0).x, 4.0, 1e-12);   // the last input holds
+  EXPECT_NEAR(dr.motion(0.0, 1.0).x, 0.0, 1e-12);  // before any input: standing
+  EXPECT_NEAR(dr.motion(0.5, 1.5).x, 1.0, 1e-12);  // 0.5 s at 2 m/s
+  EXPECT_NEAR(dr.motion(1.5, 2.5).x, 3.0, 1e-12);  // 0.5 s at 2, then 0.5 s at 4
+  EXPECT_NEAR(dr.motion(3.0, 4.0).x, 4.0, 1e-12);  // the last input holds
 }
 
 TEST(Ackermann, DeadReckoningFollowsGpsOverAMinuteOfTheData) {

@@ -73,7 +73,9 @@ TEST(TumWriter, WritesEightSingleSpacedFieldsWithWLast) {
   const std::string line = test::read_lines(dir / "t.tum").at(0);
   EXPECT_EQ(line.find("  "), std::string::npos);
   double v[8];
-  ASSERT_EQ(std::sscanf(line.c_str(), "%lf %lf %lf %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6], &v[7]), 8);
+  ASSERT_EQ(std::sscanf(line.c_str(), "%lf %lf %lf %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5],
+                        &v[6], &v[7]),
+            8);
   EXPECT_EQ(v[0], 3);
   EXPECT_EQ(v[1], 1);
   EXPECT_EQ(v[3], 3);

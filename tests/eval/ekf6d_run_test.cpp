@@ -19,11 +19,11 @@ namespace {
 // A short, low-noise figure eight at density 25 with both algorithms; the EKF's sensor model
 // matched to the noise.
 LoadedScenario low_noise(int iterations, double sigma) {
-  return parse_scenario_with_overrides(R"({"sim": {"path": "figure_eight", "density": 25}})", "low-noise.json",
-                                       {"sim.iterations=" + std::to_string(iterations),
-                                        "sim.noise_sigma=" + std::to_string(sigma), "ekf6d.std_range=0.02",
-                                        "ekf6d.std_yaw_deg=0.1", "ekf6d.std_pitch_deg=0.1",
-                                        "relative_point.final_group.prev_min=8"});
+  return parse_scenario_with_overrides(
+      R"({"sim": {"path": "figure_eight", "density": 25}})", "low-noise.json",
+      {"sim.iterations=" + std::to_string(iterations), "sim.noise_sigma=" + std::to_string(sigma),
+       "ekf6d.std_range=0.02", "ekf6d.std_yaw_deg=0.1", "ekf6d.std_pitch_deg=0.1",
+       "relative_point.final_group.prev_min=8"});
 }
 
 struct Runs {
@@ -32,14 +32,15 @@ struct Runs {
 };
 
 // Feeds every frame (changed by `tamper`, if given) to the named algorithms.
-Runs run_algorithms(const LoadedScenario& loaded, const std::vector<std::string>& names, const std::filesystem::path& dir,
-                    const std::function<void(ObservationFrame&)>& tamper = {}) {
+Runs run_algorithms(const LoadedScenario& loaded, const std::vector<std::string>& names,
+                    const std::filesystem::path& dir, const std::function<void(ObservationFrame&)>& tamper = {}) {
   const sim::Simulator simulator = build_simulator(loaded);
   const LandmarkTruth truth = landmark_truth(simulator.world());
   const RangeBearingSensor sensor = sensor_of(loaded.scenario.sim);
   std::vector<std::unique_ptr<AlgorithmRecorder>> runs;
   for (const std::string& name : names)
-    runs.push_back(std::make_unique<AlgorithmRecorder>(make_algorithm(name, {loaded.scenario, sensor}), truth, dir / name));
+    runs.push_back(
+        std::make_unique<AlgorithmRecorder>(make_algorithm(name, {loaded.scenario, sensor}), truth, dir / name));
   Runs out;
   for (int k = 0; k < simulator.iterations(); ++k) {
     sim::SimFrame frame = simulator.frame(k);
@@ -110,7 +111,8 @@ TEST(Ekf6dRun, StopsOnceOverItsTimeBudget) {
   loaded.scenario.ekf6d.budget_iterations = 5;
   const Runs r = run_algorithms(loaded, {"ekf6d"}, dir.path());
   EXPECT_EQ(r.rows[0].status.kind, RunStatus::Kind::Stopped);
-  EXPECT_EQ(r.rows[0].status.text().rfind("stopped at iteration 4: over the time budget", 0), 0u) << r.rows[0].status.text();
+  EXPECT_EQ(r.rows[0].status.text().rfind("stopped at iteration 4: over the time budget", 0), 0u)
+      << r.rows[0].status.text();
   EXPECT_EQ(r.rows[0].iterations, 5);
 }
 

@@ -12,7 +12,8 @@ namespace {
 TEST(LandmarkErrorTracker, IncrementalSumMatchesBruteForceWithMovingTruth) {
   sim::RandomSequence rng(801, sim::Stream::Field);
   LandmarkTruth truth;
-  for (int i = 0; i < 300; ++i) truth.positions.emplace_back(rng.uniform(-50, 50), rng.uniform(-5, 5), rng.uniform(-50, 50));
+  for (int i = 0; i < 300; ++i)
+    truth.positions.emplace_back(rng.uniform(-50, 50), rng.uniform(-5, 5), rng.uniform(-50, 50));
   truth.dynamic_ids = {3, 77};
   auto dynamic_position = [&](int id, int k) {
     Eigen::Vector3d p = truth.positions[id];

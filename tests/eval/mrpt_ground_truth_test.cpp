@@ -24,7 +24,8 @@ std::string error_reading(const std::filesystem::path& file, bool path) {
 
 TEST(MrptGroundTruth, PathRowsAreXyzYawPitchRoll) {
   test::ScratchDir dir;
-  test::write_file(dir / "path.txt", "% x y z yaw pitch roll\n\n1 2 3 0 0 0\n# comment\n4 5 6 1.5707963267948966 0 0 7 8\n");
+  test::write_file(dir / "path.txt",
+                   "% x y z yaw pitch roll\n\n1 2 3 0 0 0\n# comment\n4 5 6 1.5707963267948966 0 0 7 8\n");
   const std::vector<Rigid3> path = read_mrpt_path(dir / "path.txt");
   ASSERT_EQ(path.size(), 2u);
   EXPECT_EQ(path[0].translation, Eigen::Vector3d(1, 2, 3));
@@ -33,10 +34,10 @@ TEST(MrptGroundTruth, PathRowsAreXyzYawPitchRoll) {
   EXPECT_TRUE((path[1].rotation * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY(), 1e-12));
   // Pitch is about the turned y axis, roll about the twice-turned x (MRPT's CPose3D).
   test::write_file(dir / "ypr.txt", "0 0 0 0.3 0.2 0.1\n");
-  const Eigen::Matrix3d expected = (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) *
-                                    Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()) *
-                                    Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()))
-                                       .toRotationMatrix();
+  const Eigen::Matrix3d expected =
+      (Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
   EXPECT_TRUE(read_mrpt_path(dir / "ypr.txt")[0].rotation.isApprox(expected, 1e-12));
 }
 

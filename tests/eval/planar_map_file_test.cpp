@@ -24,12 +24,18 @@ std::string map_text(const std::string& wall0 = R"({"a": [5, -1], "b": [5, 1], "
                      const std::string& steps = R"(["MOVE 1"])") {
   return "{\n"
          "  \"walls\": [\n"
-         "    " + wall0 + ",\n"
-         "    " + wall1 + "\n"
+         "    " +
+         wall0 +
+         ",\n"
+         "    " +
+         wall1 +
+         "\n"
          "  ],\n"
          "  \"path\": {\n"
          "    \"start\": {\"x\": 0, \"z\": 0, \"heading_deg\": 0},\n"
-         "    \"steps\": " + steps + "\n"
+         "    \"steps\": " +
+         steps +
+         "\n"
          "  }\n"
          "}\n";
 }
@@ -103,7 +109,8 @@ TEST(PlanarMapFile, MapCTurnsAroundOnTheLineOfTheSideCorridorWall) {
   EXPECT_EQ(side.b.x(), 36.0);
   EXPECT_EQ(side.normal(), Eigen::Vector2d(-1, 0));
   EXPECT_EQ(map.sensor.mode, sim::PlaneVisibility::FullSize);
-  EXPECT_NEAR((path.world_T_robot(path.iterations() - 1).translation - Eigen::Vector2d(0, 0)).norm(), 0, kPathTolerance);
+  EXPECT_NEAR((path.world_T_robot(path.iterations() - 1).translation - Eigen::Vector2d(0, 0)).norm(), 0,
+              kPathTolerance);
 }
 
 TEST(PlanarMapFile, MapDHasTheSpecsPiecesAndLoop) {
@@ -119,7 +126,8 @@ TEST(PlanarMapFile, MapDHasTheSpecsPiecesAndLoop) {
   const sim::PlanarPath path(map.path);
   // One loop: 88 units at 0.05 and four quarter turns at 1.5°; then 22 units and one turn.
   EXPECT_EQ(path.iterations(), 1 + 1760 + 240 + 440 + 60);
-  EXPECT_NEAR((path.world_T_robot(path.iterations() - 1).translation - Eigen::Vector2d(28.5, 10)).norm(), 0, kPathTolerance);
+  EXPECT_NEAR((path.world_T_robot(path.iterations() - 1).translation - Eigen::Vector2d(28.5, 10)).norm(), 0,
+              kPathTolerance);
   EXPECT_NEAR((path.world_T_robot(2000).translation - Eigen::Vector2d(15, 1.5)).norm(), 0, kPathTolerance)
       << "the first loop closes";
 }
@@ -158,7 +166,8 @@ TEST(PlanarMapFile, SmallValidMapLoadsWithDefaults) {
 }
 
 TEST(PlanarMapFile, ZeroLengthWallNamesTheEnd) {
-  EXPECT_EQ(error_of(map_text(R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})", R"({"a": [6, 1], "b": [6, 1], "facing": "-x"})")),
+  EXPECT_EQ(error_of(map_text(R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})",
+                              R"({"a": [6, 1], "b": [6, 1], "facing": "-x"})")),
             "m.json:4: walls[1].b: equals a [6, 1]; a wall needs two distinct ends");
 }
 
@@ -170,9 +179,10 @@ TEST(PlanarMapFile, NumberBeyondADoubleIsRejectedAtItsLine) {
 }
 
 TEST(PlanarMapFile, WallWithoutFacingSideIsRejected) {
-  EXPECT_EQ(error_of(map_text(R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})", R"({"a": [6, 1], "b": [6, 2]})")),
-            "m.json:4: walls[1].facing: is missing; give the side the wall's front looks to: \"+x\", \"-x\", \"+z\", \"-z\" "
-            "or a direction [x, z]");
+  EXPECT_EQ(
+      error_of(map_text(R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})", R"({"a": [6, 1], "b": [6, 2]})")),
+      "m.json:4: walls[1].facing: is missing; give the side the wall's front looks to: \"+x\", \"-x\", \"+z\", \"-z\" "
+      "or a direction [x, z]");
 }
 
 TEST(PlanarMapFile, FacingAlongTheWallIsRejected) {
@@ -188,22 +198,27 @@ TEST(PlanarMapFile, UnknownKeyIsRejected) {
 }
 
 TEST(PlanarMapFile, EmptyPathIsRejected) {
-  EXPECT_EQ(error_of(map_text(R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})", R"({"a": [6, 1], "b": [6, 2], "facing": "-x"})", "[]")),
+  EXPECT_EQ(error_of(map_text(R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})",
+                              R"({"a": [6, 1], "b": [6, 2], "facing": "-x"})", "[]")),
             "m.json:8: path.steps: is empty; a path needs at least one MOVE, TURN or ARC");
 }
 
 TEST(PlanarMapFile, BadStepsNameTheStep) {
-  const std::string wall0 = R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})", wall1 = R"({"a": [6, 1], "b": [6, 2], "facing": "-x"})";
-  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["MOVE 1", "MOV 4"])")),
-            "m.json:8: path.steps[1]: expected \"MOVE <distance>\", \"TURN <degrees>\" or \"ARC <distance> <degrees>\", "
-            "got \"MOV 4\"");
-  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["MOVE -1"])")), "m.json:8: path.steps[0].distance: must be > 0, got -1");
+  const std::string wall0 = R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})",
+                    wall1 = R"({"a": [6, 1], "b": [6, 2], "facing": "-x"})";
+  EXPECT_EQ(
+      error_of(map_text(wall0, wall1, R"(["MOVE 1", "MOV 4"])")),
+      "m.json:8: path.steps[1]: expected \"MOVE <distance>\", \"TURN <degrees>\" or \"ARC <distance> <degrees>\", "
+      "got \"MOV 4\"");
+  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["MOVE -1"])")),
+            "m.json:8: path.steps[0].distance: must be > 0, got -1");
   EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["TURN +90", "ARC 2 -45"])")), "no error");
 }
 
 TEST(PlanarMapFile, PathThatNeverSeesTwoWallsIsRejected) {
   // Both walls behind the robot, which drives away from them.
-  EXPECT_EQ(error_of(map_text(R"({"a": [-5, -1], "b": [-5, 1], "facing": "+x"})", R"({"a": [-6, 1], "b": [-6, 2], "facing": "+x"})")),
+  EXPECT_EQ(error_of(map_text(R"({"a": [-5, -1], "b": [-5, 1], "facing": "+x"})",
+                              R"({"a": [-6, 1], "b": [-6, 2], "facing": "+x"})")),
             "m.json:6: path: never sees two walls at once with the map's sensor (mode frustum); the algorithm relates "
             "walls only through the ones it sees together");
 }
@@ -211,7 +226,8 @@ TEST(PlanarMapFile, PathThatNeverSeesTwoWallsIsRejected) {
 TEST(PlanarMapFile, BadSensorHintIsRejected) {
   std::string text = map_text();
   text.insert(text.rfind('}'), "  ,\"sensor\": {\"mode\": \"always\"}\n");
-  EXPECT_EQ(error_of(text), "m.json:10: sensor.mode: expected frustum, full_size, always_visible or scripted, got \"always\"");
+  EXPECT_EQ(error_of(text),
+            "m.json:10: sensor.mode: expected frustum, full_size, always_visible or scripted, got \"always\"");
 }
 
 TEST(PlanarMapFile, MissingFileIsAnInputError) {

@@ -74,9 +74,9 @@ TEST(PlaneMapError, SumsAndAveragesTheEndErrorOfPlanesWithAWall) {
   votes.add(10, 0);
   votes.add(11, 1);
   const std::vector<std::pair<int, PlaneObject>> map = {
-      {10, wall({0, 0}, {2, 0})},    // half size: e_ends 1
-      {11, walls[1]},                // exact
-      {12, wall({9, 9}, {10, 9})},   // no vote: not scored
+      {10, wall({0, 0}, {2, 0})},   // half size: e_ends 1
+      {11, walls[1]},               // exact
+      {12, wall({9, 9}, {10, 9})},  // no vote: not scored
   };
   const PlaneMapError e = plane_map_error(map, votes, walls);
   EXPECT_EQ(e.scored, 2);

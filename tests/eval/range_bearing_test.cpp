@@ -2,9 +2,9 @@
 
 #include "relslam/sim/random.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose3D.h>
+#include <Eigen/Dense>
 
 namespace relslam::eval {
 namespace {

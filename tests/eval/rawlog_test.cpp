@@ -132,7 +132,11 @@ TEST(Rawlog, HeaderLookingGarbageAfterTheFirstRecordIsAnError) {
   std::vector<std::vector<int>> ids;
   write_frames(dir / "r.rawlog", false, true, &frames, &ids, 2);
   std::string bytes = test::read_file(dir / "r.rawlog");
-  bytes += std::string("\x8D" "CNotAClassXYZ", 14) + std::string(64, '\x01');
+  bytes += std::string(
+               "\x8D"
+               "CNotAClassXYZ",
+               14) +
+           std::string(64, '\x01');
   test::write_file(dir / "bad.rawlog", bytes);
   EXPECT_NE(error_reading(dir / "bad.rawlog").find("bad.rawlog:5: unreadable record"), std::string::npos)
       << error_reading(dir / "bad.rawlog");
@@ -195,7 +199,7 @@ TEST(Rawlog, SensorPoseOnTheRobotIsAppliedToThePoints) {
     auto archive = mrpt::serialization::archiveFrom(out);
     mrpt::obs::CObservationBearingRange obs;
     obs.sensorLocationOnRobot = mrpt::poses::CPose3D(1.0, 0.5, 0.2, 0, 0, 0);  // x fwd, y left, z up
-    obs.sensedData.push_back({10.0f, 0.0f, 0.0f, -1, {}});                       // 10 ahead of the sensor
+    obs.sensedData.push_back({10.0f, 0.0f, 0.0f, -1, {}});                     // 10 ahead of the sensor
     archive << obs;
   }
   const ObservationFrame f = observation_frame(read_rawlog(dir / "offset.rawlog").frames.at(0));

@@ -1,9 +1,9 @@
 #include "relslam/eval/config/scenario.hpp"
 
+#include "described_fields.hpp"
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/scenario_keys.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
-#include "described_fields.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -65,7 +65,8 @@ TEST(Scenario, WrongTypeNamesTheKey) {
 }
 
 TEST(Scenario, NegativeDensityIsRejectedAtItsLine) {
-  EXPECT_EQ(error_of("{\n  \"sim\": {\n    \"density\": -5\n  }\n}"), "scenarios/t.json:3: sim.density: must be >= 0, got -5");
+  EXPECT_EQ(error_of("{\n  \"sim\": {\n    \"density\": -5\n  }\n}"),
+            "scenarios/t.json:3: sim.density: must be >= 0, got -5");
 }
 
 TEST(Scenario, IntegralFloatsAreIntegersAndNullClearsIterations) {
@@ -82,8 +83,12 @@ TEST(Scenario, DegreeKeysAreStoredInRadians) {
 
 TEST(Scenario, OverridesApplyInOrderWithTheirOwnTypes) {
   const Scenario s = parse_scenario("{}", "t.json",
-                                    {{"sim.density", "50"}, {"sim.path", "line"}, {"sim.wobble", "true"},
-                                     {"sim.iterations", "77"}, {"sim.density", "60"}, {"name", "123"}})
+                                    {{"sim.density", "50"},
+                                     {"sim.path", "line"},
+                                     {"sim.wobble", "true"},
+                                     {"sim.iterations", "77"},
+                                     {"sim.density", "60"},
+                                     {"name", "123"}})
                          .scenario;
   EXPECT_EQ(s.sim.density, 60.0);
   EXPECT_EQ(s.sim.path, sim::PathKind::Line);
@@ -95,7 +100,8 @@ TEST(Scenario, OverridesApplyInOrderWithTheirOwnTypes) {
 TEST(Scenario, BadOverridesSayWhereTheyCameFrom) {
   EXPECT_EQ(error_of("{}", {{"sim.density", "abc"}}), "--set: sim.density: expected a number, got \"abc\"");
   EXPECT_EQ(error_of("{}", {{"sim.density", "-3"}}), "--set: sim.density: must be >= 0, got -3");
-  EXPECT_EQ(error_of("{}", {{"sim.scal", "1"}}), "--set: sim.scal: unknown key; did you mean \"sim.scale\"? (relslam keys lists them all)");
+  EXPECT_EQ(error_of("{}", {{"sim.scal", "1"}}),
+            "--set: sim.scal: unknown key; did you mean \"sim.scale\"? (relslam keys lists them all)");
   EXPECT_THROW(parse_override("sim.density"), InputError);
   EXPECT_EQ(parse_override("a=b=c").value, "b=c");
 }
@@ -105,7 +111,8 @@ TEST(Scenario, ChecksOfDefaultValuesSayTheValueIsADefault) {
   EXPECT_EQ(error_of("{\n\"sim\": {\"dynamic\": {\n\"count\": 2,\n\"fraction\": 0.1}}}"),
             "scenarios/t.json:4: sim.dynamic.fraction: set either dynamic.count or dynamic.fraction, not both");
   // far below the default near: the message points at far's line.
-  EXPECT_EQ(error_of("{\"sim\": {\"frustum\": {\n\"far\": 0.5}}}"), "scenarios/t.json:2: sim.frustum.far: must be > frustum.near (1), got 0.5");
+  EXPECT_EQ(error_of("{\"sim\": {\"frustum\": {\n\"far\": 0.5}}}"),
+            "scenarios/t.json:2: sim.frustum.far: must be > frustum.near (1), got 0.5");
 }
 
 TEST(Scenario, SeveralProblemsAreReportedTogether) {
@@ -122,14 +129,18 @@ TEST(Scenario, SweepAxesAreCheckedAgainstTheirKeys) {
   EXPECT_EQ(s.sweep[0].values.size(), 2u);
   EXPECT_EQ(error_of("{\"sweep\": {\"sim.density\": [100, \"x\"]}}"),
             "scenarios/t.json:1: sweep.sim.density: expected a number, got \"x\"");
-  EXPECT_EQ(error_of("{\"sweep\": {\"sim.bogus\": [1]}}"), "scenarios/t.json:1: sweep.sim.bogus: 'sim.bogus' is not a key that can be varied");
+  EXPECT_EQ(error_of("{\"sweep\": {\"sim.bogus\": [1]}}"),
+            "scenarios/t.json:1: sweep.sim.bogus: 'sim.bogus' is not a key that can be varied");
   EXPECT_EQ(error_of("{\"sweep\": {\"sim.density\": []}}"),
             "scenarios/t.json:1: sweep.sim.density: expected a non-empty list of values");
 }
 
 TEST(Scenario, VariantsAreNamedSettingsCheckedAgainstTheirKeys) {
-  const Scenario s = parse_scenario(R"({"variants": {"base": {}, "ar1": {"relative_point.final_group.accuracy_reduction": 1,
-      "sim.noise_sigma": 0.2}}})", "t.json").scenario;
+  const Scenario s =
+      parse_scenario(R"({"variants": {"base": {}, "ar1": {"relative_point.final_group.accuracy_reduction": 1,
+      "sim.noise_sigma": 0.2}}})",
+                     "t.json")
+          .scenario;
   ASSERT_EQ(s.variants.size(), 2u);
   EXPECT_EQ(s.variants[0].name, "ar1");  // JSON objects are unordered: variants come sorted by name
   ASSERT_EQ(s.variants[0].settings.size(), 2u);
@@ -154,12 +165,14 @@ TEST(Scenario, UnknownAlgorithmIsRejected) {
     return std::string();
   };
   EXPECT_EQ(unknown(R"({"algorithms": ["relative_point", "nope"]})"),
-            "scenarios/t.json:1: algorithms: unknown algorithm \"nope\" (known: relative_point, ekf6d, ekf2d, ekf2d_no_odometry)");
-  EXPECT_EQ(unknown(R"({"algorithms": ["ekf6d"], "sweep": {"algorithms": [["relative_point"], ["x"]]}})").rfind(
-                "scenarios/t.json:1: sweep.algorithms: unknown algorithm \"x\"", 0),
+            "scenarios/t.json:1: algorithms: unknown algorithm \"nope\" (known: relative_point, ekf6d, ekf2d, "
+            "ekf2d_no_odometry)");
+  EXPECT_EQ(unknown(R"({"algorithms": ["ekf6d"], "sweep": {"algorithms": [["relative_point"], ["x"]]}})")
+                .rfind("scenarios/t.json:1: sweep.algorithms: unknown algorithm \"x\"", 0),
             0u);
   EXPECT_EQ(unknown(R"({"algorithms": ["ekf6d"]})"), "");
-  EXPECT_EQ(error_of(R"({"algorithms": "x"})"), "scenarios/t.json:1: algorithms: expected a list of algorithm names, got \"x\"");
+  EXPECT_EQ(error_of(R"({"algorithms": "x"})"),
+            "scenarios/t.json:1: algorithms: expected a list of algorithm names, got \"x\"");
 }
 
 TEST(Scenario, ToJsonRoundTripsEveryKey) {
@@ -194,12 +207,14 @@ TEST(ScenarioKeys, FixedKeyNamesExist) {
 }
 
 TEST(ScenarioKeys, HarnessOptionsAreCheckedByTheirDescriptions) {
-  EXPECT_EQ(error_of("{\"ekf6d\": {\"std_yaw_deg\": -2}}"), "scenarios/t.json:1: ekf6d.std_yaw_deg: must be > 0, got -2");
+  EXPECT_EQ(error_of("{\"ekf6d\": {\"std_yaw_deg\": -2}}"),
+            "scenarios/t.json:1: ekf6d.std_yaw_deg: must be > 0, got -2");
   EXPECT_EQ(error_of("{\"ekf2d\": {\"stds_q_no_odometry\": [1, 1]}}"),
             "scenarios/t.json:1: ekf2d.stds_q_no_odometry: needs 3 values (x, y, heading), got 2");
   EXPECT_EQ(error_of("{\"victoria_park\": {\"window\": \"9:1\"}}"),
             "scenarios/t.json:1: victoria_park.window: the window's first scan comes after its last: \"9:1\"");
-  EXPECT_EQ(error_of("{\"victoria_park\": {\"max_range\": -1}}"), "scenarios/t.json:1: victoria_park.max_range: must be > 0, got -1");
+  EXPECT_EQ(error_of("{\"victoria_park\": {\"max_range\": -1}}"),
+            "scenarios/t.json:1: victoria_park.max_range: must be > 0, got -1");
   EXPECT_EQ(error_of("{\"binning_bench\": {\"percentages\": [5, 101]}}"),
             "scenarios/t.json:1: binning_bench.percentages: must be <= 100, got 101");
 }
@@ -218,7 +233,8 @@ TEST(ScenarioKeys, EveryOptionFieldIsDescribed) {
 
 TEST(ScenarioKeys, ReadmeTableIsGeneratedFromTheRegistry) {
   const std::string readme = test::read_file(test::source_path("README.md"));
-  const std::string begin = "<!-- scenario-keys:begin (relslam keys --markdown) -->\n", end = "<!-- scenario-keys:end -->";
+  const std::string begin = "<!-- scenario-keys:begin (relslam keys --markdown) -->\n",
+                    end = "<!-- scenario-keys:end -->";
   const auto a = readme.find(begin), b = readme.find(end);
   ASSERT_NE(a, std::string::npos) << "README.md lacks the scenario-keys block";
   ASSERT_NE(b, std::string::npos);

@@ -2,8 +2,8 @@
 // data is absent), and the stream the algorithms see.
 #include "relslam/eval/experiments/victoria_park_experiment.hpp"
 
-#include "relslam/eval/io/rawlog.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/io/rawlog.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -109,9 +109,9 @@ TEST(VictoriaParkExperiment, TheWholeLogRunsEndToEndWhenBridgedByDeadReckoning) 
 TEST(ConvertVictoriaPark, TheRawlogCarriesOdometryAndTheTrees) {
   SKIP_WITHOUT_DATA();
   test::ScratchDir dir;
-  const auto r = test::run_relslam({"convert", "victoria-park", "--data", test::victoria_park_data().string(), "--window",
-                                    "1181:1190", "--scenario", test::source_path("scenarios/victoria-park.json").string(),
-                                    "--out", (dir / "vp.rawlog").string(), "-q"});
+  const auto r = test::run_relslam(
+      {"convert", "victoria-park", "--data", test::victoria_park_data().string(), "--window", "1181:1190", "--scenario",
+       test::source_path("scenarios/victoria-park.json").string(), "--out", (dir / "vp.rawlog").string(), "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Rawlog log = read_rawlog(dir / "vp.rawlog");
   ASSERT_EQ(log.frames.size(), 10u);
@@ -135,13 +135,13 @@ TEST(ConvertVictoriaPark, TheRawlogCarriesOdometryAndTheTrees) {
 
 TEST(VictoriaParkCommand, MissingDataIsABadInputNamingWhereItLooked) {
   test::ScratchDir dir;
-  const auto r = test::run_relslam({"victoria-park", test::source_path("scenarios/victoria-park.json").string(), "--data",
-                                    (dir / "nowhere").string(), "--out", (dir / "run").string()});
+  const auto r = test::run_relslam({"victoria-park", test::source_path("scenarios/victoria-park.json").string(),
+                                    "--data", (dir / "nowhere").string(), "--out", (dir / "run").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("nowhere: --data: no Victoria Park data here"), std::string::npos) << r.err;
-  const auto window = test::run_relslam({"victoria-park", test::source_path("scenarios/victoria-park.json").string(),
-                                         "--window", "9000:9100", "--data", (dir / "nowhere").string(), "--out",
-                                         (dir / "run").string()});
+  const auto window =
+      test::run_relslam({"victoria-park", test::source_path("scenarios/victoria-park.json").string(), "--window",
+                         "9000:9100", "--data", (dir / "nowhere").string(), "--out", (dir / "run").string()});
   EXPECT_EQ(window.exit_code, 2);
 }
 

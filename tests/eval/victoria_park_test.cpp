@@ -49,7 +49,8 @@ TEST(VictoriaPark, TheThesisWindowsCoverTheDocumentedTimes) {
     double first, last;
     int detections;
   };
-  for (const Expected& e : {Expected{"1181:1642", 252.935, 351.419, 3811}, Expected{"4220:4634", 902.156, 990.599, 3586}}) {
+  for (const Expected& e :
+       {Expected{"1181:1642", 252.935, 351.419, 3811}, Expected{"4220:4634", 902.156, 990.599, 3586}}) {
     const std::vector<LaserScan> scans = scans_in(log_or_skip(), parse_scan_window(e.window, "--window"), "--window");
     ASSERT_FALSE(scans.empty());
     EXPECT_DOUBLE_EQ(scans.front().time, e.first) << e.window;

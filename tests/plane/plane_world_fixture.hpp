@@ -42,9 +42,9 @@ class PathBuilder {
 };
 
 struct PlaneRun {
-  std::vector<PlanarPose> world_T_robot;  // truth, one per iteration
-  std::vector<PlaneFrame> frames;         // what the robot reports
-  std::vector<std::vector<int>> wall_ids; // the wall of each reported plane
+  std::vector<PlanarPose> world_T_robot;   // truth, one per iteration
+  std::vector<PlaneFrame> frames;          // what the robot reports
+  std::vector<std::vector<int>> wall_ids;  // the wall of each reported plane
 };
 
 // What the robot at world_T_robot reports at `iteration`, in wall order.

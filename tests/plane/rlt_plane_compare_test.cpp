@@ -43,9 +43,7 @@ struct TwoPlanes {
 TwoPlanes record(const std::vector<int>& first_iterations, const std::vector<int>& second_iterations) {
   const std::vector<test::Wall> walls = test::four_planes_walls();
   const std::vector<PlanarPose> path = test::four_planes_path(1, 0.25, 10 * kPi / 180);
-  const auto seen = [&](int wall, int t) {
-    return test::observe(walls, path[t], t, {.always = true}).planes[wall];
-  };
+  const auto seen = [&](int wall, int t) { return test::observe(walls, path[t], t, {.always = true}).planes[wall]; };
   TwoPlanes planes{RltPlane(0, seen(0, first_iterations[0]), 100), RltPlane(1, seen(1, second_iterations[0]), 100)};
   for (std::size_t k = 1; k < first_iterations.size(); ++k) planes.first.add(seen(0, first_iterations[k]));
   for (std::size_t k = 1; k < second_iterations.size(); ++k) planes.second.add(seen(1, second_iterations[k]));

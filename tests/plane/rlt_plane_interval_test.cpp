@@ -1,5 +1,5 @@
-#include "relslam/plane/rlt_interval.hpp"
 #include "relslam/plane/rlt_plane_interval.hpp"
+#include "relslam/plane/rlt_interval.hpp"
 
 #include <gtest/gtest.h>
 

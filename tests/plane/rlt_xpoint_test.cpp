@@ -44,8 +44,8 @@ double largest_difference(const std::vector<RltPlane>& a, XPointId xa, const std
     for (std::size_t j = 0; j < a.size(); ++j) {
       const PlanarPose in_a = a[i].ref(xa)->pose.inverse() * a[j].ref(xa)->pose;
       const PlanarPose in_b = b[i].ref(xb)->pose.inverse() * b[j].ref(xb)->pose;
-      worst = std::max({worst, (in_a.translation - in_b.translation).norm(),
-                        std::abs(wrap_angle(in_a.heading - in_b.heading))});
+      worst = std::max(
+          {worst, (in_a.translation - in_b.translation).norm(), std::abs(wrap_angle(in_a.heading - in_b.heading))});
     }
   return worst;
 }
@@ -63,8 +63,8 @@ void expect_chain_order_independent(double position_noise) {
     group.set_chain(order);
     group.compute(planes, {});
     for (const RltPlane& p : planes) ASSERT_TRUE(p.ref(0)->valid);
-    EXPECT_LT(largest_difference(reference, 0, planes, 0), kSameMap) << "order " << order[0] << order[1] << order[2]
-                                                                     << order[3];
+    EXPECT_LT(largest_difference(reference, 0, planes, 0), kSameMap)
+        << "order " << order[0] << order[1] << order[2] << order[3];
   }
 }
 

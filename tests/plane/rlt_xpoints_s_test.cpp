@@ -30,7 +30,8 @@ struct RunSummary {
 };
 
 // Runs the algorithm over a fixture run and scores it against the walls at every iteration.
-RunSummary run(const std::vector<test::Wall>& walls, const test::PlaneRun& world, const RelativePlaneOptions& options = {}) {
+RunSummary run(const std::vector<test::Wall>& walls, const test::PlaneRun& world,
+               const RelativePlaneOptions& options = {}) {
   RltXPointsS slam(options, world.world_T_robot.front());
   RunSummary summary;
   std::map<PlaneId, int> wall_of;
@@ -66,8 +67,7 @@ RunSummary run(const std::vector<test::Wall>& walls, const test::PlaneRun& world
 // E03 without noise: the four planes problem, Rules 1–5, ten loops of the square path.
 TEST(RltXPointsS, FourPlanesNoiseFreeMapAndPoseAreExactAtEveryValidIteration) {
   const std::vector<test::Wall> walls = test::four_planes_walls();
-  const test::PlaneRun world =
-      test::run_path(walls, test::four_planes_path(10, 0.1, 5 * kPi / 180), {.always = true});
+  const test::PlaneRun world = test::run_path(walls, test::four_planes_path(10, 0.1, 5 * kPi / 180), {.always = true});
   const RunSummary s = run(walls, world);
   EXPECT_EQ(s.rlt_planes, 4);
   EXPECT_EQ(s.groups, 1);
@@ -92,8 +92,8 @@ TEST(RltXPointsS, HallwayNoiseFreeMapAndPoseAreExactAtEveryValidIteration) {
   const test::PlaneRun world = hallway_there_and_back();
   const RunSummary s = run(test::hallway_walls(), world);
   EXPECT_TRUE(s.one_wall_per_plane);
-  EXPECT_GE(s.groups, 4);                // planes came and went
-  EXPECT_EQ(s.links, s.groups);          // the first link anchors X0 (Rule 4)
+  EXPECT_GE(s.groups, 4);        // planes came and went
+  EXPECT_EQ(s.links, s.groups);  // the first link anchors X0 (Rule 4)
   EXPECT_GT(s.valid_poses, 700);
   EXPECT_LT(s.worst_pose, kNoiseFree);
   EXPECT_LT(s.worst_map, kNoiseFree);
@@ -128,8 +128,8 @@ TEST(RltXPointsS, HallwayGroupsAreLinkedByTwoPlanesSeenLatest) {
     // Rule 9: every other plane of `from` in view when the link was made, and seen long
     // enough to be a candidate, was first seen no later than the linking planes.
     const int t = link.created_iteration;
-    const int oldest_link = std::min(slam.planes()[link.planes[0]].created_iteration(),
-                                     slam.planes()[link.planes[1]].created_iteration());
+    const int oldest_link =
+        std::min(slam.planes()[link.planes[0]].created_iteration(), slam.planes()[link.planes[1]].created_iteration());
     for (PlaneId p : from.planes()) {
       const RltPlane& plane = slam.planes()[p];
       const bool candidate = plane.get_plane(t) != nullptr && plane.created_iteration() <= t - 10;

@@ -3,8 +3,8 @@
 #include "relslam/core/rigid.hpp"
 #include "seeded_random.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 namespace relslam::point {
 namespace {
@@ -30,8 +30,9 @@ TEST(BasisFrame, CoordinatesAreInvariantToAnyRigidMotion) {
   const auto f = basis_frame(p[0], p[1], p[2]);
   ASSERT_TRUE(f);
   for (int trial = 0; trial < 10; ++trial) {
-    const Rigid3 motion = Rigid3::from(Eigen::Quaterniond(rng.gaussian(), rng.gaussian(), rng.gaussian(), rng.gaussian()),
-                                       {rng.uniform(-9, 9), rng.uniform(-9, 9), rng.uniform(-9, 9)});
+    const Rigid3 motion =
+        Rigid3::from(Eigen::Quaterniond(rng.gaussian(), rng.gaussian(), rng.gaussian(), rng.gaussian()),
+                     {rng.uniform(-9, 9), rng.uniform(-9, 9), rng.uniform(-9, 9)});
     const auto g = basis_frame(motion * p[0], motion * p[1], motion * p[2]);
     ASSERT_TRUE(g);
     for (const Eigen::Vector3d& q : p) EXPECT_LT(((*g)(motion * q) - (*f)(q)).norm(), 1e-11);

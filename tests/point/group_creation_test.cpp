@@ -121,7 +121,9 @@ TEST(GroupCreation, FinalGroupLeavesOutAMovingPointAndFlagsItDynamic) {
   MapFeed feed;
   const auto statics = feed.add_landmarks(12, 0, 60);
   const PointId mover = feed.add_landmark(
-      [](int k) { return Eigen::Vector3d(4.0 + 3.0 * std::sin(k / 6.0), 0.5 * std::sin(k / 9.0), 35.0 + 3.0 * std::cos(k / 7.0)); },
+      [](int k) {
+        return Eigen::Vector3d(4.0 + 3.0 * std::sin(k / 6.0), 0.5 * std::sin(k / 9.0), 35.0 + 3.0 * std::cos(k / 7.0));
+      },
       0, 60);
   feed.feed_to(60);
   GroupCreation creation;

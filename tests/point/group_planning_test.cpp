@@ -52,13 +52,14 @@ TEST(GroupPlanner, RootPlanTakesEveryWaitingPointSeenOftenEnough) {
   feed.map.temporary_list.remove(grouped);  // grouped at this level already
   const PointSlamOptions options;
   GroupPlanner planner;
-  const PlanOutcome outcome =
-      planner.plan(ids[0], 0, 10, context(feed, GroupLevel::Temporary, options, false), feed.map.points, feed.map.charting, options);
+  const PlanOutcome outcome = planner.plan(ids[0], 0, 10, context(feed, GroupLevel::Temporary, options, false),
+                                           feed.map.points, feed.map.charting, options);
   ASSERT_TRUE(outcome.plan);
   const GroupPlan& plan = *outcome.plan;
   EXPECT_TRUE(plan.root());
   EXPECT_EQ(plan.registration, Registration::FirstObservations) << "no point is mapped and c0 is the first iteration";
-  EXPECT_EQ(as_set(plan.members), as_set(ids)) << "neither the grouped point " << grouped << " nor the rare one " << rare;
+  EXPECT_EQ(as_set(plan.members), as_set(ids))
+      << "neither the grouped point " << grouped << " nor the rare one " << rare;
   EXPECT_EQ(plan.anchor, std::vector<bool>(12, false));
   EXPECT_TRUE(outcome.dynamic.empty());
   EXPECT_EQ(outcome.comparisons, 0) << "temporary groups are not binned";
@@ -72,8 +73,9 @@ TEST(GroupPlanner, NoPlanWhenTheCandidateIsSeenTooRarelyInItsWindow) {
   feed.feed_to(10);
   const PointSlamOptions options;
   GroupPlanner planner;
-  EXPECT_FALSE(planner.plan(brief, 0, 10, context(feed, GroupLevel::Temporary, options, false), feed.map.points,
-                            feed.map.charting, options)
+  EXPECT_FALSE(planner
+                   .plan(brief, 0, 10, context(feed, GroupLevel::Temporary, options, false), feed.map.points,
+                         feed.map.charting, options)
                    .plan);
 }
 
@@ -88,8 +90,8 @@ TEST(GroupPlanner, AnchorsAreTheMostSeenMappedPointsUpToPrevMaxThenTheNewPoints)
   PointSlamOptions options;
   options.temporary_group.prev_max = 10;
   GroupPlanner planner;
-  const PlanOutcome outcome =
-      planner.plan(fresh, 20, 30, context(feed, GroupLevel::Temporary, options, true), feed.map.points, feed.map.charting, options);
+  const PlanOutcome outcome = planner.plan(fresh, 20, 30, context(feed, GroupLevel::Temporary, options, true),
+                                           feed.map.points, feed.map.charting, options);
   ASSERT_TRUE(outcome.plan);
   const GroupPlan& plan = *outcome.plan;
   EXPECT_EQ(plan.registration, Registration::Anchors);
@@ -127,12 +129,13 @@ TEST(GroupPlanner, BinningLeavesOutTheMovingPointAndReportsIt) {
   MapFeed feed;
   const auto statics = feed.add_landmarks(12, 0, 60);
   const PointId mover = feed.add_landmark(
-      [](int k) { return Eigen::Vector3d(-3.0 + 3.0 * std::sin(k / 5.0), 0.0, 40.0 + 3.0 * std::cos(k / 8.0)); }, 0, 60);
+      [](int k) { return Eigen::Vector3d(-3.0 + 3.0 * std::sin(k / 5.0), 0.0, 40.0 + 3.0 * std::cos(k / 8.0)); }, 0,
+      60);
   feed.feed_to(60);
   const PointSlamOptions options;
   GroupPlanner planner;
-  const PlanOutcome outcome =
-      planner.plan(statics[0], 0, 60, context(feed, GroupLevel::Final, options, false), feed.map.points, feed.map.charting, options);
+  const PlanOutcome outcome = planner.plan(statics[0], 0, 60, context(feed, GroupLevel::Final, options, false),
+                                           feed.map.points, feed.map.charting, options);
   EXPECT_EQ(outcome.dynamic, std::vector<PointId>{mover});
   EXPECT_GT(outcome.comparisons, 0);
   ASSERT_TRUE(outcome.plan);
@@ -144,12 +147,14 @@ TEST(GroupPlanner, BinningLeavesOutTheMovingPointAndReportsIt) {
 TEST(GroupPlanner, CollinearPointsGiveNoBasisAndNoPlan) {
   MapFeed feed;
   std::vector<PointId> ids;
-  for (int i = 0; i < 12; ++i) ids.push_back(feed.add_landmark(Eigen::Vector3d(-10.0 + 2.0 * i, 1.0, 25.0 + 3.0 * i), 0, 30));
+  for (int i = 0; i < 12; ++i)
+    ids.push_back(feed.add_landmark(Eigen::Vector3d(-10.0 + 2.0 * i, 1.0, 25.0 + 3.0 * i), 0, 30));
   feed.feed_to(10);
   const PointSlamOptions options;
   GroupPlanner planner;
-  EXPECT_FALSE(planner.plan(ids[0], 0, 10, context(feed, GroupLevel::Temporary, options, false), feed.map.points,
-                            feed.map.charting, options)
+  EXPECT_FALSE(planner
+                   .plan(ids[0], 0, 10, context(feed, GroupLevel::Temporary, options, false), feed.map.points,
+                         feed.map.charting, options)
                    .plan)
       << "three points on a line fix no frame (thesis 6.5.4)";
 }
@@ -157,7 +162,7 @@ TEST(GroupPlanner, CollinearPointsGiveNoBasisAndNoPlan) {
 TEST(GroupPlanner, Level3PlanSeedsOnThreeMappedPointsAndKeepsThoseThatAddObservations) {
   MapFeed feed;
   const PointId c = feed.add_landmarks(1, 0, 20)[0];
-  const auto full = feed.add_landmarks(4, 0, 20);         // seen in all of c's run
+  const auto full = feed.add_landmarks(4, 0, 20);              // seen in all of c's run
   const PointId short_lived = feed.add_landmarks(1, 0, 5)[0];  // would cut the usable iterations to 6
   feed.feed_to(25);
   map_points(feed, full);

@@ -28,13 +28,15 @@ RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const Poin
     }
     const Rigid3 estimate = sensor_T_robot.inverse() * r.world_T_robot * sensor_T_robot;
     const double position_error = (estimate.translation - f.truth.world_T_robot.translation).norm();
-    if (position_error > report.worst_position_error) report.worst_position_error = position_error, report.worst_position_iteration = k;
+    if (position_error > report.worst_position_error)
+      report.worst_position_error = position_error, report.worst_position_iteration = k;
     if (k >= sim.iterations() * 3 / 4) report.global_matches_last_quarter += r.global_matches;
     if (errors_every_iteration || k + 1 == sim.iterations()) {
       double sum = 0;
       int n = 0;
       for (const RltPoint& p : mapper.points())
-        if (p.on_map()) sum += (sensor_T_robot.inverse() * p.global - sim.world().position(majority(votes[p.id]), k)).norm(), ++n;
+        if (p.on_map())
+          sum += (sensor_T_robot.inverse() * p.global - sim.world().position(majority(votes[p.id]), k)).norm(), ++n;
       const double mean = n ? sum / n : 0.0;
       report.worst_mean_landmark_error = std::max(report.worst_mean_landmark_error, mean);
       report.final_mean_landmark_error = mean;
@@ -49,7 +51,8 @@ RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const Poin
   report.votes = votes;
   for (const RltPoint& p : mapper.points()) {
     report.flagged.push_back(p.dynamic);
-    report.final_map.push_back(p.has_global ? Eigen::Vector3d(sensor_T_robot.inverse() * p.global) : Eigen::Vector3d::Zero());
+    report.final_map.push_back(p.has_global ? Eigen::Vector3d(sensor_T_robot.inverse() * p.global)
+                                            : Eigen::Vector3d::Zero());
     if (!p.on_map()) continue;
     ++report.mapped;
     ++on_map[majority(votes[p.id])];
@@ -58,6 +61,5 @@ RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const Poin
   for (const auto& [id, n] : seen) report.long_seen_unmapped += n >= 20 && !on_map.count(id);
   return report;
 }
-
 
 }  // namespace relslam::point

@@ -14,7 +14,7 @@ struct RunReport {
   int worst_position_iteration = -1;
   double worst_mean_landmark_error = 0;  // per mapped landmark, against its true landmark
   double final_mean_landmark_error = 0;
-  double final_landmark_error = 0;       // sum over the map
+  double final_landmark_error = 0;  // sum over the map
   int rlt_points = 0;
   int distinct_landmarks_seen = 0;
   int mapped = 0;

@@ -2,8 +2,8 @@
 
 #include "seeded_random.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include <set>
 
@@ -18,13 +18,16 @@ TEST(PointMatcher, MotionCompensationKeepsCloseLandmarksApart) {
   for (int i = 0; i < 40; ++i) world.emplace_back(rng.uniform(-40, 40), rng.uniform(-4, 4), rng.uniform(20, 95));
   world.push_back({0.0, 0.0, 60.0});
   world.push_back({0.3, 0.0, 60.0});
-  auto pose = [](int k) { return Rigid3{rotation_about(Eigen::Vector3d::UnitY(), 0.01 * k), Eigen::Vector3d(0, 0, 0.3 * k)}; };
+  auto pose = [](int k) {
+    return Rigid3{rotation_about(Eigen::Vector3d::UnitY(), 0.01 * k), Eigen::Vector3d(0, 0, 0.3 * k)};
+  };
 
   for (bool compensate : {true, false}) {
     PointSlamOptions o;
     o.compensate_motion = compensate;
     PointMatcher matcher(o);
-    auto global_index = spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
+    auto global_index =
+        spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
     auto& global = *global_index;
     std::vector<RltPoint> points;  // landmark i is RltPoint i
     std::vector<LocalCandidate> candidates;
@@ -61,8 +64,9 @@ TEST(PointMatcher, MotionCompensationKeepsCloseLandmarksApart) {
 TEST(PointMatcher, GlobalMatchingFindsAMappedPointThroughThePose) {
   PointSlamOptions o;
   PointMatcher matcher(o);
-  auto global_index = spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
-    auto& global = *global_index;
+  auto global_index =
+      spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
+  auto& global = *global_index;
   std::vector<RltPoint> points(1);
   points[0].id = 0;
   points[0].observations.push({Eigen::Vector3d(0, 0, 10), 0});
@@ -84,14 +88,15 @@ TEST(PointMatcher, OneObservationPerPointAndViceVersa) {
   PointSlamOptions o;
   o.compensate_motion = false;
   PointMatcher matcher(o);
-  auto global_index = spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
-    auto& global = *global_index;
+  auto global_index =
+      spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
+  auto& global = *global_index;
   std::vector<RltPoint> points(1);
   points[0].observations.push({Eigen::Vector3d(0, 0, 10), 0});
   matcher.prepare({{0, {0, 0, 10}, 0}}, 1);
   // Two observations near one candidate: the closer one gets it, the other is new.
-  const MatchResult& r = matcher.match({Eigen::Vector3d(0.5, 0, 10), Eigen::Vector3d(0.1, 0, 10)}, 1, global, points,
-                                       Rigid3::identity());
+  const MatchResult& r =
+      matcher.match({Eigen::Vector3d(0.5, 0, 10), Eigen::Vector3d(0.1, 0, 10)}, 1, global, points, Rigid3::identity());
   EXPECT_EQ(r.assigned, (std::vector<PointId>{kNone, 0}));
 }
 
@@ -102,8 +107,8 @@ namespace relslam::point {
 namespace {
 
 // Brute force: every (observation, candidate) pair within the bound, closest first.
-std::vector<PointId> brute_force_matches(const std::vector<Eigen::Vector3d>& obs, const std::vector<LocalCandidate>& cands,
-                                         double bound) {
+std::vector<PointId> brute_force_matches(const std::vector<Eigen::Vector3d>& obs,
+                                         const std::vector<LocalCandidate>& cands, double bound) {
   struct Pair {
     double d;
     int i;
@@ -125,7 +130,8 @@ std::vector<PointId> brute_force_matches(const std::vector<Eigen::Vector3d>& obs
 
 TEST(PointMatcher, EveryLocalIndexGivesTheBruteForceMatches) {
   test::SeededRandom rng(702);
-  for (spatial::LocalIndexKind kind : {spatial::LocalIndexKind::Quadtree, spatial::LocalIndexKind::Octree, spatial::LocalIndexKind::KdTree})
+  for (spatial::LocalIndexKind kind :
+       {spatial::LocalIndexKind::Quadtree, spatial::LocalIndexKind::Octree, spatial::LocalIndexKind::KdTree})
     for (int trial = 0; trial < 10; ++trial) {
       std::vector<LocalCandidate> cands;
       std::vector<Eigen::Vector3d> obs;
@@ -138,7 +144,8 @@ TEST(PointMatcher, EveryLocalIndexGivesTheBruteForceMatches) {
       o.compensate_motion = false;  // the thesis's single pass: exactly the brute-force rule
       o.local_index = kind;
       PointMatcher matcher(o);
-      auto global = spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
+      auto global =
+          spatial::make_global_index(spatial::GlobalIndexKind::Incremental, o.global_cell_size, o.global_bound);
       std::vector<RltPoint> points(cands.size());
       for (const LocalCandidate& c : cands) points[c.id].observations.push({c.p, 9});
       matcher.prepare(cands, 10);

@@ -16,7 +16,8 @@ std::vector<ObservationRing> tracks(int n, int uncorrelated, std::uint64_t seed,
   test::SeededRandom rng(seed);
   std::vector<bool> is_noisy(static_cast<std::size_t>(n), false);
   std::fill(is_noisy.begin(), is_noisy.begin() + uncorrelated, true);
-  for (int i = n - 1; i > 0; --i) std::vector<bool>::swap(is_noisy[i], is_noisy[rng.below(static_cast<std::uint64_t>(i) + 1)]);
+  for (int i = n - 1; i > 0; --i)
+    std::vector<bool>::swap(is_noisy[i], is_noisy[rng.below(static_cast<std::uint64_t>(i) + 1)]);
   if (noisy) *noisy = is_noisy;
   std::vector<ObservationRing> rings(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
@@ -29,8 +30,9 @@ std::vector<ObservationRing> tracks(int n, int uncorrelated, std::uint64_t seed,
 }
 
 BinningResult bin(const std::vector<ObservationRing>& rings, const BinningOptions& o = {}) {
-  return rlt_binning(static_cast<int>(rings.size()),
-                     [&](int i, int j) { return pair_distance_std(rings[i], rings[j], 0, 59, o.min_pair_samples); }, o);
+  return rlt_binning(
+      static_cast<int>(rings.size()),
+      [&](int i, int j) { return pair_distance_std(rings[i], rings[j], 0, 59, o.min_pair_samples); }, o);
 }
 
 TEST(RltBinning, AllStaticPointsFormOneBinInNMinusOneComparisons) {
@@ -51,20 +53,20 @@ TEST(RltBinning, EveryBinPairingSpendsOneExtraComparisonOnAllStaticPoints) {
 
 TEST(RltBinning, FlagsExactlyTheUncorrelatedPointsUpToFortyPercent) {
   for (BinPairing pairing : {BinPairing::Disjoint, BinPairing::EveryBin})
-  for (bool heuristic : {true, false})
-    for (int n : {20, 50, 100, 200})
-      for (int percent : {5, 10, 20, 30, 40})
-        for (std::uint64_t seed : {1, 2, 3}) {
-          const int uncorrelated = n * percent / 100;
-          BinningOptions o;
-          o.pairing = pairing;
-          o.priority_heuristic = heuristic;
-          std::vector<bool> noisy;
-          const BinningResult r = bin(tracks(n, uncorrelated, seed, &noisy), o);
-          for (int i = 0; i < n; ++i)
-            ASSERT_EQ(r.is_static[i], !noisy[i])
-                << "n " << n << " " << percent << "% seed " << seed << " heuristic " << heuristic << " point " << i;
-        }
+    for (bool heuristic : {true, false})
+      for (int n : {20, 50, 100, 200})
+        for (int percent : {5, 10, 20, 30, 40})
+          for (std::uint64_t seed : {1, 2, 3}) {
+            const int uncorrelated = n * percent / 100;
+            BinningOptions o;
+            o.pairing = pairing;
+            o.priority_heuristic = heuristic;
+            std::vector<bool> noisy;
+            const BinningResult r = bin(tracks(n, uncorrelated, seed, &noisy), o);
+            for (int i = 0; i < n; ++i)
+              ASSERT_EQ(r.is_static[i], !noisy[i])
+                  << "n " << n << " " << percent << "% seed " << seed << " heuristic " << heuristic << " point " << i;
+          }
 }
 
 TEST(RltBinning, HeuristicKeepsComparisonsBelowNLogNUpToFortyPercent) {

@@ -2,22 +2,22 @@
 
 #include "seeded_random.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 namespace relslam::point {
 namespace {
 
 // Static points seen from a moving viewpoint, noise-free: n iterations, one RltPoint each.
-std::vector<RltPoint> observed_points(const std::vector<Eigen::Vector3d>& world, int iterations, test::SeededRandom& rng,
-                                      std::vector<Rigid3>* poses) {
+std::vector<RltPoint> observed_points(const std::vector<Eigen::Vector3d>& world, int iterations,
+                                      test::SeededRandom& rng, std::vector<Rigid3>* poses) {
   std::vector<RltPoint> points(world.size());
   for (std::size_t i = 0; i < world.size(); ++i) points[i].id = static_cast<PointId>(i);
   for (int k = 0; k < iterations; ++k) {
-    const Rigid3 world_T_robot = k == 0 ? Rigid3::identity()
-                                        : Rigid3::from(Eigen::Quaterniond(1, 0.1 * rng.gaussian(), 0.1 * rng.gaussian(),
-                                                                          0.1 * rng.gaussian()),
-                                                       {rng.uniform(-5, 5), rng.uniform(-1, 1), rng.uniform(-5, 5)});
+    const Rigid3 world_T_robot =
+        k == 0 ? Rigid3::identity()
+               : Rigid3::from(Eigen::Quaterniond(1, 0.1 * rng.gaussian(), 0.1 * rng.gaussian(), 0.1 * rng.gaussian()),
+                              {rng.uniform(-5, 5), rng.uniform(-1, 1), rng.uniform(-5, 5)});
     poses->push_back(world_T_robot);
     for (std::size_t i = 0; i < world.size(); ++i) {
       const Point o{world_T_robot.inverse_apply(world[i]), k};
@@ -42,7 +42,8 @@ TEST(RltGroup, NoiseFreeRelativePositionsAreTheTrueBasisCoordinates) {
   const auto points = observed_points(world, 20, rng, &poses);
   std::vector<PointId> members(12);
   for (int i = 0; i < 12; ++i) members[i] = i;
-  RltGroup group(0, GroupLevel::Final, 0, 19, members, std::vector<bool>(12, false), {0, 5, 7}, Registration::FirstObservations);
+  RltGroup group(0, GroupLevel::Final, 0, 19, members, std::vector<bool>(12, false), {0, 5, 7},
+                 Registration::FirstObservations);
   ASSERT_TRUE(group.accumulate(points, 0, 19, 1e-6));
   EXPECT_EQ(group.iterations_used(), 20);
   const auto frame = basis_frame(world[0], world[5], world[7]);
@@ -57,7 +58,8 @@ TEST(RltGroup, RootRegistrationRecoversTheWorldFromTheFirstObservations) {
   const auto points = observed_points(world, 15, rng, &poses);
   std::vector<PointId> members(10);
   for (int i = 0; i < 10; ++i) members[i] = i;
-  RltGroup group(0, GroupLevel::Temporary, 0, 14, members, std::vector<bool>(10, false), {1, 2, 3}, Registration::FirstObservations);
+  RltGroup group(0, GroupLevel::Temporary, 0, 14, members, std::vector<bool>(10, false), {1, 2, 3},
+                 Registration::FirstObservations);
   group.accumulate(points, 0, 14, 1e-6);
   const auto world_T_group = group.registration(points, 0);
   ASSERT_TRUE(world_T_group);
@@ -95,7 +97,8 @@ TEST(RltGroup, IterationsWithAMissingMemberAreSkipped) {
     gappy.interval.add(k);
   }
   points.push_back(gappy);
-  RltGroup group(0, GroupLevel::Final, 0, 5, {0, 1, 2, 3, 4, 5}, std::vector<bool>(6, false), {0, 1, 2}, Registration::FirstObservations);
+  RltGroup group(0, GroupLevel::Final, 0, 5, {0, 1, 2, 3, 4, 5}, std::vector<bool>(6, false), {0, 1, 2},
+                 Registration::FirstObservations);
   group.accumulate(points, 0, 5, 1e-6);
   EXPECT_EQ(group.iterations_used(), 4);
   EXPECT_EQ(group.computed_on().count(0, 5), 4);

@@ -2,8 +2,8 @@
 
 #include "seeded_random.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 namespace relslam::point {
 namespace {

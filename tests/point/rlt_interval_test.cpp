@@ -46,7 +46,8 @@ TEST(RltInterval, InsertInAnyOrderKeepsRunsCanonical) {
   }
   EXPECT_EQ(interval.total(), static_cast<int>(truth.size()));
   for (int a = -5; a < 205; a += 7) EXPECT_EQ(interval.count(a, a + 13), brute_count(truth, a, a + 13));
-  for (std::size_t r = 1; r < interval.runs().size(); ++r) EXPECT_GT(interval.runs()[r].start, interval.runs()[r - 1].end + 1);
+  for (std::size_t r = 1; r < interval.runs().size(); ++r)
+    EXPECT_GT(interval.runs()[r].start, interval.runs()[r - 1].end + 1);
 }
 
 TEST(RltInterval, AddRefusesGoingBack) {

@@ -1,13 +1,13 @@
 // Whole-run behaviour of the Relative Point algorithm on simulated figure eights (label
 // `scenario`: about a second each in a Release build).
-#include "mapper_run.hpp"
 #include "relslam/point/rlt_mapper.hpp"
+#include "mapper_run.hpp"
 
 #include "relslam/sim/random.hpp"
 #include "relslam/sim/simulator.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include <map>
 #include <set>
@@ -100,8 +100,10 @@ TEST(RltMapper, RigidlyTransformedObservationsGiveTheSameMapTransformed) {
                                 {rng.uniform(-30, 30), rng.uniform(-30, 30), rng.uniform(-30, 30)});
   const RunReport plain = run(o, 2, PointSlamOptions{}), moved = run(o, 2, PointSlamOptions{}, t);
   ASSERT_EQ(plain.rlt_points, moved.rlt_points);
-  for (std::size_t k = 0; k < plain.steps.size(); ++k) ASSERT_EQ(plain.steps[k].assignment, moved.steps[k].assignment) << k;
-  for (std::size_t i = 0; i < plain.final_map.size(); ++i) EXPECT_LT((plain.final_map[i] - moved.final_map[i]).norm(), 1e-9) << i;
+  for (std::size_t k = 0; k < plain.steps.size(); ++k)
+    ASSERT_EQ(plain.steps[k].assignment, moved.steps[k].assignment) << k;
+  for (std::size_t i = 0; i < plain.final_map.size(); ++i)
+    EXPECT_LT((plain.final_map[i] - moved.final_map[i]).norm(), 1e-9) << i;
   EXPECT_NEAR(plain.final_mean_landmark_error, moved.final_mean_landmark_error, 1e-9);
   EXPECT_NEAR(plain.worst_position_error, moved.worst_position_error, 1e-9);
 }

@@ -18,7 +18,8 @@ const Eigen::Vector3d kSpot(5.0, 0.5, 30.0);
 // builds one: in its members' refs, counted, owning its non-anchors, computed over [c0, k].
 GroupId add_group(RltMap& map, int c0, int k, const std::vector<PointId>& members, const std::vector<bool>& anchor) {
   const auto id = static_cast<GroupId>(map.groups.size());
-  map.groups.emplace_back(id, GroupLevel::Final, c0, k, members, anchor, std::array<int, 3>{0, 1, 2}, Registration::Anchors);
+  map.groups.emplace_back(id, GroupLevel::Final, c0, k, members, anchor, std::array<int, 3>{0, 1, 2},
+                          Registration::Anchors);
   ++map.stats.alive;
   map.stats.alive_members += static_cast<long long>(members.size());
   for (std::size_t i = 0; i < members.size(); ++i) {
@@ -124,7 +125,8 @@ TEST(RltPointMerging, GroupsOfTheNewerPointHoldTheOlderOneAsAnAnchor) {
   EXPECT_TRUE(group.anchor(3)) << "the older point keeps its own owner and map position";
   EXPECT_EQ(group.iterations_used(), used) << "the same observations: its sums stay valid";
   const auto& refs = map.points[r.older].groups;
-  EXPECT_TRUE(std::any_of(refs.begin(), refs.end(), [&](const RltGroupRef& ref) { return ref.group == g && ref.member == 3; }));
+  EXPECT_TRUE(
+      std::any_of(refs.begin(), refs.end(), [&](const RltGroupRef& ref) { return ref.group == g && ref.member == 3; }));
   EXPECT_TRUE(map.points[r.newer].groups.empty());
 
   EXPECT_FALSE(map.groups[both].alive()) << "a group holding both could never be computed consistently";

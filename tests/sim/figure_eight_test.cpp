@@ -1,7 +1,7 @@
 #include "relslam/sim/figure_eight.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include <cmath>
 

@@ -12,7 +12,7 @@ TEST(Frustum, BoundariesAreInclusive) {
   EXPECT_TRUE(f.contains({0, 0, 1}));
   EXPECT_TRUE(f.contains({0, 0, 100}));
   const double side = 50 * std::tan(f.half_angle_rad);  // tan(45°) is not exactly 1 in doubles
-  EXPECT_TRUE(f.contains({side, 5, 50}));    // on the side face and the top
+  EXPECT_TRUE(f.contains({side, 5, 50}));               // on the side face and the top
   EXPECT_TRUE(f.contains({-side, -5, 50}));
 }
 

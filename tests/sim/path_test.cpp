@@ -1,7 +1,7 @@
 #include "relslam/sim/path.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 namespace relslam::sim {
 namespace {
@@ -66,7 +66,8 @@ TEST(Path, RobotFollowsTheTangentWithoutRoll) {
     const Rigid3 pose = path.world_T_robot(k);
     expect_rotation(pose.rotation, "k = " + std::to_string(k));
     const Eigen::Vector3d forward = pose.rotation.col(2), left = pose.rotation.col(0);
-    const Eigen::Vector3d travel = (path.world_T_robot(k + 1).translation - path.world_T_robot(k - 1).translation).normalized();
+    const Eigen::Vector3d travel =
+        (path.world_T_robot(k + 1).translation - path.world_T_robot(k - 1).translation).normalized();
     EXPECT_GT(forward.dot(travel), 0.9999) << "k = " << k;
     EXPECT_NEAR(left.y(), 0.0, 1e-12) << "no roll: the left axis stays horizontal";
   }

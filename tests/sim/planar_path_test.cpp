@@ -59,7 +59,8 @@ TEST(PlanarPath, NegativeTurnGoesClockwiseWithAShortLastStep) {
 TEST(PlanarPath, ArcEndsOnItsCircle) {
   // A quarter circle of radius 2 to the left: from the origin facing +x to (2, 2) facing +z.
   const double radius = 2;
-  const PlanarPath path(program(PlanarPose::identity(), {PathOperation::arc(radius * std::numbers::pi / 2, 90 * kDegree)}));
+  const PlanarPath path(
+      program(PlanarPose::identity(), {PathOperation::arc(radius * std::numbers::pi / 2, 90 * kDegree)}));
   const PlanarPose end = path.world_T_robot(path.iterations() - 1);
   EXPECT_NEAR(end.translation.x(), 2, kStepTolerance);
   EXPECT_NEAR(end.translation.y(), 2, kStepTolerance);
@@ -67,7 +68,8 @@ TEST(PlanarPath, ArcEndsOnItsCircle) {
   // 3.14 units at 0.05 take 63 steps, 90° at 1.5° only 60: the move sets the pace.
   EXPECT_EQ(path.iterations(), 64);
   for (int k = 0; k < path.iterations(); ++k)
-    EXPECT_NEAR((path.world_T_robot(k).translation - Eigen::Vector2d(0, radius)).norm(), radius, kStepTolerance) << "k " << k;
+    EXPECT_NEAR((path.world_T_robot(k).translation - Eigen::Vector2d(0, radius)).norm(), radius, kStepTolerance)
+        << "k " << k;
 }
 
 TEST(PlanarPath, SquareLoopsReturnToTheStartEveryLoop) {
@@ -98,7 +100,8 @@ TEST(PlanarPath, ThenRunsOnceAfterTheLoops) {
   EXPECT_EQ(path.iterations(), iteration_count(p));
   EXPECT_EQ(path.iterations(), 1 + 2 * (20 + 120) + 10);
   ASSERT_EQ(path.operation_ends().size(), 5u);
-  EXPECT_NEAR((path.world_T_robot(path.iterations() - 1).translation - Eigen::Vector2d(0.5, 0)).norm(), 0, kStepTolerance);
+  EXPECT_NEAR((path.world_T_robot(path.iterations() - 1).translation - Eigen::Vector2d(0.5, 0)).norm(), 0,
+              kStepTolerance);
 }
 
 TEST(PlanarPath, DefaultsAreValid) {

@@ -15,8 +15,8 @@ constexpr double kFrameTolerance = 1e-12;
 PlanarMap four_planes(int loops = 2) {
   PlanarMap map;
   map.name = "A FourPlanes";
-  map.world.walls = {Wall::between(0, {-4, -5}, {4, -5}), Wall::between(1, {5, -4}, {5, 4}), Wall::between(2, {4, 5}, {-4, 5}),
-                     Wall::between(3, {-5, 4}, {-5, -4})};
+  map.world.walls = {Wall::between(0, {-4, -5}, {4, -5}), Wall::between(1, {5, -4}, {5, 4}),
+                     Wall::between(2, {4, 5}, {-4, 5}), Wall::between(3, {-5, 4}, {-5, -4})};
   map.path.start = PlanarPose::from(-2, -2, 0);
   map.path.loops = loops;
   for (int side = 0; side < 4; ++side) {
@@ -33,7 +33,8 @@ bool same_bits(const PlaneSimFrame& x, const PlaneSimFrame& y) {
     const PlaneObject &p = x.observation.planes[i], &q = y.observation.planes[i];
     const PlaneTruth &s = x.truth.planes[i], &t = y.truth.planes[i];
     if (p.a != q.a || p.b != q.b || p.y_lo != q.y_lo || p.y_hi != q.y_hi || p.iteration != q.iteration) return false;
-    if (s.wall_id != t.wall_id || s.a_is_wall_end != t.a_is_wall_end || s.b_is_wall_end != t.b_is_wall_end) return false;
+    if (s.wall_id != t.wall_id || s.a_is_wall_end != t.a_is_wall_end || s.b_is_wall_end != t.b_is_wall_end)
+      return false;
   }
   return x.truth.world_T_robot.translation == y.truth.world_T_robot.translation &&
          x.truth.world_T_robot.heading == y.truth.world_T_robot.heading;

@@ -19,7 +19,8 @@ TEST(PlanarWorld, FrontNormalIsTheTangentTurnedPlusNinetyDegrees) {
 
 TEST(PlanarWorld, CheckNamesTheWallAndTheProblem) {
   PlanarWorld world;
-  world.walls = {Wall::between(0, {0, 0}, {1, 0}), Wall::between(1, {2, 2}, {2, 2}), Wall::between(0, {0, NAN}, {1, 1}), Wall::between(3, {0, 0}, {0, 1})};
+  world.walls = {Wall::between(0, {0, 0}, {1, 0}), Wall::between(1, {2, 2}, {2, 2}), Wall::between(0, {0, NAN}, {1, 1}),
+                 Wall::between(3, {0, 0}, {0, 1})};
   world.walls[3].height = 0;
   world.walls[3].scripted_windows = {{5, 4}};
   const std::vector<OptionIssue> issues = check(world);

@@ -45,8 +45,8 @@ TEST(PlaneSensor, DefaultsAreValid) {
 }
 
 TEST(PlaneSensor, VisibilityNamesRoundTrip) {
-  for (PlaneVisibility m : {PlaneVisibility::Frustum, PlaneVisibility::FullSize, PlaneVisibility::AlwaysVisible,
-                            PlaneVisibility::Scripted})
+  for (PlaneVisibility m :
+       {PlaneVisibility::Frustum, PlaneVisibility::FullSize, PlaneVisibility::AlwaysVisible, PlaneVisibility::Scripted})
     EXPECT_EQ(parse_plane_visibility(to_string(m)), m);
   EXPECT_FALSE(parse_plane_visibility("always"));
 }

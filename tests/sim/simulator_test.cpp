@@ -47,12 +47,14 @@ TEST(Simulator, NoiseFreeObservationsAreExactRobotFramePoints) {
     const SimFrame f = sim.frame(k);
     std::vector<int> expected_ids;
     for (int id = 0; id < sim.world().size(); ++id)
-      if (o.frustum.contains(f.truth.world_T_robot.inverse_apply(sim.world().position(id, k)))) expected_ids.push_back(id);
+      if (o.frustum.contains(f.truth.world_T_robot.inverse_apply(sim.world().position(id, k))))
+        expected_ids.push_back(id);
     std::vector<int> ids = f.truth.landmark_ids;
     std::sort(ids.begin(), ids.end());
     EXPECT_EQ(ids, expected_ids) << "k " << k;
     for (std::size_t i = 0; i < ids.size(); ++i) {
-      const Eigen::Vector3d truth = f.truth.world_T_robot.inverse_apply(sim.world().position(f.truth.landmark_ids[i], k));
+      const Eigen::Vector3d truth =
+          f.truth.world_T_robot.inverse_apply(sim.world().position(f.truth.landmark_ids[i], k));
       EXPECT_LT((f.observation.points[i] - truth).norm(), 1e-12) << "k " << k;
     }
   }
@@ -67,7 +69,8 @@ TEST(Simulator, NoiseIsZeroMeanWithTheConfiguredSigmaOnEachAxis) {
   for (int k = 0; k < sim.iterations(); ++k) {
     const SimFrame f = sim.frame(k);
     for (std::size_t i = 0; i < f.observation.points.size(); ++i) {
-      const Eigen::Vector3d truth = f.truth.world_T_robot.inverse_apply(sim.world().position(f.truth.landmark_ids[i], k));
+      const Eigen::Vector3d truth =
+          f.truth.world_T_robot.inverse_apply(sim.world().position(f.truth.landmark_ids[i], k));
       // Only points well inside the frustum: culling the noisy point biases those at the faces.
       if (!o.frustum.prepare().may_contain(truth, -1.0)) continue;
       const Eigen::Vector3d e = f.observation.points[i] - truth;
@@ -93,7 +96,8 @@ TEST(Simulator, RangeNoiseGrowsWithDistance) {
   for (int k = 0; k < sim.iterations(); k += 2) {
     const SimFrame f = sim.frame(k);
     for (std::size_t i = 0; i < f.observation.points.size(); ++i) {
-      const Eigen::Vector3d truth = f.truth.world_T_robot.inverse_apply(sim.world().position(f.truth.landmark_ids[i], k));
+      const Eigen::Vector3d truth =
+          f.truth.world_T_robot.inverse_apply(sim.world().position(f.truth.landmark_ids[i], k));
       const double e2 = (f.observation.points[i] - truth).squaredNorm() / 3.0;
       if (truth.norm() < 20) near2 += e2, ++near_n;
       if (truth.norm() > 80) far2 += e2, ++far_n;

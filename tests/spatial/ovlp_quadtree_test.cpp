@@ -1,8 +1,8 @@
 // Every spatial index variant against brute force on random data (issue #4).
+#include "relslam/spatial/ovlp_quadtree.hpp"
 #include "relslam/spatial/global_index.hpp"
 #include "relslam/spatial/incremental_ovlp_quadtree.hpp"
 #include "relslam/spatial/local_index.hpp"
-#include "relslam/spatial/ovlp_quadtree.hpp"
 
 #include "seeded_random.hpp"
 
@@ -27,13 +27,17 @@ TEST_P(LocalIndexVariants, QueryContainsEveryPointWithinTheRadius) {
   test::SeededRandom rng(501);
   for (int trial = 0; trial < 4; ++trial) {
     std::vector<IndexedPoint> points;
-    for (int i = 0; i < 800; ++i) points.push_back({i, {rng.uniform(-100, 100), rng.uniform(-5, 5), rng.uniform(0, 100)}});
+    for (int i = 0; i < 800; ++i)
+      points.push_back({i, {rng.uniform(-100, 100), rng.uniform(-5, 5), rng.uniform(0, 100)}});
     // Some close clusters so queries find several candidates.
-    for (int i = 0; i < 100; ++i) points.push_back({800 + i, points[i].p + 0.5 * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian())});
+    for (int i = 0; i < 100; ++i)
+      points.push_back({800 + i, points[i].p + 0.5 * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian())});
     index->build(points);
     for (int q = 0; q < 2000; ++q) {
-      const Eigen::Vector3d query = q % 2 ? Eigen::Vector3d(rng.uniform(-110, 110), rng.uniform(-6, 6), rng.uniform(-10, 110))
-                                          : Eigen::Vector3d(points[q % points.size()].p + Eigen::Vector3d(rng.gaussian(), 0.3 * rng.gaussian(), rng.gaussian()));
+      const Eigen::Vector3d query =
+          q % 2 ? Eigen::Vector3d(rng.uniform(-110, 110), rng.uniform(-6, 6), rng.uniform(-10, 110))
+                : Eigen::Vector3d(points[q % points.size()].p +
+                                  Eigen::Vector3d(rng.gaussian(), 0.3 * rng.gaussian(), rng.gaussian()));
       std::set<int> found;
       for (const IndexedPoint& e : index->query(query)) found.insert(e.id);
       for (const IndexedPoint& p : points)
@@ -45,8 +49,10 @@ TEST_P(LocalIndexVariants, QueryContainsEveryPointWithinTheRadius) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllKinds, LocalIndexVariants,
-                         ::testing::Values(std::pair{LocalIndexKind::Quadtree, 5.0}, std::pair{LocalIndexKind::Quadtree, 1.5},
-                                           std::pair{LocalIndexKind::Octree, 1.5}, std::pair{LocalIndexKind::KdTree, 0.0}));
+                         ::testing::Values(std::pair{LocalIndexKind::Quadtree, 5.0},
+                                           std::pair{LocalIndexKind::Quadtree, 1.5},
+                                           std::pair{LocalIndexKind::Octree, 1.5},
+                                           std::pair{LocalIndexKind::KdTree, 0.0}));
 
 TEST(OVLPQuadTree, HoldsEveryPointWithinTheOverlapOnXAndZ) {
   test::SeededRandom rng(503);
@@ -75,7 +81,8 @@ TEST(KdTreeIndex, ReturnsExactlyThePointsWithinTheRadius) {
   test::SeededRandom rng(504);
   auto index = make_local_index(LocalIndexKind::KdTree, 0, 2.0);
   std::vector<IndexedPoint> points;
-  for (int i = 0; i < 300; ++i) points.push_back({i, {rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10)}});
+  for (int i = 0; i < 300; ++i)
+    points.push_back({i, {rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10)}});
   index->build(points);
   for (int q = 0; q < 200; ++q) {
     const Eigen::Vector3d query(rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10));
@@ -123,7 +130,8 @@ TEST_P(GlobalIndexVariants, InsertsMovesAndRemovesLikeBruteForce) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(BothKinds, GlobalIndexVariants, ::testing::Values(GlobalIndexKind::Incremental, GlobalIndexKind::Rebuilt));
+INSTANTIATE_TEST_SUITE_P(BothKinds, GlobalIndexVariants,
+                         ::testing::Values(GlobalIndexKind::Incremental, GlobalIndexKind::Rebuilt));
 
 TEST(SpatialIndexes, OverlapLargerThanTheCellIsABug) {
   EXPECT_THROW(IncrementalOVLPQuadTree(1.0, 2.0), std::logic_error);
@@ -134,7 +142,8 @@ TEST(SpatialIndexes, OverlapLargerThanTheCellIsABug) {
 TEST(SpatialIndexes, NamesRoundTrip) {
   for (LocalIndexKind k : {LocalIndexKind::Quadtree, LocalIndexKind::Octree, LocalIndexKind::KdTree})
     EXPECT_EQ(parse_local_index(to_string(k)), k);
-  for (GlobalIndexKind k : {GlobalIndexKind::Incremental, GlobalIndexKind::Rebuilt}) EXPECT_EQ(parse_global_index(to_string(k)), k);
+  for (GlobalIndexKind k : {GlobalIndexKind::Incremental, GlobalIndexKind::Rebuilt})
+    EXPECT_EQ(parse_global_index(to_string(k)), k);
 }
 
 }  // namespace

@@ -27,12 +27,14 @@ class Ekf2d final : public MrptFilter {
         use_odometry_(use_odometry),
         association_(use_odometry ? options.association : options.association_no_odometry),
         sensor_(sensor) {
-    filter_.KF_options.method = options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
+    filter_.KF_options.method =
+        options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
     filter_.options.std_sensor_range = static_cast<float>(options.std_range);
     filter_.options.std_sensor_yaw = static_cast<float>(options.std_yaw_rad);
     filter_.options.stds_Q_no_odo.resize(3);
     for (int i = 0; i < 3; ++i) filter_.options.stds_Q_no_odo[i] = static_cast<float>(options.stds_q_no_odometry[i]);
-    filter_.options.data_assoc_method = association_ == EkfAssociation::Nn ? mrpt::slam::assocNN : mrpt::slam::assocJCBB;
+    filter_.options.data_assoc_method =
+        association_ == EkfAssociation::Nn ? mrpt::slam::assocNN : mrpt::slam::assocJCBB;
     filter_.options.data_assoc_IC_chi2_thres = options.chi2_threshold;
     filter_.setMinLoggingLevel(mrpt::system::LVL_ERROR);
   }
@@ -52,7 +54,8 @@ class Ekf2d final : public MrptFilter {
   mrpt::obs::CActionRobotMovement2D odometry_action(const Rigid3& motion) const {
     const Pose2 m = planar_from_robot_pose(motion);
     const double xy = options_.odometry_std_xy + options_.odometry_std_xy_ratio * std::hypot(m.x, m.y);
-    const double heading = options_.odometry_std_heading_rad + options_.odometry_std_heading_ratio * std::abs(m.heading);
+    const double heading =
+        options_.odometry_std_heading_rad + options_.odometry_std_heading_ratio * std::abs(m.heading);
     mrpt::math::CMatrixDouble33 cov;
     cov.setZero();
     cov(0, 0) = cov(1, 1) = xy * xy;
@@ -91,7 +94,8 @@ class Ekf2d final : public MrptFilter {
 
 }  // namespace
 
-std::unique_ptr<Algorithm> make_ekf2d(const Ekf2dOptions& options, bool use_odometry, const RangeBearingSensor& sensor) {
+std::unique_ptr<Algorithm> make_ekf2d(const Ekf2dOptions& options, bool use_odometry,
+                                      const RangeBearingSensor& sensor) {
   return std::make_unique<Ekf2d>(options, use_odometry, sensor);
 }
 

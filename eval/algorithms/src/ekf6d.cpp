@@ -29,18 +29,18 @@ class Filter final : public CRangeBearingKFSLAM {
 class Ekf6d final : public MrptFilter {
  public:
   Ekf6d(const Ekf6dOptions& options, const RangeBearingSensor& sensor)
-      : MrptFilter("ekf6d", {options.time_budget_ms, options.budget_iterations}),
-        options_(options),
-        sensor_(sensor) {
+      : MrptFilter("ekf6d", {options.time_budget_ms, options.budget_iterations}), options_(options), sensor_(sensor) {
     // Fixed in code and logged with the run (spec mrpt §6.2).
-    filter_.KF_options.method = options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
+    filter_.KF_options.method =
+        options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
     filter_.options.force_ignore_odometry = true;  // belt and braces: the actions are empty anyway
     filter_.options.std_sensor_range = static_cast<float>(options.std_range);
     filter_.options.std_sensor_yaw = static_cast<float>(options.std_yaw_rad);
     filter_.options.std_sensor_pitch = static_cast<float>(options.std_pitch_rad);
     filter_.options.stds_Q_no_odo.resize(7);
     for (int i = 0; i < 7; ++i) filter_.options.stds_Q_no_odo[i] = static_cast<float>(options.stds_q[i]);
-    filter_.options.data_assoc_method = options.association == EkfAssociation::Nn ? mrpt::slam::assocNN : mrpt::slam::assocJCBB;
+    filter_.options.data_assoc_method =
+        options.association == EkfAssociation::Nn ? mrpt::slam::assocNN : mrpt::slam::assocJCBB;
     filter_.options.data_assoc_IC_chi2_thres = options.chi2_threshold;
     filter_.setMinLoggingLevel(mrpt::system::LVL_ERROR);  // not a warning per missed prediction
   }
@@ -53,7 +53,8 @@ class Ekf6d final : public MrptFilter {
     const std::vector<int>& ids = options_.association == EkfAssociation::Known ? truth.landmark_ids : unknown;
     mrpt::obs::CSensoryFrame::Ptr sf = std::make_shared<mrpt::obs::CSensoryFrame>();
     sf->insert(bearing_range_observation(observation, ids, sensor_, 1.0e9 + observation.iteration));
-    mrpt::obs::CActionCollection::Ptr no_odometry = std::make_shared<mrpt::obs::CActionCollection>();  // never null (§1.8 item 2)
+    mrpt::obs::CActionCollection::Ptr no_odometry =
+        std::make_shared<mrpt::obs::CActionCollection>();  // never null (§1.8 item 2)
     filter_.processActionObservation(no_odometry, sf);
   }
 

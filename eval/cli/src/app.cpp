@@ -1,6 +1,6 @@
 #include "relslam/eval/cli/app.hpp"
 
-#include "relslam/eval/io/build_info.hpp"
+#include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/cli/commands/bench_binning.hpp"
 #include "relslam/eval/cli/commands/rawlog_info.hpp"
 #include "relslam/eval/cli/commands/render.hpp"
@@ -10,9 +10,9 @@
 #include "relslam/eval/cli/commands/tune_ekf.hpp"
 #include "relslam/eval/cli/commands/victoria_park.hpp"
 #include "relslam/eval/config/input_error.hpp"
-#include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/scenario_keys.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/io/build_info.hpp"
 
 #include <CLI/CLI.hpp>
 

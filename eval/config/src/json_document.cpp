@@ -56,7 +56,8 @@ class LineRecorder : public nlohmann::json_sax<nlohmann::json> {
   bool key(string_t& k) override {
     const std::string path = join(k);
     if (lines_->count(path))
-      throw InputError(file_, *line_, path, "key appears twice (first on line " + std::to_string(lines_->at(path)) + ")");
+      throw InputError(file_, *line_, path,
+                       "key appears twice (first on line " + std::to_string(lines_->at(path)) + ")");
     (*lines_)[path] = *line_;
     frames_.back().current_key = path;
     return true;
@@ -127,7 +128,8 @@ JsonDocument parse_json(const std::string& text, const std::string& file) {
   try {
     doc.value = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(file, line_at_byte(text, e.byte > 0 ? e.byte - 1 : 0), "", "malformed JSON: " + strip_prefix(e.what()));
+    throw InputError(file, line_at_byte(text, e.byte > 0 ? e.byte - 1 : 0), "",
+                     "malformed JSON: " + strip_prefix(e.what()));
   } catch (const nlohmann::json::out_of_range& e) {
     // A number too large for a double ("1e400"): the exception has no position, but it quotes
     // the number, so the line is where that text first appears.

@@ -29,7 +29,9 @@ std::string shown(const json& value) {
   return text.size() > 60 ? text.substr(0, 57) + "..." : text;
 }
 
-std::string expected(const std::string& what, const json& value) { return "expected " + what + ", got " + shown(value); }
+std::string expected(const std::string& what, const json& value) {
+  return "expected " + what + ", got " + shown(value);
+}
 
 // ---- Codecs: how a field is spelled in a scenario file ---------------------------------------
 // A codec gives the key's type (for people), whether --set passes the raw text, parse (writes
@@ -59,7 +61,8 @@ std::string parse_integer(const json& v, int& out) {
     d = v.get<double>();
   else
     return expected("an integer", v);
-  if (d < std::numeric_limits<int>::min() || d > std::numeric_limits<int>::max()) return "integer out of range: " + shown(v);
+  if (d < std::numeric_limits<int>::min() || d > std::numeric_limits<int>::max())
+    return "integer out of range: " + shown(v);
   out = static_cast<int>(d);
   return "";
 }
@@ -133,7 +136,9 @@ PlainCodec<std::optional<int>> codec_for(const std::optional<int>&) {
 PlainCodec<bool> codec_for(const bool&) { return {"true or false", parse_boolean}; }
 PlainCodec<std::string> codec_for(const std::string&) { return {"string", parse_text, as_is<std::string>, true}; }
 PlainCodec<std::vector<int>> codec_for(const std::vector<int>&) { return {"list of integers", parse_list<int>}; }
-PlainCodec<std::vector<double>> codec_for(const std::vector<double>&) { return {"list of numbers", parse_list<double>}; }
+PlainCodec<std::vector<double>> codec_for(const std::vector<double>&) {
+  return {"list of numbers", parse_list<double>};
+}
 const PlainCodec<double> kDegrees{"number (degrees)", parse_degrees, show_degrees};
 
 // An enum spelled by name: to_string of each of `values`. Lives as long as the values it spans.
@@ -195,7 +200,10 @@ class CodecVisitor {
 // the codec, and write stores the value only when the codec accepts it.
 template <class Visit>
 ScenarioKey make_key(std::string key, std::string type, std::string help, bool text_value, Visit visit) {
-  return {std::move(key), std::move(type), std::move(help), text_value,
+  return {std::move(key),
+          std::move(type),
+          std::move(help),
+          text_value,
           [visit](const Scenario& s) {
             json out;
             visit(s, [&](const auto& codec, const auto& field) { out = codec.show(field); });
@@ -242,7 +250,10 @@ void add_keys(std::vector<ScenarioKey>& keys, const std::string& prefix) {
 }
 
 ScenarioKey seed_key() {
-  return {"seed", "integer >= 0", "seed of every random choice (field, noise, dynamics, shuffle)", false,
+  return {"seed",
+          "integer >= 0",
+          "seed of every random choice (field, noise, dynamics, shuffle)",
+          false,
           [](const Scenario& s) { return json(s.seed); },
           [](Scenario& s, const json& v) -> std::string {
             if (v.is_number_unsigned() || (v.is_number_integer() && v.get<long long>() >= 0)) {
@@ -255,14 +266,17 @@ ScenarioKey seed_key() {
 
 // The names are checked against the algorithm registry, a layer up (check_algorithm_names).
 ScenarioKey algorithms_key() {
-  return {"algorithms", "list of strings",
-          "algorithms `relslam run` runs on the same observations (`relslam algorithms` lists them)", true,
+  return {"algorithms",
+          "list of strings",
+          "algorithms `relslam run` runs on the same observations (`relslam algorithms` lists them)",
+          true,
           [](const Scenario& s) { return json(s.algorithms); },
           [](Scenario& s, const json& v) -> std::string {
             if (!v.is_array()) return expected("a list of algorithm names", v);
             std::vector<std::string> names;
             for (const json& item : v) {
-              if (!item.is_string() || item.get<std::string>().empty()) return expected("algorithm names (strings)", item);
+              if (!item.is_string() || item.get<std::string>().empty())
+                return expected("algorithm names (strings)", item);
               names.push_back(item.get<std::string>());
             }
             s.algorithms = names;
@@ -278,7 +292,8 @@ std::vector<ScenarioKey> build_keys() {
                                     codec_for(std::string())),
       scenario_key<&Scenario::description>("description", "what the experiment reproduces (thesis figures)",
                                            codec_for(std::string())),
-      scenario_key<&Scenario::kind>("kind", "simulation, the synthetic binning benchmark S-BIN, or the Victoria Park data set",
+      scenario_key<&Scenario::kind>("kind",
+                                    "simulation, the synthetic binning benchmark S-BIN, or the Victoria Park data set",
                                     ChoiceCodec<ScenarioKind>{kScenarioKinds}),
       seed_key(),
   };
@@ -338,6 +353,5 @@ nlohmann::json to_json(const Scenario& scenario) {
   out["variants"] = variants;
   return out;
 }
-
 
 }  // namespace relslam::eval

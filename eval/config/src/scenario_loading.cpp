@@ -56,7 +56,8 @@ class Loader {
     const std::string where = "--set";
     for (const char* grid : {"sweep", "variants"})
       if (o.key == grid || o.key.rfind(std::string(grid) + ".", 0) == 0)
-        throw InputError(where, 0, o.key, "sweeps and variants are set in the scenario file or with relslam sweep --param");
+        throw InputError(where, 0, o.key,
+                         "sweeps and variants are set in the scenario file or with relslam sweep --param");
     const ScenarioKey* key = find_scenario_key(o.key);
     if (!key) throw InputError(where, 0, o.key, unknown_key_problem(o.key));
     store(*key, override_value(*key, o.value), {where, 0});
@@ -76,7 +77,8 @@ class Loader {
       } else if (const ScenarioKey* key = find_scenario_key(path)) {
         store(*key, value, {doc.file, line});
       } else if (is_group(path)) {
-        if (!value.is_object()) throw InputError(doc.file, line, path, "expected an object of keys, got " + value.dump());
+        if (!value.is_object())
+          throw InputError(doc.file, line, path, "expected an object of keys, got " + value.dump());
         walk(doc, value, path);
       } else {
         throw InputError(doc.file, line, path, unknown_key_problem(path));
@@ -92,7 +94,8 @@ class Loader {
     for (const auto& [name, values] : sweep.items()) {
       const std::string path = "sweep." + name;
       const int line = doc.line_of(path);
-      if (!values.is_array() || values.empty()) throw InputError(doc.file, line, path, "expected a non-empty list of values");
+      if (!values.is_array() || values.empty())
+        throw InputError(doc.file, line, path, "expected a non-empty list of values");
       for (const json& v : values) check_grid_value(doc.file, line, path, name, v);
       s_.sweep.push_back({name, values.get<std::vector<json>>()});
       origins_[path] = {doc.file, line};
@@ -209,7 +212,8 @@ InputError LoadedScenario::error(const std::string& key, const std::string& prob
   return InputError(it->second.file, it->second.line, key, problem);
 }
 
-LoadedScenario parse_scenario(const std::string& text, const std::string& file, const std::vector<Override>& overrides) {
+LoadedScenario parse_scenario(const std::string& text, const std::string& file,
+                              const std::vector<Override>& overrides) {
   return build(parse_json(text, file), overrides);
 }
 

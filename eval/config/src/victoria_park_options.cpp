@@ -18,11 +18,13 @@ ScanWindow parse_scan_window(const std::string& text, const std::string& field) 
   };
   if (colon == std::string::npos) number("");
   const ScanWindow w{number(text.substr(0, colon)), number(text.substr(colon + 1))};
-  if (w.first > w.last) throw InputError("", 0, field, "the window's first scan comes after its last: \"" + text + "\"");
+  if (w.first > w.last)
+    throw InputError("", 0, field, "the window's first scan comes after its last: \"" + text + "\"");
   return w;
 }
 
-void ScanWindowText::operator()(std::vector<OptionIssue>& issues, const std::string& field, const std::string& text) const {
+void ScanWindowText::operator()(std::vector<OptionIssue>& issues, const std::string& field,
+                                const std::string& text) const {
   try {
     parse_scan_window(text, field);
   } catch (const InputError& e) {

@@ -75,8 +75,8 @@ void AlgorithmRecorder::step(const ObservationFrame& observation, const TruthFra
     return;
   }
   scorer_.associate(algorithm_->assignment(), truth.landmark_ids);
-  const IterationScore s =
-      scorer_.score(estimate, truth, changed, [&](int id) { return algorithm_->position(id); }, runtime_ms);
+  const IterationScore s = scorer_.score(
+      estimate, truth, changed, [&](int id) { return algorithm_->position(id); }, runtime_ms);
   own_fields_.clear();
   algorithm_->iteration_fields(own_fields_);
   iterations_.row(k, s, runtime_ms, observation.points.size(), own_fields_);
@@ -110,8 +110,8 @@ SummaryRow AlgorithmRecorder::finish() {
         s.true_id = scorer_.majority_truth(id);
         s.error = scorer_.error_of(id);
         // Without truth landmarks (a rawlog run) the ids are the log's own, and nothing is known to move.
-        s.true_dynamic = s.true_id >= 0 && static_cast<std::size_t>(s.true_id) < truth_dynamic_.size() &&
-                         truth_dynamic_[s.true_id];
+        s.true_dynamic =
+            s.true_id >= 0 && static_cast<std::size_t>(s.true_id) < truth_dynamic_.size() && truth_dynamic_[s.true_id];
         return s;
       },
       [&](const std::vector<CsvField>& fields) { landmarks.row_fields(fields); });

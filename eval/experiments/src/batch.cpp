@@ -1,9 +1,9 @@
 #include "relslam/eval/experiments/batch.hpp"
 
+#include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/io/run_folder.hpp"
-#include "relslam/eval/config/scenario_loading.hpp"
 
 #include <atomic>
 #include <cctype>

@@ -58,7 +58,10 @@ Tracks make_tracks(int n, int uncorrelated, int groups, const BinningBenchOption
 BinningBenchRow bin(const Tracks& t, const point::BinningOptions& options, const BinningBenchOptions& o) {
   const int n = static_cast<int>(t.rings.size());
   const point::BinningResult r = point::rlt_binning(
-      n, [&](int i, int j) { return point::pair_distance_std(t.rings[i], t.rings[j], 0, o.iterations - 1, options.min_pair_samples); },
+      n,
+      [&](int i, int j) {
+        return point::pair_distance_std(t.rings[i], t.rings[j], 0, o.iterations - 1, options.min_pair_samples);
+      },
       options);
   BinningBenchRow row;
   row.n = n;
@@ -106,8 +109,8 @@ void write_binning_bench(const std::filesystem::path& dir, const std::vector<Bin
   using Key = std::tuple<std::string, std::string, bool, double, int>;  // variant, pairing, heuristic, percent, n
   std::map<Key, std::vector<const BinningBenchRow*>> cells;
   for (const BinningBenchRow& r : rows) {
-    all.row(r.n, r.percent, r.variant, std::string(to_string(r.pairing)), r.heuristic, r.seed, r.comparisons, r.highest_bin,
-            r.threshold, r.wrongly_flagged, r.missed);
+    all.row(r.n, r.percent, r.variant, std::string(to_string(r.pairing)), r.heuristic, r.seed, r.comparisons,
+            r.highest_bin, r.threshold, r.wrongly_flagged, r.missed);
     cells[{r.variant, std::string(to_string(r.pairing)), r.heuristic, r.percent, r.n}].push_back(&r);
   }
   all.close();

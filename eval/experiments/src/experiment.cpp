@@ -12,7 +12,8 @@ namespace relslam::eval {
 
 void require_algorithms(const LoadedScenario& loaded) {
   if (loaded.scenario.algorithms.empty())
-    throw loaded.error("algorithms", "the scenario lists no algorithm to run; add one, e.g. --set algorithms=relative_point");
+    throw loaded.error("algorithms",
+                       "the scenario lists no algorithm to run; add one, e.g. --set algorithms=relative_point");
   check_algorithm_names(loaded);
 }
 
@@ -21,7 +22,8 @@ Experiment::Experiment(const LoadedScenario& loaded, FrameSource& source, const 
   require_algorithms(loaded);
   const AlgorithmContext context{loaded.scenario, source.sensor()};
   for (const std::string& name : loaded.scenario.algorithms)
-    recorders_.push_back(std::make_unique<AlgorithmRecorder>(make_algorithm(name, context), source.truth(), out / name));
+    recorders_.push_back(
+        std::make_unique<AlgorithmRecorder>(make_algorithm(name, context), source.truth(), out / name));
 }
 
 ExperimentResult Experiment::run(bool progress) {
@@ -45,7 +47,8 @@ ExperimentResult Experiment::run(bool progress) {
   if (ekf < 0) ekf = index_of("ekf2d");
   if (rp >= 0 && ekf >= 0) {
     const int common = std::min(result.rows[rp].iterations, result.rows[ekf].iterations);
-    if (common > 0) result.ratio = ratio_row(recorders_[rp]->summary_over(common), recorders_[ekf]->summary_over(common));
+    if (common > 0)
+      result.ratio = ratio_row(recorders_[rp]->summary_over(common), recorders_[ekf]->summary_over(common));
   }
   write_summary(out_ / "summary.csv", result.rows, result.ratio);
   bar.finish();
@@ -87,8 +90,9 @@ void print_results(const ExperimentResult& result, const std::string& title) {
   for (const SummaryRow& r : result.rows) line(r);
   if (result.ratio) {
     const SummaryRow& r = *result.ratio;
-    std::printf("%-20s %-8s %10s %14.3g %10.3g %10.3g %10.3g   (over %d iterations)\n", r.algorithm.c_str(), "ratio", "",
-                r.final_mean_landmark_error, r.final_position_error, r.runtime.median_ms, r.runtime.p95_ms, r.iterations);
+    std::printf("%-20s %-8s %10s %14.3g %10.3g %10.3g %10.3g   (over %d iterations)\n", r.algorithm.c_str(), "ratio",
+                "", r.final_mean_landmark_error, r.final_position_error, r.runtime.median_ms, r.runtime.p95_ms,
+                r.iterations);
   }
   for (const SummaryRow& r : result.rows)
     if (!r.status.is_ok()) std::printf("%s: %s\n", r.algorithm.c_str(), r.status.text().c_str());

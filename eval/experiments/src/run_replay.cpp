@@ -52,12 +52,15 @@ struct RunReplay::State {
   std::optional<point::RltMapper> mapper;  // relative_point
   std::unique_ptr<Algorithm> filter;       // ekf6d
   bool filter_failed = false;              // it threw: its last good state is shown from then on
-  int next = 0;  // the next iteration to feed
+  int next = 0;                            // the next iteration to feed
   std::vector<Eigen::Vector3d> true_path, estimated_path;
   Rigid3 true_pose, estimated_pose;
 
   State(const fs::path& dir, std::string name, LoadedScenario scenario)
-      : run_dir(dir), algorithm(std::move(name)), loaded(std::move(scenario)), simulator(build_simulator(loaded)),
+      : run_dir(dir),
+        algorithm(std::move(name)),
+        loaded(std::move(scenario)),
+        simulator(build_simulator(loaded)),
         sensor(sensor_of(loaded.scenario.sim)) {}
 
   void feed(const sim::SimFrame& frame) {
@@ -147,10 +150,11 @@ RenderScene RunReplay::scene_at(int k) {
   scene.frustum = {f.near, f.far, f.half_angle_rad};
   int final_groups = 0;
   for (const SceneGroup& g : scene.groups) final_groups += g.final;
-  scene.title = s.loaded.scenario.name + "  " + s.algorithm + "  iteration " + std::to_string(k) + "  map points " +
-                std::to_string(scene.landmarks.size()) +
-                (s.mapper ? "  groups " + std::to_string(scene.groups.size()) + " (" + std::to_string(final_groups) + " final)"
-                          : "");
+  scene.title =
+      s.loaded.scenario.name + "  " + s.algorithm + "  iteration " + std::to_string(k) + "  map points " +
+      std::to_string(scene.landmarks.size()) +
+      (s.mapper ? "  groups " + std::to_string(scene.groups.size()) + " (" + std::to_string(final_groups) + " final)"
+                : "");
   return scene;
 }
 

@@ -16,8 +16,8 @@ Eigen::Vector2d planar(const Eigen::Vector3d& p_ours) {
   return {m.x(), m.y()};
 }
 
-void write_gps_files(const std::filesystem::path& out, const AlgorithmRecorder& run, const std::vector<std::optional<Eigen::Vector2d>>& gps,
-                     GpsComparison& comparison) {
+void write_gps_files(const std::filesystem::path& out, const AlgorithmRecorder& run,
+                     const std::vector<std::optional<Eigen::Vector2d>>& gps, GpsComparison& comparison) {
   const std::vector<Rigid3>& trajectory = run.trajectory();
   std::vector<Eigen::Vector2d> from, to;
   for (std::size_t k = 0; k < trajectory.size() && k < gps.size(); ++k)
@@ -33,7 +33,8 @@ void write_gps_files(const std::filesystem::path& out, const AlgorithmRecorder& 
   for (std::size_t k = 0; k < trajectory.size(); ++k) {
     const Eigen::Vector2d p = a.apply(planar(trajectory[k].translation));
     const bool fix = k < gps.size() && gps[k].has_value();
-    path.row(k, p.x(), p.y(), fix ? std::optional(gps[k]->x()) : std::nullopt, fix ? std::optional(gps[k]->y()) : std::nullopt);
+    path.row(k, p.x(), p.y(), fix ? std::optional(gps[k]->x()) : std::nullopt,
+             fix ? std::optional(gps[k]->y()) : std::nullopt);
   }
   path.close();
   CsvWriter landmarks(out / run.name() / "landmarks_gps_frame.csv", {"x", "y"});
@@ -50,7 +51,8 @@ VictoriaParkResult run_victoria_park(const LoadedScenario& loaded, const Victori
                                      const std::filesystem::path& out, bool progress) {
   const Scenario& scenario = loaded.scenario;
   if (scenario.kind != ScenarioKind::VictoriaPark)
-    throw loaded.error("kind", "relslam victoria-park needs a scenario of kind victoria_park (scenarios/victoria-park.json)");
+    throw loaded.error("kind",
+                       "relslam victoria-park needs a scenario of kind victoria_park (scenarios/victoria-park.json)");
   require_algorithms(loaded);
   const auto start = std::chrono::steady_clock::now();
   VictoriaParkSource source(log, scenario, out);
@@ -73,7 +75,8 @@ VictoriaParkResult run_victoria_park(const LoadedScenario& loaded, const Victori
     write_gps_files(out, *run, gps, c);
     const PlanarAlignment& a = c.alignment;
     gps_table.row(c.algorithm, c.scans, a.pairs, a.pairs ? std::optional(a.rmse) : std::nullopt,
-                  a.pairs ? std::optional(a.max) : std::nullopt, a.rotation_deg(), a.translation.x(), a.translation.y());
+                  a.pairs ? std::optional(a.max) : std::nullopt, a.rotation_deg(), a.translation.x(),
+                  a.translation.y());
     result.gps.push_back(c);
     if (run->name() == "ekf2d") {
       reference = run.get();
@@ -112,13 +115,14 @@ VictoriaParkResult run_victoria_park(const LoadedScenario& loaded, const Victori
 void print_victoria_park(const VictoriaParkResult& r, const std::string& title) {
   std::printf("%s: %d scans, %d with fewer than 3 trees, %d with GPS\n", title.c_str(), r.scans, r.scans_below_three,
               r.gps_scans);
-  std::printf("%-20s %-8s %8s %10s %12s %10s %10s\n", "algorithm", "status", "scans", "map size", "ATE vs GPS", "median ms",
-              "max ms");
+  std::printf("%-20s %-8s %8s %10s %12s %10s %10s\n", "algorithm", "status", "scans", "map size", "ATE vs GPS",
+              "median ms", "max ms");
   for (std::size_t i = 0; i < r.experiment.rows.size(); ++i) {
     const SummaryRow& s = r.experiment.rows[i];
     const PlanarAlignment& a = r.gps[i].alignment;
-    std::printf("%-20s %-8s %8d %10d %12.3g %10.4g %10.4g\n", s.algorithm.c_str(), std::string(to_string(s.status.kind)).c_str(),
-                s.iterations, s.landmarks_on_map, a.pairs ? a.rmse : std::nan(""), s.runtime.median_ms, s.runtime.max_ms);
+    std::printf("%-20s %-8s %8d %10d %12.3g %10.4g %10.4g\n", s.algorithm.c_str(),
+                std::string(to_string(s.status.kind)).c_str(), s.iterations, s.landmarks_on_map,
+                a.pairs ? a.rmse : std::nan(""), s.runtime.median_ms, s.runtime.max_ms);
   }
   for (const auto& [name, m] : r.maps)
     std::printf("%s map vs ekf2d: %d of %d landmarks matched within 5 m, rms %.2f m, median %.2f m, scale %.3f\n",

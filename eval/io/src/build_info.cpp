@@ -1,8 +1,8 @@
 #include "relslam/eval/io/build_info.hpp"
 
+#include <mrpt/version.h>
 #include <CLI/Version.hpp>
 #include <Eigen/Core>
-#include <mrpt/version.h>
 #include <opencv2/core/version.hpp>
 
 #include <fstream>
@@ -20,8 +20,9 @@ nlohmann::json library_versions() {
       {"eigen", std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
                     std::to_string(EIGEN_MINOR_VERSION)},
       {"opencv", CV_VERSION},
-      {"nlohmann_json", std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." + std::to_string(NLOHMANN_JSON_VERSION_MINOR) +
-                            "." + std::to_string(NLOHMANN_JSON_VERSION_PATCH)},
+      {"nlohmann_json", std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." +
+                            std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
+                            std::to_string(NLOHMANN_JSON_VERSION_PATCH)},
       {"cli11", CLI11_VERSION},
       {"compiler", std::string("g++ ") + __VERSION__},
   };

@@ -65,7 +65,8 @@ void draw_text(cv::Mat& image, const std::string& text, cv::Point at, const cv::
   cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, size, colour, 1, cv::LINE_AA);
 }
 
-void draw_path(cv::Mat& image, const std::vector<Eigen::Vector3d>& path, const Projection& project, const cv::Scalar& colour) {
+void draw_path(cv::Mat& image, const std::vector<Eigen::Vector3d>& path, const Projection& project,
+               const cv::Scalar& colour) {
   std::vector<cv::Point> px;
   px.reserve(path.size());
   for (const Eigen::Vector3d& p : path) px.push_back(project(p));
@@ -73,8 +74,8 @@ void draw_path(cv::Mat& image, const std::vector<Eigen::Vector3d>& path, const P
 }
 
 // The robot as a triangle pointing along its +z, and (top view) its frustum as a wedge.
-void draw_robot(cv::Mat& image, const Rigid3& pose, const SceneFrustum& frustum, const Projection& project, RenderView view,
-                const cv::Scalar& colour, bool filled) {
+void draw_robot(cv::Mat& image, const Rigid3& pose, const SceneFrustum& frustum, const Projection& project,
+                RenderView view, const cv::Scalar& colour, bool filled) {
   const double size = std::max(2.0, 0.03 * frustum.far);
   const std::vector<cv::Point> body = {project(pose * Eigen::Vector3d(0, 0, size)),
                                        project(pose * Eigen::Vector3d(0.5 * size, 0, -0.5 * size)),
@@ -103,9 +104,12 @@ void draw_legend(cv::Mat& image, bool has_groups) {
     const char* text;
     cv::Scalar colour;
   };
-  std::vector<Entry> entries = {{"true point", kTruePoint}, {"true dynamic point", kTrueDynamic},
-                                {"map point (RltPoint / EKF landmark)", kPointBox}, {"flagged dynamic", kDynamicMark},
-                                {"true robot and frustum", kTrueRobot}, {"estimated robot and frustum", kEstimatedRobot}};
+  std::vector<Entry> entries = {{"true point", kTruePoint},
+                                {"true dynamic point", kTrueDynamic},
+                                {"map point (RltPoint / EKF landmark)", kPointBox},
+                                {"flagged dynamic", kDynamicMark},
+                                {"true robot and frustum", kTrueRobot},
+                                {"estimated robot and frustum", kEstimatedRobot}};
   if (has_groups) {
     entries.push_back({"label: final group (black)", kFinalLabel});
     entries.push_back({"label: temporary group (red)", kTemporaryLabel});
@@ -153,7 +157,8 @@ RenderFrame fit_everything(const RenderScene& scene, const RenderOptions& option
   if (!(lo.array() <= hi.array()).all()) return {};
   const Eigen::Vector2d c = 0.5 * (lo + hi), extent = hi - lo;
   // The wider picture side takes the span; the other side must still hold its extent.
-  const double aspect = static_cast<double>(std::max(options.width, options.height)) / std::min(options.width, options.height);
+  const double aspect =
+      static_cast<double>(std::max(options.width, options.height)) / std::min(options.width, options.height);
   const bool wide = options.width >= options.height;
   const double span = std::max(wide ? extent.x() : extent.y(), (wide ? extent.y() : extent.x()) * aspect);
   return {c.x(), c.y(), 1.08 * std::max(span, 1.0)};
@@ -162,8 +167,8 @@ RenderFrame fit_everything(const RenderScene& scene, const RenderOptions& option
 RenderFrame fit_robot(const RenderScene& scene, const RenderOptions& options) {
   const std::optional<Rigid3>& pose = scene.true_pose ? scene.true_pose : scene.estimated_pose;
   // A close-up (thesis Fig 129): the robot and the near part of what it sees [C].
-  const Eigen::Vector3d centre = pose ? Eigen::Vector3d(*pose * Eigen::Vector3d(0, 0, 0.25 * scene.frustum.far))
-                                      : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d centre =
+      pose ? Eigen::Vector3d(*pose * Eigen::Vector3d(0, 0, 0.25 * scene.frustum.far)) : Eigen::Vector3d::Zero();
   const Eigen::Vector2d uv = plane(centre, options.view);
   return {uv.x(), uv.y(), 0.8 * scene.frustum.far};
 }
@@ -199,18 +204,25 @@ cv::Mat render_map(const RenderScene& scene, const RenderFrame& frame, const Ren
     } else {
       cv::rectangle(image, {px.x - 2, px.y - 2}, {px.x + 2, px.y + 2}, kPointBox, 1);
     }
-    if (labels) draw_text(image, std::to_string(l.id), {px.x + 4, px.y - 3}, l.dynamic ? kDynamicMark : l.final ? kFinalLabel : kTemporaryLabel, 0.33);
+    if (labels)
+      draw_text(image, std::to_string(l.id), {px.x + 4, px.y - 3},
+                l.dynamic ? kDynamicMark
+                : l.final ? kFinalLabel
+                          : kTemporaryLabel,
+                0.33);
   }
   if (labels)
     for (const SceneGroup& g : scene.groups)
       draw_text(image, "G" + std::to_string(g.id), project(g.centroid), g.final ? kFinalLabel : kTemporaryLabel, 0.35);
 
   // The true robot last: where the estimate is right, it stays visible on top.
-  if (scene.estimated_pose) draw_robot(image, *scene.estimated_pose, scene.frustum, project, options.view, kEstimatedRobot, true);
+  if (scene.estimated_pose)
+    draw_robot(image, *scene.estimated_pose, scene.frustum, project, options.view, kEstimatedRobot, true);
   if (scene.true_pose) draw_robot(image, *scene.true_pose, scene.frustum, project, options.view, kTrueRobot, false);
 
   draw_text(image, scene.title, {12, 22}, kText, 0.55);
-  draw_text(image, options.view == RenderView::Top ? "top view: z right, x up" : "side view: z right, y up", {12, 42}, kText);
+  draw_text(image, options.view == RenderView::Top ? "top view: z right, x up" : "side view: z right, y up", {12, 42},
+            kText);
   draw_scale_bar(image, frame, options);
   draw_legend(image, !scene.groups.empty());
   return image;

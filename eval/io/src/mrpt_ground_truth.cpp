@@ -9,9 +9,10 @@ std::vector<Rigid3> read_mrpt_path(const std::filesystem::path& file) {
   for (const NumericRow& row : read_numeric_rows(file, 6, "x y z yaw pitch roll")) {
     const std::vector<double>& v = row.values;
     // MRPT's CPose3D: R = Rz(yaw) Ry(pitch) Rx(roll).
-    const Eigen::Matrix3d r = (Eigen::AngleAxisd(v[3], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(v[4], Eigen::Vector3d::UnitY()) *
-                               Eigen::AngleAxisd(v[5], Eigen::Vector3d::UnitX()))
-                                  .toRotationMatrix();
+    const Eigen::Matrix3d r =
+        (Eigen::AngleAxisd(v[3], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(v[4], Eigen::Vector3d::UnitY()) *
+         Eigen::AngleAxisd(v[5], Eigen::Vector3d::UnitX()))
+            .toRotationMatrix();
     path.push_back({r, {v[0], v[1], v[2]}});
   }
   return path;

@@ -8,7 +8,8 @@ using mrpt::obs::CObservationBearingRange;
 
 std::shared_ptr<CObservationBearingRange> bearing_range_observation(const ObservationFrame& frame,
                                                                     const std::vector<int>& landmark_ids,
-                                                                    const RangeBearingSensor& sensor, double timestamp_s) {
+                                                                    const RangeBearingSensor& sensor,
+                                                                    double timestamp_s) {
   if (!landmark_ids.empty() && landmark_ids.size() != frame.points.size())
     throw std::logic_error("bearing_range_observation: " + std::to_string(landmark_ids.size()) + " ids for " +
                            std::to_string(frame.points.size()) + " points");

@@ -34,8 +34,9 @@ std::vector<NumericRow> read_numeric_rows(const std::filesystem::path& file, std
       while (*p == ' ' || *p == '\t' || *p == '\r') ++p;
     }
     if (row.values.size() < min_columns)
-      throw InputError(file.string(), line_number, "",
-                       std::string("expected ") + columns_hint + ", got " + std::to_string(row.values.size()) + " numbers");
+      throw InputError(
+          file.string(), line_number, "",
+          std::string("expected ") + columns_hint + ", got " + std::to_string(row.values.size()) + " numbers");
     rows.push_back(std::move(row));
   }
   if (rows.empty()) throw InputError(file.string(), 0, "", "no data rows");

@@ -20,7 +20,9 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr const char* kFacingChoices = "\"+x\", \"-x\", \"+z\", \"-z\" or a direction [x, z]";
 constexpr const char* kStepForms = "\"MOVE <distance>\", \"TURN <degrees>\" or \"ARC <distance> <degrees>\"";
 
-std::string join(const std::string& prefix, const std::string& key) { return prefix.empty() ? key : prefix + "." + key; }
+std::string join(const std::string& prefix, const std::string& key) {
+  return prefix.empty() ? key : prefix + "." + key;
+}
 std::string element(const std::string& list, std::size_t i) { return list + "[" + std::to_string(i) + "]"; }
 
 // A number written the JSON way, with an optional leading '+' ("TURN +90").
@@ -62,7 +64,8 @@ class MapReader {
     sim::PlanarMap map;
     map.name = root.contains("name") ? text(root["name"], "name") : std::filesystem::path(doc_.file).stem().string();
     if (root.contains("description")) map.description = text(root["description"], "description");
-    const double height = root.contains("wall_height") ? number(root["wall_height"], "wall_height") : sim::Wall{}.height;
+    const double height =
+        root.contains("wall_height") ? number(root["wall_height"], "wall_height") : sim::Wall{}.height;
 
     const json& walls = member(root, "", "walls");
     if (!walls.is_array()) fail("walls", "expected a list of walls, got " + walls.dump());
@@ -72,7 +75,8 @@ class MapReader {
     // Ends, heights and windows are checked before `facing` orders the ends: a zero-length or
     // non-finite wall has no sides to face.
     report(sim::check(map.world), "");
-    for (std::size_t i = 0; i < walls.size(); ++i) orient(map.world.walls[i], facings[i], join(element("walls", i), "facing"));
+    for (std::size_t i = 0; i < walls.size(); ++i)
+      orient(map.world.walls[i], facings[i], join(element("walls", i), "facing"));
 
     map.path = read_path(member(root, "", "path"));
     report(sim::check(map.path), "path.");
@@ -80,7 +84,8 @@ class MapReader {
     report(sim::check(map.sensor), "sensor.");
 
     if (!sim::first_iteration_seeing(map, 2))
-      fail("path", "never sees two walls at once with the map's sensor (mode " + std::string(sim::to_string(map.sensor.mode)) +
+      fail("path", "never sees two walls at once with the map's sensor (mode " +
+                       std::string(sim::to_string(map.sensor.mode)) +
                        "); the algorithm relates walls only through the ones it sees together");
     return map;
   }
@@ -170,10 +175,12 @@ class MapReader {
     sim::Wall wall = sim::Wall::between(static_cast<int>(i), point(member(value, field, "a"), join(field, "a")),
                                         point(member(value, field, "b"), join(field, "b")));
     wall.height = height;
-    facings.push_back(facing(member(value, field, "facing", std::string("give the side the wall's front looks to: ") + kFacingChoices),
-                             join(field, "facing")));
+    facings.push_back(facing(
+        member(value, field, "facing", std::string("give the side the wall's front looks to: ") + kFacingChoices),
+        join(field, "facing")));
     if (value.contains("one_sided")) {
-      if (!value["one_sided"].is_boolean()) fail(join(field, "one_sided"), "expected true or false, got " + value["one_sided"].dump());
+      if (!value["one_sided"].is_boolean())
+        fail(join(field, "one_sided"), "expected true or false, got " + value["one_sided"].dump());
       wall.one_sided = value["one_sided"].get<bool>();
     }
     if (value.contains("scripted_windows")) {
@@ -201,7 +208,8 @@ class MapReader {
     if (!value.is_array()) fail(field, std::string("expected a list of ") + kStepForms + ", got " + value.dump());
     std::vector<sim::PathOperation> operations;
     for (std::size_t i = 0; i < value.size(); ++i) {
-      const std::optional<sim::PathOperation> op = value[i].is_string() ? parse_step(value[i].get<std::string>()) : std::nullopt;
+      const std::optional<sim::PathOperation> op =
+          value[i].is_string() ? parse_step(value[i].get<std::string>()) : std::nullopt;
       if (!op) fail(element(field, i), std::string("expected ") + kStepForms + ", got " + value[i].dump());
       operations.push_back(*op);
     }
@@ -214,11 +222,13 @@ class MapReader {
     sim::PathProgram path;
     const json& start = object(member(value, "path", "start"), "path.start");
     only_keys(start, "path.start", {"x", "z", "heading_deg"});
-    path.start = PlanarPose::from(number(member(start, "path.start", "x"), "path.start.x"),
-                                  number(member(start, "path.start", "z"), "path.start.z"),
-                                  number(member(start, "path.start", "heading_deg"), "path.start.heading_deg") * kDegree);
+    path.start =
+        PlanarPose::from(number(member(start, "path.start", "x"), "path.start.x"),
+                         number(member(start, "path.start", "z"), "path.start.z"),
+                         number(member(start, "path.start", "heading_deg"), "path.start.heading_deg") * kDegree);
     if (value.contains("speed")) path.speed = number(value["speed"], "path.speed");
-    if (value.contains("turn_rate_deg")) path.turn_rate_rad = number(value["turn_rate_deg"], "path.turn_rate_deg") * kDegree;
+    if (value.contains("turn_rate_deg"))
+      path.turn_rate_rad = number(value["turn_rate_deg"], "path.turn_rate_deg") * kDegree;
     if (value.contains("loops")) path.loops = integer(value["loops"], "path.loops");
     path.steps = steps(member(value, "path", "steps"), "path.steps");
     if (value.contains("then")) path.then = steps(value["then"], "path.then");
@@ -231,7 +241,8 @@ class MapReader {
     only_keys(value, "sensor", {"mode", "frustum", "noise"});
     if (value.contains("mode")) {
       const std::optional<sim::PlaneVisibility> mode = sim::parse_plane_visibility(text(value["mode"], "sensor.mode"));
-      if (!mode) fail("sensor.mode", "expected frustum, full_size, always_visible or scripted, got " + value["mode"].dump());
+      if (!mode)
+        fail("sensor.mode", "expected frustum, full_size, always_visible or scripted, got " + value["mode"].dump());
       sensor.mode = *mode;
     }
     if (value.contains("frustum")) {
@@ -240,10 +251,12 @@ class MapReader {
       sensor.frustum = *frustum;
     }
     if (value.contains("noise")) {
-      const std::optional<sim::PlaneNoiseModel> model = sim::parse_plane_noise_model(text(value["noise"], "sensor.noise"));
+      const std::optional<sim::PlaneNoiseModel> model =
+          sim::parse_plane_noise_model(text(value["noise"], "sensor.noise"));
       if (!model)
         fail("sensor.noise", "expected none, gaussian, uniform or three_valued_rotation, got " + value["noise"].dump());
-      sensor.noise = *model == sim::PlaneNoiseModel::None ? sim::PlaneNoiseOptions::none() : sim::PlaneNoiseOptions::with_noise();
+      sensor.noise =
+          *model == sim::PlaneNoiseModel::None ? sim::PlaneNoiseOptions::none() : sim::PlaneNoiseOptions::with_noise();
       sensor.noise.model = *model;
     }
   }

@@ -1,7 +1,7 @@
 #include "relslam/eval/io/progress.hpp"
 
-#include <cstdio>
 #include <unistd.h>
+#include <cstdio>
 
 namespace relslam::eval {
 namespace {
@@ -16,8 +16,12 @@ constexpr auto kQuietStart = std::chrono::seconds(1);
 }  // namespace
 
 Progress::Progress(std::string label, long long total, bool enabled)
-    : label_(std::move(label)), total_(total), enabled_(enabled), terminal_(isatty(STDERR_FILENO) != 0),
-      start_(Clock::now()), last_(start_) {}
+    : label_(std::move(label)),
+      total_(total),
+      enabled_(enabled),
+      terminal_(isatty(STDERR_FILENO) != 0),
+      start_(Clock::now()),
+      last_(start_) {}
 
 void Progress::update(long long done) {
   if (!enabled_ || total_ <= 0) return;

@@ -42,8 +42,8 @@ Rigid3 mrpt_axes_from_robot(const Rigid3& pose) {
 }
 
 Rigid3 robot_pose_from_planar(const Pose2& pose) {
-  return robot_axes_from_mrpt({Eigen::AngleAxisd(pose.heading, Eigen::Vector3d::UnitZ()).toRotationMatrix(),
-                               {pose.x, pose.y, 0.0}});
+  return robot_axes_from_mrpt(
+      {Eigen::AngleAxisd(pose.heading, Eigen::Vector3d::UnitZ()).toRotationMatrix(), {pose.x, pose.y, 0.0}});
 }
 
 Pose2 planar_from_robot_pose(const Rigid3& pose) {

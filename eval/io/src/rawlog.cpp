@@ -1,8 +1,8 @@
 #include "relslam/eval/io/rawlog.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
-#include "relslam/eval/io/range_bearing.hpp"
 #include "relslam/eval/io/mrpt_observation.hpp"
+#include "relslam/eval/io/range_bearing.hpp"
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -18,12 +18,12 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/poses/CPose3DQuat.h>
 
-#include <Eigen/Geometry>
 #include <mrpt/serialization/CArchive.h>
+#include <Eigen/Geometry>
 
 #include <array>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 
 namespace relslam::eval {
@@ -51,15 +51,16 @@ CActionCollection odometry_actions(const ObservationFrame& frame) {
   if (planar) {
     mrpt::obs::CActionRobotMovement2D move;
     const Pose2 p = planar_from_robot_pose(*frame.odometry);
-    move.computeFromOdometry(mrpt::poses::CPose2D(p.x, p.y, p.heading), mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+    move.computeFromOdometry(mrpt::poses::CPose2D(p.x, p.y, p.heading),
+                             mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
     actions.insert(move);
   } else {
     mrpt::obs::CActionRobotMovement3D move;
     const Eigen::Quaterniond q(m.rotation);
-    move.computeFromOdometry(mrpt::poses::CPose3D(mrpt::poses::CPose3DQuat(m.translation.x(), m.translation.y(),
-                                                                           m.translation.z(),
-                                                                           mrpt::math::CQuaternionDouble(q.w(), q.x(), q.y(), q.z()))),
-                             mrpt::obs::CActionRobotMovement3D::TMotionModelOptions());
+    move.computeFromOdometry(
+        mrpt::poses::CPose3D(mrpt::poses::CPose3DQuat(m.translation.x(), m.translation.y(), m.translation.z(),
+                                                      mrpt::math::CQuaternionDouble(q.w(), q.x(), q.y(), q.z()))),
+        mrpt::obs::CActionRobotMovement3D::TMotionModelOptions());
     actions.insert(move);
   }
   return actions;
@@ -96,8 +97,9 @@ RawlogFrame frame_of(const CObservationBearingRange& obs, int index, const std::
     const auto& m = obs.sensedData[i];
     const std::string field = "sensedData[" + std::to_string(i) + "]";
     if (!std::isfinite(m.range) || !std::isfinite(m.yaw) || !std::isfinite(m.pitch))
-      throw InputError(file, record, field, "range/yaw/pitch must be finite, got " + std::to_string(m.range) + "/" +
-                                                std::to_string(m.yaw) + "/" + std::to_string(m.pitch));
+      throw InputError(file, record, field,
+                       "range/yaw/pitch must be finite, got " + std::to_string(m.range) + "/" + std::to_string(m.yaw) +
+                           "/" + std::to_string(m.pitch));
     if (m.range < 0) throw InputError(file, record, field, "negative range " + std::to_string(m.range));
     frame.measurements.push_back({m.range, m.yaw, m.pitch, m.landmarkID});
   }
@@ -115,7 +117,8 @@ void require_mrpt_header(const std::filesystem::path& path) {
   if (n == 0) throw InputError(path.string(), 0, "", "empty file: not an MRPT rawlog");
   const unsigned length = head[0] & 0x7F;
   bool ok = (head[0] & 0x80) != 0 && length >= 2 && 1 + length <= n;
-  for (unsigned i = 0; ok && i < length; ++i) ok = std::isalnum(head[1 + i]) || head[1 + i] == '_' || head[1 + i] == ':';
+  for (unsigned i = 0; ok && i < length; ++i)
+    ok = std::isalnum(head[1 + i]) || head[1 + i] == '_' || head[1 + i] == ':';
   // Every MRPT serialisable class is called C..., with its namespace in MRPT 2 ("mrpt::obs::C...").
   const std::string class_name(reinterpret_cast<const char*>(head.data()) + 1, ok ? length : 0);
   const std::size_t colons = class_name.rfind("::");
@@ -146,7 +149,7 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
 
   Rawlog log;
   bool any_action = false, any_frame = false;
-  std::optional<Rigid3> pending_odometry;                 // action waiting for its frame
+  std::optional<Rigid3> pending_odometry;                     // action waiting for its frame
   std::optional<mrpt::poses::CPose2D> last_odometry_reading;  // observation-only files
   for (int record = 1;; ++record) {
     const std::uint64_t before = in.getPosition();
@@ -158,7 +161,8 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
       throw InputError(name, record, "", "truncated: the file ends inside record " + std::to_string(record));
     } catch (const std::exception& e) {
       // MRPT wraps a short read inside an object in a generic error; EOF tells them apart.
-      if (in.checkEOF()) throw InputError(name, record, "", "truncated: the file ends inside record " + std::to_string(record));
+      if (in.checkEOF())
+        throw InputError(name, record, "", "truncated: the file ends inside record " + std::to_string(record));
       throw InputError(name, record, "", "unreadable record (corrupt or not a rawlog): " + mrpt_message(e.what()));
     }
     log.records = record;
@@ -197,13 +201,15 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
       log.format = Rawlog::Format::ObservationsOnly;
       ++log.skipped_observations;
     } else {
-      throw InputError(name, record, "", std::string("unexpected object of class ") + object->GetRuntimeClass()->className +
-                                             " in a rawlog");
+      throw InputError(
+          name, record, "",
+          std::string("unexpected object of class ") + object->GetRuntimeClass()->className + " in a rawlog");
     }
   }
   if (log.frames.empty())
-    throw InputError(name, 0, "", "no CObservationBearingRange in " + std::to_string(log.records) +
-                                      " records: nothing for a landmark SLAM algorithm to read");
+    throw InputError(name, 0, "",
+                     "no CObservationBearingRange in " + std::to_string(log.records) +
+                         " records: nothing for a landmark SLAM algorithm to read");
   if (any_action && any_frame) log.format = Rawlog::Format::ActionsSensoryFrames;
   return log;
 }
@@ -239,7 +245,8 @@ RawlogWriter::RawlogWriter(const std::filesystem::path& path, const RangeBearing
     impl_->stream = std::move(s);
   } else {
     auto s = std::make_unique<mrpt::io::CFileOutputStream>();
-    if (!s->open(impl_->name, mrpt::io::OpenMode::TRUNCATE)) throw std::runtime_error(impl_->name + ": cannot create file");
+    if (!s->open(impl_->name, mrpt::io::OpenMode::TRUNCATE))
+      throw std::runtime_error(impl_->name + ": cannot create file");
     impl_->stream = std::move(s);
   }
 }

@@ -2,8 +2,8 @@
 
 #include "relslam/eval/config/scenario_keys.hpp"
 
-#include "relslam/eval/io/build_info.hpp"
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/io/build_info.hpp"
 
 #include <chrono>
 #include <ctime>
@@ -18,9 +18,13 @@ void prepare_run_folder(const fs::path& dir, bool force) {
     if (!fs::is_directory(dir)) throw InputError("", 0, "--out", dir.string() + " exists and is not a folder");
     if (!fs::is_empty(dir)) {
       if (!force)
-        throw InputError("", 0, "--out", dir.string() + " is not empty; choose a new folder or pass --force to replace an earlier run");
+        throw InputError("", 0, "--out",
+                         dir.string() + " is not empty; choose a new folder or pass --force to replace an earlier run");
       if (!fs::exists(dir / "manifest.json"))
-        throw InputError("", 0, "--out", dir.string() + " is not empty and holds no manifest.json, so it is not a relslam run folder; refusing to delete it");
+        throw InputError(
+            "", 0, "--out",
+            dir.string() +
+                " is not empty and holds no manifest.json, so it is not a relslam run folder; refusing to delete it");
       for (const auto& entry : fs::directory_iterator(dir)) fs::remove_all(entry.path());
     }
   }

@@ -73,8 +73,9 @@ std::vector<LaserScan> scans_in(const VictoriaParkLog& log, const ScanWindow& wi
   const int count = static_cast<int>(log.scans.size());
   const int last = std::min(window.last, count);
   if (window.first > count || (window.last != ScanWindow{}.last && window.last > count))
-    throw InputError("", 0, field, "the log has " + std::to_string(count) + " scans; the window ends at " +
-                                       std::to_string(window.last));
+    throw InputError(
+        "", 0, field,
+        "the log has " + std::to_string(count) + " scans; the window ends at " + std::to_string(window.last));
   return {log.scans.begin() + (window.first - 1), log.scans.begin() + last};
 }
 

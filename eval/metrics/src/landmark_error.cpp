@@ -19,7 +19,8 @@ struct LandmarkErrorTracker::Index {
   bool empty = true;
 };
 
-LandmarkErrorTracker::LandmarkErrorTracker(LandmarkTruth truth) : truth_(std::move(truth)), index_(std::make_unique<Index>()) {
+LandmarkErrorTracker::LandmarkErrorTracker(LandmarkTruth truth)
+    : truth_(std::move(truth)), index_(std::make_unique<Index>()) {
   std::vector<bool> moving(truth_.positions.size(), false);
   for (int id : truth_.dynamic_ids) moving[id] = true;
   std::vector<spatial::IndexedPoint> fixed;
@@ -54,7 +55,8 @@ void LandmarkErrorTracker::check_dynamic(const std::vector<Eigen::Vector3d>& dyn
                            std::to_string(truth_.dynamic_ids.size()) + " dynamic landmarks");
 }
 
-void LandmarkErrorTracker::update(const std::vector<Eigen::Vector3d>& dynamic_positions, const std::vector<int>& changed,
+void LandmarkErrorTracker::update(const std::vector<Eigen::Vector3d>& dynamic_positions,
+                                  const std::vector<int>& changed,
                                   const std::function<std::optional<Eigen::Vector3d>(int)>& position_of) {
   for (int id : changed) {
     if (static_cast<std::size_t>(id) >= error_.size()) {

@@ -8,7 +8,9 @@
 
 namespace relslam::eval {
 
-double PlanarAlignment::rotation_deg() const { return std::atan2(rotation(1, 0), rotation(0, 0)) * 180.0 / std::numbers::pi; }
+double PlanarAlignment::rotation_deg() const {
+  return std::atan2(rotation(1, 0), rotation(0, 0)) * 180.0 / std::numbers::pi;
+}
 
 PlanarAlignment align_planar(const std::vector<Eigen::Vector2d>& from, const std::vector<Eigen::Vector2d>& to,
                              bool with_scale) {
@@ -78,7 +80,8 @@ MapComparison compare_maps(const std::vector<Eigen::Vector2d>& map, const std::v
     double sum = 0;
     for (double r : residuals) sum += r * r;
     c.rms = std::sqrt(sum / static_cast<double>(residuals.size()));
-    std::nth_element(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(residuals.size() / 2), residuals.end());
+    std::nth_element(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(residuals.size() / 2),
+                     residuals.end());
     c.median = residuals[residuals.size() / 2];
   }
   return c;

@@ -9,13 +9,15 @@ namespace relslam::eval {
 void RunScorer::associate(const std::vector<int>& assignment, const std::vector<int>& true_ids) {
   for (std::size_t i = 0; i < assignment.size(); ++i) {
     if (assignment[i] < 0 || true_ids[i] < 0) continue;
-    if (static_cast<std::size_t>(assignment[i]) >= votes_.size()) votes_.resize(static_cast<std::size_t>(assignment[i]) + 1);
+    if (static_cast<std::size_t>(assignment[i]) >= votes_.size())
+      votes_.resize(static_cast<std::size_t>(assignment[i]) + 1);
     ++votes_[assignment[i]][true_ids[i]];
   }
 }
 
 IterationScore RunScorer::score(const Rigid3& estimate, const TruthFrame& truth, const std::vector<int>& changed,
-                                const std::function<std::optional<Eigen::Vector3d>(int)>& position_of, double runtime_ms) {
+                                const std::function<std::optional<Eigen::Vector3d>(int)>& position_of,
+                                double runtime_ms) {
   errors_.update(truth.dynamic_positions, changed, position_of);
   constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();  // written as empty fields
   IterationScore s;

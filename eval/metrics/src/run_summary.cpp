@@ -2,10 +2,10 @@
 
 #include "relslam/eval/io/csv_writer.hpp"
 
+#include <sys/resource.h>
 #include <algorithm>
 #include <limits>
 #include <numeric>
-#include <sys/resource.h>
 
 namespace relslam::eval {
 
@@ -41,23 +41,23 @@ RuntimeStats runtime_stats(std::vector<double> t) {
 
 void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
                    const std::optional<SummaryRow>& ratio) {
-  CsvWriter csv(file, {"algorithm", "status", "iterations", "final_landmark_error", "final_mean_landmark_error",
-                       "mean_landmark_error", "final_position_error", "ate_rmse", "ate_rmse_aligned",
-                       "rpe_translation_rmse", "rpe_rotation_rmse_deg", "landmarks_on_map", "duplicates",
-                       "runtime_median_ms", "runtime_p95_ms", "runtime_max_ms", "runtime_mean_ms", "peak_rss_mb",
-                       "input_digest"});
+  CsvWriter csv(file,
+                {"algorithm", "status", "iterations", "final_landmark_error", "final_mean_landmark_error",
+                 "mean_landmark_error", "final_position_error", "ate_rmse", "ate_rmse_aligned", "rpe_translation_rmse",
+                 "rpe_rotation_rmse_deg", "landmarks_on_map", "duplicates", "runtime_median_ms", "runtime_p95_ms",
+                 "runtime_max_ms", "runtime_mean_ms", "peak_rss_mb", "input_digest"});
   for (const SummaryRow& r : rows)
-    csv.row(r.algorithm, r.status.text(), r.iterations, r.final_landmark_error, r.final_mean_landmark_error, r.mean_landmark_error,
-            r.final_position_error, r.trajectory.ate_rmse, r.trajectory.ate_rmse_aligned, r.trajectory.rpe_translation_rmse,
-            r.trajectory.rpe_rotation_rmse_deg, r.landmarks_on_map, r.duplicates, r.runtime.median_ms, r.runtime.p95_ms,
-            r.runtime.max_ms, r.runtime.mean_ms, r.peak_rss_mb, r.input_digest);
+    csv.row(r.algorithm, r.status.text(), r.iterations, r.final_landmark_error, r.final_mean_landmark_error,
+            r.mean_landmark_error, r.final_position_error, r.trajectory.ate_rmse, r.trajectory.ate_rmse_aligned,
+            r.trajectory.rpe_translation_rmse, r.trajectory.rpe_rotation_rmse_deg, r.landmarks_on_map, r.duplicates,
+            r.runtime.median_ms, r.runtime.p95_ms, r.runtime.max_ms, r.runtime.mean_ms, r.peak_rss_mb, r.input_digest);
   if (ratio) {
     const SummaryRow& r = *ratio;
     const std::optional<double> none;
-    csv.row(r.algorithm, r.status.text(), r.iterations, r.final_landmark_error, r.final_mean_landmark_error, r.mean_landmark_error,
-            r.final_position_error, r.trajectory.ate_rmse, r.trajectory.ate_rmse_aligned, r.trajectory.rpe_translation_rmse,
-            r.trajectory.rpe_rotation_rmse_deg, none, none, r.runtime.median_ms, r.runtime.p95_ms, r.runtime.max_ms,
-            r.runtime.mean_ms, none, "");
+    csv.row(r.algorithm, r.status.text(), r.iterations, r.final_landmark_error, r.final_mean_landmark_error,
+            r.mean_landmark_error, r.final_position_error, r.trajectory.ate_rmse, r.trajectory.ate_rmse_aligned,
+            r.trajectory.rpe_translation_rmse, r.trajectory.rpe_rotation_rmse_deg, none, none, r.runtime.median_ms,
+            r.runtime.p95_ms, r.runtime.max_ms, r.runtime.mean_ms, none, "");
   }
   csv.close();
 }

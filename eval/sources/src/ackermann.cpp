@@ -18,14 +18,16 @@ Pose2 ackermann_step(const AckermannModel& m, const Pose2& laser, const VehicleI
 
 DeadReckoning::DeadReckoning(std::vector<VehicleInput> inputs, AckermannModel model)
     : inputs_(std::move(inputs)), model_(model) {
-  if (!std::is_sorted(inputs_.begin(), inputs_.end(), [](const VehicleInput& a, const VehicleInput& b) { return a.time < b.time; }))
+  if (!std::is_sorted(inputs_.begin(), inputs_.end(),
+                      [](const VehicleInput& a, const VehicleInput& b) { return a.time < b.time; }))
     throw std::invalid_argument("DeadReckoning: inputs must be in time order");
 }
 
 Pose2 DeadReckoning::motion(double t0, double t1) const {
   Pose2 pose;
   // The input in effect at t0: the last one at or before it.
-  auto next = std::upper_bound(inputs_.begin(), inputs_.end(), t0, [](double t, const VehicleInput& u) { return t < u.time; });
+  auto next =
+      std::upper_bound(inputs_.begin(), inputs_.end(), t0, [](double t, const VehicleInput& u) { return t < u.time; });
   VehicleInput held = next == inputs_.begin() ? VehicleInput{t0, 0, 0} : *(next - 1);
   double t = t0;
   while (t < t1) {

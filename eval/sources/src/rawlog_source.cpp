@@ -17,7 +17,8 @@ RawlogSource::RawlogSource(const RawlogFiles& files) : files_(files), log_(read_
   truth_.known = files_.truth_landmarks.has_value();
   if (files_.truth_landmarks) {
     if (!files_.truth_path)
-      throw InputError(files_.truth_landmarks->string(), 0, "--truth-landmarks", "needs --truth-path (the frame to express them in)");
+      throw InputError(files_.truth_landmarks->string(), 0, "--truth-landmarks",
+                       "needs --truth-path (the frame to express them in)");
     for (const TruthLandmark& l : read_mrpt_landmarks(*files_.truth_landmarks)) {
       row_of_id_[l.id] = static_cast<int>(truth_.positions.size());
       truth_.positions.push_back(robot_from_mrpt(first_inverse_ * l.p_world));
@@ -49,11 +50,12 @@ void RawlogSource::stream(const Consumer& consume) {
 }
 
 nlohmann::json RawlogSource::describe() const {
-  return {{"rawlog", {{"file", files_.rawlog.string()},
-                      {"frames", log_.frames.size()},
-                      {"sensory_frame_first", log_.sensory_frame_first},
-                      {"truth_path", files_.truth_path ? files_.truth_path->string() : ""},
-                      {"truth_landmarks", files_.truth_landmarks ? files_.truth_landmarks->string() : ""}}}};
+  return {{"rawlog",
+           {{"file", files_.rawlog.string()},
+            {"frames", log_.frames.size()},
+            {"sensory_frame_first", log_.sensory_frame_first},
+            {"truth_path", files_.truth_path ? files_.truth_path->string() : ""},
+            {"truth_landmarks", files_.truth_landmarks ? files_.truth_landmarks->string() : ""}}}};
 }
 
 }  // namespace relslam::eval

@@ -1,9 +1,9 @@
 #include "relslam/eval/sources/simulation_recorder.hpp"
 
 #include "relslam/eval/io/csv_writer.hpp"
-#include "relslam/eval/sources/simulated_world.hpp"
 #include "relslam/eval/io/rawlog.hpp"
 #include "relslam/eval/io/tum_writer.hpp"
+#include "relslam/eval/sources/simulated_world.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -23,10 +23,12 @@ struct SimulationRecorder::Files {
 
   Files(const fs::path& dir, const Scenario& scenario, const sim::Simulator& simulator)
       : path(dir / "ground_truth_path.tum"),
-        iterations(dir / "sim_iterations.csv", {"iteration", "arc_length", "x", "y", "z", "visible", "visible_dynamic"}),
+        iterations(dir / "sim_iterations.csv",
+                   {"iteration", "arc_length", "x", "y", "z", "visible", "visible_dynamic"}),
         rawlog_ids(scenario.output.rawlog_landmark_ids),
         dynamic_ids(simulator.world().dynamic_ids()) {
-    if (!dynamic_ids.empty()) dynamic.emplace(dir / "ground_truth_dynamic.csv", std::vector<std::string>{"iteration", "id", "x", "y", "z"});
+    if (!dynamic_ids.empty())
+      dynamic.emplace(dir / "ground_truth_dynamic.csv", std::vector<std::string>{"iteration", "id", "x", "y", "z"});
     if (scenario.output.observations_csv)
       observations.emplace(dir / "observations.csv", std::vector<std::string>{"iteration", "x", "y", "z", "true_id"});
     if (scenario.output.rawlog)
@@ -66,9 +68,11 @@ void SimulationRecorder::record(const sim::SimFrame& frame) {
       files_->dynamic->row(k, id, p.x(), p.y(), p.z());
     }
   if (files_->observations)
-    for (std::size_t i = 0; i < points.size(); ++i) files_->observations->row(k, points[i].x(), points[i].y(), points[i].z(), ids[i]);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      files_->observations->row(k, points[i].x(), points[i].y(), points[i].z(), ids[i]);
   static const std::vector<int> unknown_ids;  // empty: the writer stores -1
-  if (files_->rawlog) files_->rawlog->write(frame.observation, files_->rawlog_ids ? ids : unknown_ids, kSimulationEpoch_s + k);
+  if (files_->rawlog)
+    files_->rawlog->write(frame.observation, files_->rawlog_ids ? ids : unknown_ids, kSimulationEpoch_s + k);
 
   const int n = static_cast<int>(points.size());
   summary_.iterations += 1;
@@ -85,8 +89,9 @@ SimulationSummary SimulationRecorder::finish() {
   if (files_->rawlog) files_->rawlog->close();
   if (summary_.iterations == 0) summary_.visible_min = 0;
   summary_.visible_mean = summary_.iterations ? static_cast<double>(summary_.detections) / summary_.iterations : 0.0;
-  summary_.distance_travelled =
-      simulator_.options().path == sim::PathKind::Stationary ? 0.0 : (summary_.iterations - 1) * simulator_.path().step_length();
+  summary_.distance_travelled = simulator_.options().path == sim::PathKind::Stationary
+                                    ? 0.0
+                                    : (summary_.iterations - 1) * simulator_.path().step_length();
   if (summary_.iterations == 0) summary_.distance_travelled = 0;
   return summary_;
 }

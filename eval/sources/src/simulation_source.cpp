@@ -26,10 +26,11 @@ void SimulationSource::stream(const Consumer& consume) {
 }
 
 nlohmann::json SimulationSource::describe() const {
-  return {{"simulation", {{"iterations", summary_.iterations},
-                          {"landmarks", summary_.landmarks},
-                          {"dynamic_landmarks", summary_.dynamic_landmarks},
-                          {"visible_mean", summary_.visible_mean}}}};
+  return {{"simulation",
+           {{"iterations", summary_.iterations},
+            {"landmarks", summary_.landmarks},
+            {"dynamic_landmarks", summary_.dynamic_landmarks},
+            {"visible_mean", summary_.visible_mean}}}};
 }
 
 }  // namespace relslam::eval

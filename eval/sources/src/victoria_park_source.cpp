@@ -41,7 +41,8 @@ ObservationFrame VictoriaParkStream::frame(const std::vector<LaserScan>& scans, 
   return frame;
 }
 
-VictoriaParkSource::VictoriaParkSource(const VictoriaParkLog& log, const Scenario& scenario, const std::filesystem::path& out)
+VictoriaParkSource::VictoriaParkSource(const VictoriaParkLog& log, const Scenario& scenario,
+                                       const std::filesystem::path& out)
     : log_(log),
       window_(scenario.victoria_park.window),
       scans_(scans_in(log, parse_scan_window(window_, "victoria_park.window"), "victoria_park.window")),

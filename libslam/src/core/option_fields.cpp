@@ -6,7 +6,9 @@ namespace relslam {
 
 // NaN fails every comparison, so it is rejected with the same wording as any other value.
 void Bound::operator()(std::vector<OptionIssue>& issues, const std::string& field, double value) const {
-  const bool ok = relation == Relation::AtLeast ? value >= bound : relation == Relation::Above ? value > bound : value <= bound;
+  const bool ok = relation == Relation::AtLeast ? value >= bound
+                  : relation == Relation::Above ? value > bound
+                                                : value <= bound;
   if (ok && std::isfinite(value)) return;
   const char* relation_text = relation == Relation::AtLeast ? ">= " : relation == Relation::Above ? "> " : "<= ";
   std::string what = format_number(bound);

@@ -17,7 +17,9 @@ struct Box {
       : lo(std::min(p.a.x(), p.b.x()) - margin, p.y_lo - margin, std::min(p.a.y(), p.b.y()) - margin),
         hi(std::max(p.a.x(), p.b.x()) + margin, p.y_hi + margin, std::max(p.a.y(), p.b.y()) + margin) {}
 
-  bool contains(const Eigen::Vector3d& q) const { return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all(); }
+  bool contains(const Eigen::Vector3d& q) const {
+    return (q.array() >= lo.array()).all() && (q.array() <= hi.array()).all();
+  }
   // Of this box's 8 corners and its centre, how many lie inside `other` (thesis 4.5: the centre
   // catches a tall box crossing a wide one with no corner inside).
   int points_inside(const Box& other) const {

@@ -271,8 +271,7 @@ bool RltXPointsS::link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<P
       const RltPlane& second = planes_[candidates_[b]];
       if (best != kNone && second.created_iteration() != planes_[best].created_iteration()) break;
       if (RltPlaneInterval::common_size(scratch_interval_, second.intervals()) < options_.min_common) continue;
-      const double distance =
-          (second.ref(from)->pose.translation - first.ref(from)->pose.translation).norm();
+      const double distance = (second.ref(from)->pose.translation - first.ref(from)->pose.translation).norm();
       if (distance > best_distance) {
         best = candidates_[b];
         best_distance = distance;

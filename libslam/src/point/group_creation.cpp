@@ -127,9 +127,8 @@ void GroupCreation::retire_redundant_temporary_groups(RltMap& map, int k, const 
     RltGroup& group = map.groups[temporary_to_review_.front()];
     temporary_to_review_.pop_front();
     if (!group.alive()) continue;
-    const bool owns_any = std::any_of(group.members().begin(), group.members().end(), [&](PointId id) {
-      return map.points[id].owner == group.id();
-    });
+    const bool owns_any = std::any_of(group.members().begin(), group.members().end(),
+                                      [&](PointId id) { return map.points[id].owner == group.id(); });
     if (!owns_any) map.retire(group);  // otherwise it still maps a point no final group took: kept
   }
 }

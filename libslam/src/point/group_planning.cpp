@@ -116,7 +116,8 @@ PlanOutcome GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& lev
   ranked_.clear();
   for (PointId id : scratch_) {
     const RltPoint& p = points[id];
-    if (previously_mapped(p, level, c0) && count_new(p) >= need) ranked_.push_back({p.interval.count(c0 - o.look_back, ahead), id});
+    if (previously_mapped(p, level, c0) && count_new(p) >= need)
+      ranked_.push_back({p.interval.count(c0 - o.look_back, ahead), id});
   }
   rank(plan.members);
   if (static_cast<int>(plan.members.size()) > o.prev_max) plan.members.resize(o.prev_max);
@@ -169,8 +170,8 @@ PlanOutcome GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& lev
   return outcome;
 }
 
-PlanOutcome GroupPlanner::plan_level3(PointId c, int k, const std::vector<RltPoint>& points,
-                                      RltPointCharting& charting, const PointSlamOptions& options) {
+PlanOutcome GroupPlanner::plan_level3(PointId c, int k, const std::vector<RltPoint>& points, RltPointCharting& charting,
+                                      const PointSlamOptions& options) {
   PlanOutcome outcome;
   const Level3Options& o = options.level3;
   const RltPoint& cp = points[c];
@@ -224,8 +225,8 @@ PlanOutcome GroupPlanner::plan_level3(PointId c, int k, const std::vector<RltPoi
   std::size_t a = static_cast<std::size_t>(o.prev_min), b = 0;
   std::vector<char> trial;
   while (a < known.size() || b < fresh.size()) {
-    const bool take_known =
-        b >= fresh.size() || (a < known.size() && points[known[a]].interval.count(s, e) >= points[fresh[b]].interval.count(s, e));
+    const bool take_known = b >= fresh.size() || (a < known.size() && points[known[a]].interval.count(s, e) >=
+                                                                          points[fresh[b]].interval.count(s, e));
     const PointId x = take_known ? known[a++] : fresh[b++];
     trial = usable;
     const int now = intersect(points[x], trial);

@@ -6,9 +6,7 @@
 #include <cmath>
 
 namespace relslam::point {
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 const Eigen::Vector3d* global_match_position(const RltPoint& p, bool match_unmapped) {
   if (p.dynamic || p.merged) return nullptr;  // movers and merged shells are never matched globally
@@ -19,10 +17,10 @@ const Eigen::Vector3d* global_match_position(const RltPoint& p, bool match_unmap
 
 PointMatcher::PointMatcher(const PointSlamOptions& options)
     : options_(options),
-      local_(spatial::make_local_index(options.local_index,
-                                       options.local_index == spatial::LocalIndexKind::Octree ? options.octree_cell_size
-                                                                                               : options.local_cell_size,
-                                       options.local_bound)) {}
+      local_(spatial::make_local_index(
+          options.local_index,
+          options.local_index == spatial::LocalIndexKind::Octree ? options.octree_cell_size : options.local_cell_size,
+          options.local_bound)) {}
 
 Rigid3 PointMatcher::predicted_motion(int from, int to) const {
   // Compose the stored steps from+1 .. to; a step without an estimate repeats the newest one
@@ -44,7 +42,8 @@ Rigid3 PointMatcher::predicted_motion(int from, int to) const {
   return total;
 }
 
-void PointMatcher::prepare(const std::vector<LocalCandidate>& candidates, int k, const std::optional<Rigid3>& odometry) {
+void PointMatcher::prepare(const std::vector<LocalCandidate>& candidates, int k,
+                           const std::optional<Rigid3>& odometry) {
   current_ = k;
   measured_step_ = odometry ? std::optional(odometry->inverse()) : std::nullopt;
   predicted_.clear();
@@ -112,8 +111,8 @@ std::optional<Rigid3> PointMatcher::robust_motion(const std::vector<Eigen::Vecto
 }
 
 const MatchResult& PointMatcher::match(const std::vector<Eigen::Vector3d>& observations, int k,
-                                       spatial::GlobalIndex& global,
-                                       const std::vector<RltPoint>& points, const Rigid3& world_T_previous) {
+                                       spatial::GlobalIndex& global, const std::vector<RltPoint>& points,
+                                       const Rigid3& world_T_previous) {
   // Local, untransformed (thesis 6.2.5): the candidates predicted by the recent motion.
   match_local(observations, options_.local_bound);
   result_.motion = predicted_motion(k - 1, k);

@@ -96,7 +96,11 @@ class BinningRun {
  public:
   // Step 1: every point in a bin of its own, every bin valid.
   BinningRun(int n, const std::function<double(int, int)>& pair_std, const BinningOptions& o)
-      : n_(n), pair_std_(pair_std), o_(o), bins_(n), valid_(static_cast<std::size_t>(n)),
+      : n_(n),
+        pair_std_(pair_std),
+        o_(o),
+        bins_(n),
+        valid_(static_cast<std::size_t>(n)),
         retired_(static_cast<std::size_t>(n), false) {
     std::iota(valid_.begin(), valid_.end(), 0);
     stop_ = valid_.size();
@@ -263,7 +267,7 @@ class BinningRun {
   BinningResult result_;
   Bins bins_;
   std::vector<int> valid_;
-  std::size_t stop_ = 0;  // only the first stop_ bins of valid_ initiate comparisons
+  std::size_t stop_ = 0;       // only the first stop_ bins of valid_ initiate comparisons
   std::vector<bool> retired_;  // compared with every other bin
   bool have_threshold_ = false;
   double threshold_ = 0;

@@ -33,7 +33,8 @@ bool RltGroup::accumulate(const std::vector<RltPoint>& points, int from, int to,
       all_present = scratch_[i] != nullptr;
     }
     if (!all_present) continue;  // thesis 6.3.3: only iterations with every member observed
-    const auto frame = basis_frame(scratch_[basis_[0]]->p, scratch_[basis_[1]]->p, scratch_[basis_[2]]->p, basis_epsilon);
+    const auto frame =
+        basis_frame(scratch_[basis_[0]]->p, scratch_[basis_[1]]->p, scratch_[basis_[2]]->p, basis_epsilon);
     if (!frame) continue;
     for (std::size_t i = 0; i < members_.size(); ++i) sum_[i] += (*frame)(scratch_[i]->p);
     ++used_;

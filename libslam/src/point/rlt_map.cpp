@@ -52,7 +52,8 @@ void RltMap::retire(RltGroup& group) {
 }
 
 void RltMap::mark_changed(PointId id) {
-  if (changed_at_.size() <= static_cast<std::size_t>(id)) changed_at_.resize(static_cast<std::size_t>(id) * 2 + 16, kNone);
+  if (changed_at_.size() <= static_cast<std::size_t>(id))
+    changed_at_.resize(static_cast<std::size_t>(id) * 2 + 16, kNone);
   if (changed_at_[id] == iteration) return;
   changed_at_[id] = iteration;
   changed_.push_back(id);

@@ -26,7 +26,8 @@ const PointSlamOptions& checked(const PointSlamOptions& options) {
 
 }  // namespace
 
-RltMapper::RltMapper(const PointSlamOptions& options) : options_(checked(options)), map_(options_), matcher_(options_) {}
+RltMapper::RltMapper(const PointSlamOptions& options)
+    : options_(checked(options)), map_(options_), matcher_(options_) {}
 
 RltMapper::RltMapper(RltMapper&&) noexcept = default;
 RltMapper::~RltMapper() = default;
@@ -34,9 +35,11 @@ RltMapper::~RltMapper() = default;
 StepResult RltMapper::step(const ObservationFrame& frame) {
   const int k = frame.iteration;
   if (map_.iteration != kNone && k <= map_.iteration)
-    throw std::logic_error("RltMapper::step: iteration " + std::to_string(k) + " after " + std::to_string(map_.iteration));
+    throw std::logic_error("RltMapper::step: iteration " + std::to_string(k) + " after " +
+                           std::to_string(map_.iteration));
   for (const Eigen::Vector3d& p : frame.points)
-    if (!p.allFinite()) throw std::logic_error("RltMapper::step: non-finite observation at iteration " + std::to_string(k));
+    if (!p.allFinite())
+      throw std::logic_error("RltMapper::step: non-finite observation at iteration " + std::to_string(k));
   if (map_.first_iteration == kNone) map_.first_iteration = k;
   map_.iteration = k;
 
@@ -127,7 +130,8 @@ void RltMapper::record(PointId id, const Eigen::Vector3d& p, int k, bool returne
   // A point starting a visible run while still ungrouped at a level waits in that level's list,
   // its run's start standing in for the creation iteration. New points always enter both.
   if (returned && !point.dynamic) {
-    if (options_.temporary_group.enabled && !point.temporary_grouped && !point.final_grouped) map_.temporary_list.push(id, k);
+    if (options_.temporary_group.enabled && !point.temporary_grouped && !point.final_grouped)
+      map_.temporary_list.push(id, k);
     if (options_.final_group.enabled && !point.final_grouped) map_.final_list.push(id, k);
   }
   // Notify its groups (thesis 6.3.3): each is computed once this iteration.
@@ -152,11 +156,13 @@ void RltMapper::compute_groups(int k) {
 void RltMapper::check_map_frame() {
   // Every point of the first iteration has had its chance to root the map and none could: the
   // map frame (the first observations, thesis 6.3.3) can never be fixed.
-  const RltUngroupedList& lowest = map_.list(options_.temporary_group.enabled ? GroupLevel::Temporary : GroupLevel::Final);
+  const RltUngroupedList& lowest =
+      map_.list(options_.temporary_group.enabled ? GroupLevel::Temporary : GroupLevel::Final);
   const bool first_iteration_tried = lowest.empty() || lowest.front().start > map_.first_iteration;
   if (!map_.any_mapped && failure_.empty() && first_iteration_tried && !options_.provisional_root)
-    failure_ = "no group could be anchored to the first iteration's observations (the map frame): fewer than 3 points "
-               "were seen there often enough";
+    failure_ =
+        "no group could be anchored to the first iteration's observations (the map frame): fewer than 3 points "
+        "were seen there often enough";
 }
 
 void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {

@@ -7,7 +7,8 @@
 
 namespace relslam::spatial {
 
-IncrementalOVLPQuadTree::IncrementalOVLPQuadTree(double cell_size, double overlap) : cell_(cell_size), overlap_(overlap) {
+IncrementalOVLPQuadTree::IncrementalOVLPQuadTree(double cell_size, double overlap)
+    : cell_(cell_size), overlap_(overlap) {
   if (!(cell_size > 0) || !(overlap >= 0) || overlap > cell_size)
     throw std::logic_error("IncrementalOVLPQuadTree: need 0 <= overlap <= cell size, got overlap " +
                            std::to_string(overlap) + ", cell " + std::to_string(cell_size));
@@ -35,7 +36,8 @@ void IncrementalOVLPQuadTree::place(int id, const Eigen::Vector3d& p) {
   const Membership next = cells_of(p);
   Membership& current = members_[id];
   // A move within the same cells changes nothing: positions are read live by the caller.
-  if (current.count == next.count && std::equal(next.cells.begin(), next.cells.begin() + next.count, current.cells.begin()))
+  if (current.count == next.count &&
+      std::equal(next.cells.begin(), next.cells.begin() + next.count, current.cells.begin()))
     return;
   if (current.count > 0) remove(id);
   for (int i = 0; i < next.count; ++i) cells_[next.cells[i]].push_back(id);
@@ -63,8 +65,8 @@ bool IncrementalOVLPQuadTree::contains(int id) const {
 }
 
 std::span<const int> IncrementalOVLPQuadTree::query(const Eigen::Vector3d& q) {
-  const auto it = cells_.find(key(static_cast<std::int64_t>(std::floor(q.x() / cell_)),
-                                  static_cast<std::int64_t>(std::floor(q.z() / cell_))));
+  const auto it = cells_.find(
+      key(static_cast<std::int64_t>(std::floor(q.x() / cell_)), static_cast<std::int64_t>(std::floor(q.z() / cell_))));
   if (it == cells_.end()) return {};
   return it->second;
 }

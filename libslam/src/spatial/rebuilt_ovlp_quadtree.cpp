@@ -32,7 +32,9 @@ std::span<const int> RebuiltOVLPQuadTree::query(const Eigen::Vector3d& q) {
   return found_;
 }
 
-std::string_view to_string(GlobalIndexKind kind) { return kind == GlobalIndexKind::Incremental ? "incremental" : "rebuilt"; }
+std::string_view to_string(GlobalIndexKind kind) {
+  return kind == GlobalIndexKind::Incremental ? "incremental" : "rebuilt";
+}
 
 std::optional<GlobalIndexKind> parse_global_index(std::string_view name) {
   if (name == "incremental") return GlobalIndexKind::Incremental;

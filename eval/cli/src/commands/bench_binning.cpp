@@ -1,8 +1,8 @@
 #include "relslam/eval/cli/commands/bench_binning.hpp"
 
+#include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/binning_bench.hpp"
 #include "relslam/eval/io/run_folder.hpp"
-#include "relslam/eval/config/scenario_loading.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -12,14 +12,13 @@
 namespace relslam::eval {
 
 void add_bench_binning(CLI::App& app, BenchBinningArgs& args) {
-  add_scenario_command(
-      app, args, "bench-binning", "Run the synthetic RltBinning benchmark S-BIN (thesis Figs 111-116)",
-      "Bin synthetic points (static ones plus a share of uncorrelated movers, and Fig 114's mix of\n"
-      "correlated groups) and count the pairwise comparisons, for every grid cell of the scenario's\n"
-      "binning_bench keys, both pairing rules and with and without the priority heuristic. Writes\n"
-      "binning_bench.csv (one row per binning) and binning_bench_means.csv (means over seeds, with\n"
-      "the n-1, n ln n, n log2 n, 3n ln n and n^2/2 reference curves).",
-      "scenarios/s-bin.json");
+  add_scenario_command(app, args, "bench-binning", "Run the synthetic RltBinning benchmark S-BIN (thesis Figs 111-116)",
+                       "Bin synthetic points (static ones plus a share of uncorrelated movers, and Fig 114's mix of\n"
+                       "correlated groups) and count the pairwise comparisons, for every grid cell of the scenario's\n"
+                       "binning_bench keys, both pairing rules and with and without the priority heuristic. Writes\n"
+                       "binning_bench.csv (one row per binning) and binning_bench_means.csv (means over seeds, with\n"
+                       "the n-1, n ln n, n log2 n, 3n ln n and n^2/2 reference curves).",
+                       "scenarios/s-bin.json");
 }
 
 int run_bench_binning(const BenchBinningArgs& args, const std::vector<std::string>& command_line) {
@@ -43,7 +42,8 @@ int run_bench_binning(const BenchBinningArgs& args, const std::vector<std::strin
         auto& [sum, count] = cells[{r.percent, r.heuristic}];
         sum += r.comparisons, ++count;
       }
-    std::printf("comparisons at n = %d (every_bin pairing; n ln n = %.0f, n^2/2 = %d)\n", n, n * std::log(n), n * n / 2);
+    std::printf("comparisons at n = %d (every_bin pairing; n ln n = %.0f, n^2/2 = %d)\n", n, n * std::log(n),
+                n * n / 2);
     std::printf("%9s %14s %14s\n", "percent", "no heuristic", "heuristic");
     for (double p : scenario.binning_bench.percentages)
       std::printf("%8g%% %14.0f %14.0f\n", p, cells[{p, false}].first / cells[{p, false}].second,

@@ -25,12 +25,13 @@ int run_rawlog(const RawlogArgs& args) {
     points += f.measurements.size();
     min_points = std::min(min_points, f.measurements.size());
     max_points = std::max(max_points, f.measurements.size());
-    known += std::count_if(f.measurements.begin(), f.measurements.end(), [](const auto& m) { return m.landmark_id >= 0; });
+    known +=
+        std::count_if(f.measurements.begin(), f.measurements.end(), [](const auto& m) { return m.landmark_id >= 0; });
     odometry += f.odometry.has_value();
   }
   const char* format = log.format == Rawlog::Format::ObservationsOnly ? "observations only"
-                       : log.sensory_frame_first                    ? "actions/sensory frames, sensory frame first"
-                                                                    : "actions/sensory frames, action first";
+                       : log.sensory_frame_first                      ? "actions/sensory frames, sensory frame first"
+                                                                      : "actions/sensory frames, action first";
   std::printf("%s: %s\n", args.file.c_str(), format);
   std::printf("  %zu frames in %d records (%d other observations skipped)\n", log.frames.size(), log.records,
               log.skipped_observations);

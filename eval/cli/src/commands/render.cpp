@@ -1,9 +1,9 @@
 #include "relslam/eval/cli/commands/render.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/experiments/run_replay.hpp"
 #include "relslam/eval/io/map_render.hpp"
 #include "relslam/eval/io/progress.hpp"
-#include "relslam/eval/experiments/run_replay.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
@@ -22,9 +22,12 @@ RenderOptions render_options(const RenderArgs& args) {
   o.height = args.height;
   if (args.view != "top" && args.view != "side") throw InputError("", 0, "--view", "top or side, got " + args.view);
   o.view = args.view == "top" ? RenderView::Top : RenderView::Side;
-  if (args.labels == "on") o.labels = true;
-  else if (args.labels == "off") o.labels = false;
-  else if (args.labels != "auto") throw InputError("", 0, "--labels", "auto, on or off, got " + args.labels);
+  if (args.labels == "on")
+    o.labels = true;
+  else if (args.labels == "off")
+    o.labels = false;
+  else if (args.labels != "auto")
+    throw InputError("", 0, "--labels", "auto, on or off, got " + args.labels);
   return o;
 }
 
@@ -58,7 +61,8 @@ void warn_if_replay_differs(const RunReplay& replay, int k, bool quiet) {
 int render_video(const RenderArgs& args, RunReplay& replay, const RenderOptions& options, int last) {
   if (args.every < 1) throw InputError("", 0, "--every", "must be >= 1");
   if (args.fps < 1) throw InputError("", 0, "--fps", "must be >= 1");
-  cv::VideoWriter writer(args.video, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), args.fps, {options.width, options.height});
+  cv::VideoWriter writer(args.video, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), args.fps,
+                         {options.width, options.height});
   if (!writer.isOpened()) throw InputError(args.video, 0, "--video", "cannot open a video writer here (an .mp4 file?)");
   // One view for the whole video, fixed by the last frame, so the picture does not jump.
   std::optional<RenderFrame> frame;
@@ -74,14 +78,16 @@ int render_video(const RenderArgs& args, RunReplay& replay, const RenderOptions&
   bar.finish();
   writer.release();
   warn_if_replay_differs(replay, last - (last % args.every), args.quiet);
-  if (!args.quiet) std::printf("wrote %s: %d frames (iterations 0..%d every %d)\n", args.video.c_str(), frames, last, args.every);
+  if (!args.quiet)
+    std::printf("wrote %s: %d frames (iterations 0..%d every %d)\n", args.video.c_str(), frames, last, args.every);
   return 0;
 }
 
 }  // namespace
 
 void add_render(CLI::App& app, RenderArgs& args) {
-  CLI::App* cmd = app.add_subcommand("render", "Draw a simulated run at an iteration, or a video of it (thesis Figs 127-129, 153-162)");
+  CLI::App* cmd = app.add_subcommand(
+      "render", "Draw a simulated run at an iteration, or a video of it (thesis Figs 127-129, 153-162)");
   cmd->description(
       "Draw a run folder of relslam run at one iteration, like thesis Figures 127-129 and 153-162: the\n"
       "true points (grey; dynamic orange), the algorithm's map (green boxes; flagged dynamic points as\n"
@@ -95,7 +101,8 @@ void add_render(CLI::App& app, RenderArgs& args) {
       "  relslam render runs/dyn --algorithm ekf6d --iteration 900 --out ekf.png          # Figs 153-156\n"
       "  relslam render runs/f8 --video runs/f8/run.mp4 --every 20");
   cmd->add_option("run", args.run_dir, "Run folder (written by relslam run from a scenario)")->required();
-  cmd->add_option("--iteration,-k", args.iteration, "Iteration to draw (default: the last; with --video: the last frame)");
+  cmd->add_option("--iteration,-k", args.iteration,
+                  "Iteration to draw (default: the last; with --video: the last frame)");
   cmd->add_option("--out,-o", args.out, "Image to write (.png)");
   cmd->add_option("--video", args.video, "MP4 video of the run to write");
   cmd->add_option("--every", args.every, "Video: one frame every N iterations")->capture_default_str();
@@ -104,8 +111,11 @@ void add_render(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--width", args.width, "Picture width, pixels")->capture_default_str();
   cmd->add_option("--height", args.height, "Picture height, pixels")->capture_default_str();
   cmd->add_option("--view", args.view, "top (world z right, x up) or side (z right, y up)")->capture_default_str();
-  cmd->add_option("--fit", args.fit, "map (everything) or robot (around the true robot and its frustum)")->capture_default_str();
-  cmd->add_option("--center", args.center, "Picture centre U,V in world units (overrides --fit)")->delimiter(',')->expected(2);
+  cmd->add_option("--fit", args.fit, "map (everything) or robot (around the true robot and its frustum)")
+      ->capture_default_str();
+  cmd->add_option("--center", args.center, "Picture centre U,V in world units (overrides --fit)")
+      ->delimiter(',')
+      ->expected(2);
   cmd->add_option("--span", args.span, "World units across the picture's wider side (with --center)");
   cmd->add_option("--labels", args.labels, "Point and group labels: auto (when few points are in view), on, off")
       ->capture_default_str();
@@ -113,13 +123,15 @@ void add_render(CLI::App& app, RenderArgs& args) {
 }
 
 int run_render(const RenderArgs& args) {
-  if (args.out.empty() && args.video.empty()) throw InputError("", 0, "--out", "give --out IMAGE, --video MP4, or both");
+  if (args.out.empty() && args.video.empty())
+    throw InputError("", 0, "--out", "give --out IMAGE, --video MP4, or both");
   const RenderOptions options = render_options(args);
   RunReplay replay(args.run_dir, args.algorithm);
   const int last = args.iteration < 0 ? replay.iterations() - 1 : args.iteration;
   if (last >= replay.iterations())
-    throw InputError("", 0, "--iteration",
-                     "the run has iterations 0.." + std::to_string(replay.iterations() - 1) + ", got " + std::to_string(last));
+    throw InputError(
+        "", 0, "--iteration",
+        "the run has iterations 0.." + std::to_string(replay.iterations() - 1) + ", got " + std::to_string(last));
   if (!args.video.empty()) {
     render_video(args, replay, options, last);
     if (args.out.empty()) return 0;

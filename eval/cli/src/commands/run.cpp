@@ -1,9 +1,9 @@
 #include "relslam/eval/cli/commands/run.hpp"
 
-#include "relslam/eval/experiments/experiment.hpp"
 #include "relslam/eval/config/input_error.hpp"
-#include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/experiments/experiment.hpp"
+#include "relslam/eval/io/run_folder.hpp"
 
 #include <cstdio>
 
@@ -50,8 +50,11 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
   }
   nlohmann::json results = nlohmann::json::array();
   for (const SummaryRow& r : result.rows)
-    results.push_back({{"algorithm", r.algorithm}, {"status", r.status.text()}, {"final_mean_landmark_error", r.final_mean_landmark_error},
-                       {"final_position_error", r.final_position_error}, {"runtime_median_ms", r.runtime.median_ms}});
+    results.push_back({{"algorithm", r.algorithm},
+                       {"status", r.status.text()},
+                       {"final_mean_landmark_error", r.final_mean_landmark_error},
+                       {"final_position_error", r.final_position_error},
+                       {"runtime_median_ms", r.runtime.median_ms}});
   nlohmann::json extra = result.source;
   extra["results"] = results;
   extra["wall_time_s"] = result.seconds;

@@ -11,13 +11,12 @@
 namespace relslam::eval {
 
 void add_simulate(CLI::App& app, SimulateArgs& args) {
-  add_scenario_command(
-      app, args, "simulate", "Simulate a scenario and write ground truth and observations",
-      "Simulate a scenario: the robot follows its path, sees the noisy landmarks inside its frustum,\n"
-      "and everything is written to one run folder: ground_truth_path.tum (evo reads it),\n"
-      "ground_truth_landmarks.csv, sim_iterations.csv, observations.csv, observations.rawlog (MRPT)\n"
-      "and manifest.json. The same scenario and seed always give the same bytes.",
-      "scenarios/s-f8.json");
+  add_scenario_command(app, args, "simulate", "Simulate a scenario and write ground truth and observations",
+                       "Simulate a scenario: the robot follows its path, sees the noisy landmarks inside its frustum,\n"
+                       "and everything is written to one run folder: ground_truth_path.tum (evo reads it),\n"
+                       "ground_truth_landmarks.csv, sim_iterations.csv, observations.csv, observations.rawlog (MRPT)\n"
+                       "and manifest.json. The same scenario and seed always give the same bytes.",
+                       "scenarios/s-f8.json");
 }
 
 int run_simulate(const SimulateArgs& args, const std::vector<std::string>& command_line) {
@@ -30,16 +29,21 @@ int run_simulate(const SimulateArgs& args, const std::vector<std::string>& comma
 
   const auto start = std::chrono::steady_clock::now();
   Progress progress("simulate " + scenario.name, source.frames(), !args.quiet);
-  source.stream([&](const ObservationFrame& observation, const TruthFrame&) { progress.update(observation.iteration + 1); });
+  source.stream(
+      [&](const ObservationFrame& observation, const TruthFrame&) { progress.update(observation.iteration + 1); });
   const SimulationSummary& summary = source.summary();
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const nlohmann::json summary_json = {
-      {"iterations", summary.iterations},      {"landmarks", summary.landmarks},
-      {"dynamic_landmarks", summary.dynamic_landmarks}, {"detections", summary.detections},
-      {"visible_mean", summary.visible_mean},  {"visible_min", summary.visible_min},
-      {"visible_max", summary.visible_max},    {"distance_travelled", summary.distance_travelled},
+      {"iterations", summary.iterations},
+      {"landmarks", summary.landmarks},
+      {"dynamic_landmarks", summary.dynamic_landmarks},
+      {"detections", summary.detections},
+      {"visible_mean", summary.visible_mean},
+      {"visible_min", summary.visible_min},
+      {"visible_max", summary.visible_max},
+      {"distance_travelled", summary.distance_travelled},
       {"wall_time_s", seconds},
   };
   write_manifest(args.out, scenario, {"simulate", command_line, args.scenario, args.set},

@@ -1,11 +1,11 @@
 #include "relslam/eval/cli/commands/sweep.hpp"
 
-#include "relslam/eval/experiments/batch.hpp"
-#include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/config/input_error.hpp"
-#include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/config/scenario_keys.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/experiments/batch.hpp"
+#include "relslam/eval/io/csv_writer.hpp"
+#include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/metrics/seed_statistics.hpp"
 
 #include <cstdio>
@@ -132,7 +132,8 @@ std::vector<Cell> cells_of(const std::vector<BatchResult>& results) {
   return out;
 }
 
-void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxis>& axes, const std::vector<Cell>& cells) {
+void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
+                     const std::vector<Cell>& cells) {
   std::vector<std::string> columns = axis_names(axes);
   columns.insert(columns.end(), {"algorithm", "runs", "ok"});
   for (const Metric& m : kMetrics)
@@ -166,8 +167,9 @@ void print_cells(const std::vector<GridAxis>& axes, const std::vector<Cell>& cel
       ms.push_back(s->runtime.median_ms);
     }
     const SeedStatistics a = seed_statistics(lm), b = seed_statistics(pos), c = seed_statistics(ms);
-    std::printf("%-40s %-22s %2zu/%-2d %11.4g ± %-8.2g %11.4g ± %-8.2g %12.4g\n", name.empty() ? "(scenario)" : name.c_str(),
-                cell.algorithm.c_str(), cell.ok.size(), cell.runs, a.mean, a.ci95, b.mean, b.ci95, c.mean);
+    std::printf("%-40s %-22s %2zu/%-2d %11.4g ± %-8.2g %11.4g ± %-8.2g %12.4g\n",
+                name.empty() ? "(scenario)" : name.c_str(), cell.algorithm.c_str(), cell.ok.size(), cell.runs, a.mean,
+                a.ci95, b.mean, b.ci95, c.mean);
   }
 }
 
@@ -205,7 +207,8 @@ int run_sweep(const SweepArgs& args, const std::vector<std::string>& command_lin
     std::printf("sweep %s: %zu combinations x %d seeds = %zu runs, %d at a time\n", loaded.scenario.name.c_str(),
                 jobs.size() / seeds.size(), args.seeds, jobs.size(), args.jobs);
 
-  const std::vector<BatchResult> results = run_batch(args.scenario, args.set, jobs, args.jobs, !args.quiet, command_line);
+  const std::vector<BatchResult> results =
+      run_batch(args.scenario, args.set, jobs, args.jobs, !args.quiet, command_line);
   write_runs_table(args.out, axes, results);
   const std::vector<Cell> cells = cells_of(results);
   write_aggregate(args.out, axes, cells);
@@ -213,7 +216,8 @@ int run_sweep(const SweepArgs& args, const std::vector<std::string>& command_lin
     print_cells(axes, cells);
     for (const BatchResult& r : results)
       if (!r.error.empty()) std::printf("run %s failed: %s\n", r.job.folder.c_str(), r.error.c_str());
-    std::printf("wrote %s: sweep.csv (%zu runs), aggregate.csv (%zu cells)\n", args.out.c_str(), results.size(), cells.size());
+    std::printf("wrote %s: sweep.csv (%zu runs), aggregate.csv (%zu cells)\n", args.out.c_str(), results.size(),
+                cells.size());
   }
   return 0;
 }

@@ -1,10 +1,10 @@
 #include "relslam/eval/cli/commands/tune_ekf.hpp"
 
+#include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/batch.hpp"
 #include "relslam/eval/io/csv_writer.hpp"
-#include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/io/run_folder.hpp"
-#include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/io/text_output.hpp"
 
 #include <algorithm>
@@ -67,11 +67,17 @@ void write_table(const std::filesystem::path& file, const std::vector<Trial>& tr
   for (std::size_t i = 0; i < trials.size(); ++i) {
     const Trial& t = trials[i];
     const auto& l = t.result->job.labels;
-    const std::string status = !t.result->error.empty() ? "error: " + t.result->error : t.ekf ? t.ekf->status.text() : "no ekf6d row";
+    const std::string status = !t.result->error.empty() ? "error: " + t.result->error
+                               : t.ekf                  ? t.ekf->status.text()
+                                                        : "no ekf6d row";
     std::vector<std::optional<double>> numbers(6);
     if (t.ekf)
-      numbers = {static_cast<double>(t.ekf->iterations), t.ekf->mean_landmark_error, t.ekf->final_mean_landmark_error,
-                 t.ekf->final_position_error, static_cast<double>(t.ekf->landmarks_on_map), t.ekf->runtime.median_ms};
+      numbers = {static_cast<double>(t.ekf->iterations),
+                 t.ekf->mean_landmark_error,
+                 t.ekf->final_mean_landmark_error,
+                 t.ekf->final_position_error,
+                 static_cast<double>(t.ekf->landmarks_on_map),
+                 t.ekf->runtime.median_ms};
     table.row_fields({std::to_string(i + 1), l[0], l[1], l[2], status}, numbers);
   }
   table.close();
@@ -101,18 +107,25 @@ void add_tune_ekf(CLI::App& app, TuneEkfArgs& args) {
       "Writes tune.csv (every trial, best first, ranked by the landmark error averaged over the run),\n"
       "best.json (the ekf6d section to put in the scenario files) and manifest.json.",
       "scenarios/s-ekf-f8.json");
-  cmd->add_option("--std-range", args.std_range, "Range std. deviations to try, units")->capture_default_str()->delimiter(',');
+  cmd->add_option("--std-range", args.std_range, "Range std. deviations to try, units")
+      ->capture_default_str()
+      ->delimiter(',');
   cmd->add_option("--std-angle-deg", args.std_angle_deg, "Yaw = pitch std. deviations to try, degrees")
       ->capture_default_str()
       ->delimiter(',');
-  cmd->add_option("--q-scale", args.q_scale, "Factors on the motion noise (0.35 x3, 0.005 x4)")->capture_default_str()->delimiter(',');
-  cmd->add_option("--iterations", args.iterations, "Iterations per trial")->capture_default_str()->check(CLI::Range(10, 1000000));
+  cmd->add_option("--q-scale", args.q_scale, "Factors on the motion noise (0.35 x3, 0.005 x4)")
+      ->capture_default_str()
+      ->delimiter(',');
+  cmd->add_option("--iterations", args.iterations, "Iterations per trial")
+      ->capture_default_str()
+      ->check(CLI::Range(10, 1000000));
   cmd->add_option("--seed-offset", args.seed_offset, "Tuning seed = scenario seed + this")->capture_default_str();
   cmd->add_option("--jobs,-j", args.jobs, "Trials at a time")->capture_default_str()->check(CLI::Range(1, 256));
 }
 
 int run_tune_ekf(const TuneEkfArgs& args, const std::vector<std::string>& command_line) {
-  for (const auto& [name, values] : {std::pair{"--std-range", &args.std_range}, {"--std-angle-deg", &args.std_angle_deg},
+  for (const auto& [name, values] : {std::pair{"--std-range", &args.std_range},
+                                     {"--std-angle-deg", &args.std_angle_deg},
                                      {"--q-scale", &args.q_scale}})
     for (double v : *values)
       if (!(v > 0) || !std::isfinite(v)) throw InputError(name, 0, text_of(v), "values must be positive numbers");
@@ -133,29 +146,32 @@ int run_tune_ekf(const TuneEkfArgs& args, const std::vector<std::string>& comman
   const std::vector<BatchResult> results = run_batch(args.scenario, base, jobs, args.jobs, !args.quiet, command_line);
   const std::vector<Trial> trials = ranked(results);
   write_table(std::filesystem::path(args.out) / "tune.csv", trials);
-  nlohmann::json tuning = {{"criterion", "mean_landmark_error of ekf6d, averaged over the iterations"},
-                           {"seed", seed},
-                           {"iterations", args.iterations},
-                           {"grid", {{"std_range", args.std_range}, {"std_angle_deg", args.std_angle_deg}, {"q_scale", args.q_scale}}},
-                           {"trials", jobs.size()}};
+  nlohmann::json tuning = {
+      {"criterion", "mean_landmark_error of ekf6d, averaged over the iterations"},
+      {"seed", seed},
+      {"iterations", args.iterations},
+      {"grid", {{"std_range", args.std_range}, {"std_angle_deg", args.std_angle_deg}, {"q_scale", args.q_scale}}},
+      {"trials", jobs.size()}};
   const bool found = !trials.empty() && trials.front().ok();
   if (found) {
-    tuning["best"] = {{"ekf6d", best_section(trials.front())}, {"mean_landmark_error", trials.front().score()},
+    tuning["best"] = {{"ekf6d", best_section(trials.front())},
+                      {"mean_landmark_error", trials.front().score()},
                       {"labels", trials.front().result->job.labels}};
     std::ofstream(std::filesystem::path(args.out) / "best.json") << tuning["best"].dump(2) << '\n';
   }
   write_manifest(args.out, loaded.scenario, {"tune-ekf", command_line, args.scenario, args.set}, {{"tuning", tuning}});
   if (!found) throw std::runtime_error("no trial of the EKF succeeded; see " + args.out + "/tune.csv");
   if (!args.quiet) {
-    std::printf("%4s %10s %14s %8s %14s %10s\n", "rank", "std_range", "std_angle_deg", "q_scale", "mean lm err", "median ms");
+    std::printf("%4s %10s %14s %8s %14s %10s\n", "rank", "std_range", "std_angle_deg", "q_scale", "mean lm err",
+                "median ms");
     for (std::size_t i = 0; i < std::min<std::size_t>(trials.size(), 8); ++i) {
       const Trial& t = trials[i];
       const auto& l = t.result->job.labels;
       std::printf("%4zu %10s %14s %8s %14.4g %10.4g\n", i + 1, l[0].c_str(), l[1].c_str(), l[2].c_str(), t.score(),
                   t.ekf ? t.ekf->runtime.median_ms : 0.0);
     }
-    std::printf("best: \"ekf6d\": %s\nwrote %s (tune.csv, best.json, trials/)\n", best_section(trials.front()).dump().c_str(),
-                args.out.c_str());
+    std::printf("best: \"ekf6d\": %s\nwrote %s (tune.csv, best.json, trials/)\n",
+                best_section(trials.front()).dump().c_str(), args.out.c_str());
   }
   return 0;
 }

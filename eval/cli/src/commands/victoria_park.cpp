@@ -1,12 +1,12 @@
 #include "relslam/eval/cli/commands/victoria_park.hpp"
 
-#include "relslam/eval/sources/victoria_park_source.hpp"
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/experiments/victoria_park_experiment.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
 #include "relslam/eval/io/rawlog.hpp"
 #include "relslam/eval/io/run_folder.hpp"
-#include "relslam/eval/config/scenario_loading.hpp"
-#include "relslam/eval/experiments/victoria_park_experiment.hpp"
+#include "relslam/eval/sources/victoria_park_source.hpp"
 
 #include <cstdio>
 
@@ -38,7 +38,8 @@ void add_victoria_park(CLI::App& app, VictoriaParkArgs& args) {
       "scans with fewer by dead reckoning (beyond the thesis).",
       "scenarios/victoria-park.json");
   cmd->get_option("scenario")->required(false)->capture_default_str();
-  cmd->add_option("--data", args.data, "Data folder (default $RELSLAM_VICTORIA_PARK, else ../shared/datasets/victoria_park)");
+  cmd->add_option("--data", args.data,
+                  "Data folder (default $RELSLAM_VICTORIA_PARK, else ../shared/datasets/victoria_park)");
   cmd->add_option("--window,-w", args.window, "Scans FIRST:LAST (1-based, of 7249) or all (default: the scenario's)");
   cmd->add_flag("--bridge", args.bridge, "Relative Point: bridge scans with fewer than 3 trees by dead reckoning");
 }
@@ -72,7 +73,8 @@ void add_convert(CLI::App& app, ConvertVictoriaParkArgs& args) {
       "laser's pose) and a sensory frame with one CObservationBearingRange (range, yaw = bearing - pi/2,\n"
       "ids -1). MRPT's rawlog-edit and kf-slam replay it; relslam run --rawlog reads it back.");
   vp->add_option("--out,-o", args.out, "Rawlog to write")->required();
-  vp->add_option("--data", args.data, "Data folder (default $RELSLAM_VICTORIA_PARK, else ../shared/datasets/victoria_park)");
+  vp->add_option("--data", args.data,
+                 "Data folder (default $RELSLAM_VICTORIA_PARK, else ../shared/datasets/victoria_park)");
   vp->add_option("--window,-w", args.window, "Scans FIRST:LAST (1-based) or all")->capture_default_str();
   vp->add_option("--scenario", args.scenario, "Scenario whose victoria_park filter and ekf2d sensor model apply")
       ->capture_default_str();
@@ -89,7 +91,9 @@ int run_convert_victoria_park(const ConvertVictoriaParkArgs& args) {
   for (std::size_t i = 0; i < scans.size(); ++i)
     writer.write(stream.frame(scans, i), {}, kSimulationEpoch_s + scans[i].time);
   writer.close();
-  if (!args.quiet) std::printf("wrote %s: %zu scans (%d to %d)\n", args.out.c_str(), scans.size(), scans.front().index, scans.back().index);
+  if (!args.quiet)
+    std::printf("wrote %s: %zu scans (%d to %d)\n", args.out.c_str(), scans.size(), scans.front().index,
+                scans.back().index);
   return 0;
 }
 

@@ -58,7 +58,8 @@ constexpr Bound at_most(double maximum, const char* sibling = nullptr) {
 struct Length {
   std::size_t count;
   const char* names;
-  void operator()(std::vector<OptionIssue>& issues, const std::string& field, const std::ranges::sized_range auto& values) const {
+  void operator()(std::vector<OptionIssue>& issues, const std::string& field,
+                  const std::ranges::sized_range auto& values) const {
     if (std::ranges::size(values) != count)
       issues.push_back({field, "needs " + std::to_string(count) + " values (" + names + "), got " +
                                    std::to_string(std::ranges::size(values))});

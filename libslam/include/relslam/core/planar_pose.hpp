@@ -36,7 +36,9 @@ struct PlanarPose {
   // T⁻¹ = (−Rot(−ψ) t, −ψ).
   PlanarPose inverse() const { return {-(planar_rotation(-heading) * translation), wrap_angle(-heading)}; }
   // Maps p_a back into frame b without forming the inverse.
-  Eigen::Vector2d inverse_apply(const Eigen::Vector2d& p_a) const { return planar_rotation(-heading) * (p_a - translation); }
+  Eigen::Vector2d inverse_apply(const Eigen::Vector2d& p_a) const {
+    return planar_rotation(-heading) * (p_a - translation);
+  }
 };
 
 // The planar pose as a 3-D rigid motion at height y (x, y, z with y up): the turn by ψ from +x

@@ -18,7 +18,7 @@ namespace relslam {
 // along +x with its normal along +z, `a` is the left end (key point 1) and `b` the right end
 // (key point 2) (thesis Rule 14).
 struct PlaneObject {
-  Eigen::Vector2d a = Eigen::Vector2d::Zero();  // key point 1, (x, z)
+  Eigen::Vector2d a = Eigen::Vector2d::Zero();   // key point 1, (x, z)
   Eigen::Vector2d b = Eigen::Vector2d::UnitX();  // key point 2, (x, z)
   double y_lo = 0.0;                             // height range; the walls' height is static [T]
   double y_hi = 2.5;
@@ -54,7 +54,7 @@ struct PlaneFrame {
 
 // What the simulator knows of one observed plane, for scoring only.
 struct PlaneTruth {
-  int wall_id = -1;          // the true wall (-1 unknown)
+  int wall_id = -1;           // the true wall (-1 unknown)
   bool a_is_wall_end = true;  // key point 1 is the wall's real end (false: cut by the frustum)
   bool b_is_wall_end = true;  // key point 2 likewise
 };

@@ -28,9 +28,7 @@ struct Rigid3 {
     return {rt, -(rt * translation)};
   }
   // Maps p_a back into frame b without forming the inverse.
-  Eigen::Vector3d inverse_apply(const Eigen::Vector3d& p_a) const {
-    return rotation.transpose() * (p_a - translation);
-  }
+  Eigen::Vector3d inverse_apply(const Eigen::Vector3d& p_a) const { return rotation.transpose() * (p_a - translation); }
   Eigen::Quaterniond quaternion() const;
 };
 

@@ -19,7 +19,9 @@ struct RltInterval {
     return {std::min(start, other.start), std::max(end, other.end)};
   }
   // Shrink (the thesis's "and"): the iterations in both.
-  RltInterval shrink(const RltInterval& other) const { return {std::max(start, other.start), std::min(end, other.end)}; }
+  RltInterval shrink(const RltInterval& other) const {
+    return {std::max(start, other.start), std::min(end, other.end)};
+  }
 };
 
 }  // namespace relslam::plane

@@ -19,10 +19,10 @@ namespace relslam::plane {
 // One global-map entry per RltPlane (spec §5.8).
 struct MapPlane {
   bool mapped = false;
-  PlaneObject plane;            // world frame, at `length`; plane.iteration is meaningless
-  PlanarPose world_T_plane;     // the reference point and direction (plane.pose())
+  PlaneObject plane;         // world frame, at `length`; plane.iteration is meaningless
+  PlanarPose world_T_plane;  // the reference point and direction (plane.pose())
   double length = 0;
-  XPointId source = kNone;      // the group that placed it
+  XPointId source = kNone;  // the group that placed it
   KeyPoint key_point = KeyPoint::None;
 };
 
@@ -54,8 +54,7 @@ class RltMapBuilder {
   // seen from world_T_start, say (Rule 4; `anchor` false leaves it at the identity); every
   // other group where its linking planes' two memberships agree, averaged (Rule 8).
   void build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
-                 const std::vector<RltPlane>& planes, const PlanarPose& world_T_start, bool anchor,
-                 double same_length);
+                 const std::vector<RltPlane>& planes, const PlanarPose& world_T_start, bool anchor, double same_length);
 
   // GetPoset (Rule 5): the mean of CalculateOffset over the observations whose RltPlane is on
   // the map at the same size; recomputed from scratch each iteration, never carried forward.

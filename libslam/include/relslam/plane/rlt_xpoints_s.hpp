@@ -34,7 +34,7 @@ struct RelativePlaneStep {
   int iteration = 0;
   PlanarPose world_T_robot;  // meaningful only when pose_valid
   bool pose_valid = false;
-  int pose_planes = 0;                 // observations the pose came from
+  int pose_planes = 0;                  // observations the pose came from
   std::span<const PlaneId> assignment;  // the RltPlane of each observation, in input order
   std::span<const MapPlane> map;        // one entry per RltPlane (MapPlane::mapped says if placed)
   std::span<const RltXPoint> groups;

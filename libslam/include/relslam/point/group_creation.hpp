@@ -14,9 +14,9 @@ namespace relslam::point {
 // What one iteration's group creation did, for StepResult.
 struct CreationReport {
   int groups_created = 0;
-  int dynamic_flagged = 0;      // points RltBinning flagged
+  int dynamic_flagged = 0;  // points RltBinning flagged
   int binning_comparisons = 0;
-  double binning_ms = 0;        // wall time of RltBinning (thesis Fig 117)
+  double binning_ms = 0;  // wall time of RltBinning (thesis Fig 117)
 };
 
 // Carries across iterations what group creation waits on: the level-3 candidates and the

@@ -45,8 +45,8 @@ class GroupPlanner {
   PlanOutcome plan(PointId c, int c0, int k, const LevelContext& level, const std::vector<RltPoint>& points,
                    RltPointCharting& charting, const PointSlamOptions& options);
   // Level 3 (spec 5.12) for point c, out of view at iteration k.
-  PlanOutcome plan_level3(PointId c, int k, const std::vector<RltPoint>& points,
-                          RltPointCharting& charting, const PointSlamOptions& options);
+  PlanOutcome plan_level3(PointId c, int k, const std::vector<RltPoint>& points, RltPointCharting& charting,
+                          const PointSlamOptions& options);
 
  private:
   bool previously_mapped(const RltPoint& p, const LevelContext& level, int c0) const;

@@ -55,13 +55,25 @@ void describe(OptionsOf<GroupLevelOptions> auto& l, auto& f, std::string_view wh
 // Temporary level: a short look-ahead so new points are mapped within a few iterations
 // (thesis 6.5.5 "a few iterations"); too short a window to bin [C values, spec A11, I].
 inline GroupLevelOptions temporary_level_defaults() {
-  return {.enabled = true, .look_ahead = 10, .look_back = 10, .accuracy_reduction = 2, .prev_min = 6, .prev_max = 20,
-          .next_min = 1, .binning = false};
+  return {.enabled = true,
+          .look_ahead = 10,
+          .look_back = 10,
+          .accuracy_reduction = 2,
+          .prev_min = 6,
+          .prev_max = 20,
+          .next_min = 1,
+          .binning = false};
 }
 // Final level: the thesis's constants, with NextGroupMin at its best value 1, binned [T].
 inline GroupLevelOptions final_level_defaults() {
-  return {.enabled = true, .look_ahead = 60, .look_back = 60, .accuracy_reduction = 10, .prev_min = 20, .prev_max = 20,
-          .next_min = 1, .binning = true};
+  return {.enabled = true,
+          .look_ahead = 60,
+          .look_back = 60,
+          .accuracy_reduction = 10,
+          .prev_min = 20,
+          .prev_max = 20,
+          .next_min = 1,
+          .binning = true};
 }
 
 // Level 3 (thesis 6.5.5, spec 5.12): a constant-free level. When a point has gone out of view,
@@ -74,8 +86,8 @@ struct Level3Options {
   // A point unseen for more than `gap` iterations is out of view; a visible run may have gaps
   // of up to this many iterations [C, spec 5.12].
   int gap = 3;
-  int prev_min = 3;      // registering members (three fix a rigid motion) [T outline]
-  bool binning = true;   // RltBinning removes dynamic members
+  int prev_min = 3;     // registering members (three fix a rigid motion) [T outline]
+  bool binning = true;  // RltBinning removes dynamic members
 };
 
 // The keys of level 3 (relative_point.level3.*).

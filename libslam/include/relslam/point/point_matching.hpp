@@ -45,9 +45,8 @@ class PointMatcher {
   void prepare(const std::vector<LocalCandidate>& candidates, int k, const std::optional<Rigid3>& odometry = {});
   // Stage 2 ("load"): local matches, then global ones through world_T_previous composed with
   // the motion found locally.
-  const MatchResult& match(const std::vector<Eigen::Vector3d>& observations, int k,
-                           spatial::GlobalIndex& global, const std::vector<RltPoint>& points,
-                           const Rigid3& world_T_previous);
+  const MatchResult& match(const std::vector<Eigen::Vector3d>& observations, int k, spatial::GlobalIndex& global,
+                           const std::vector<RltPoint>& points, const Rigid3& world_T_previous);
 
  private:
   struct Pair {
@@ -63,11 +62,11 @@ class PointMatcher {
 
   PointSlamOptions options_;
   std::unique_ptr<spatial::LocalIndex> local_;
-  std::vector<spatial::IndexedPoint> predicted_;    // candidates moved into the current frame
-  std::vector<int> slot_;                           // per point id: its index in predicted_
-  std::deque<std::pair<int, Rigid3>> motions_;      // (k, robot_k_T_robot_{k-1}), recent first
-  std::optional<Rigid3> measured_step_;             // this frame's odometry as robot_k_T_robot_{k-1}
-  int current_ = 0;                                 // the iteration being matched
+  std::vector<spatial::IndexedPoint> predicted_;  // candidates moved into the current frame
+  std::vector<int> slot_;                         // per point id: its index in predicted_
+  std::deque<std::pair<int, Rigid3>> motions_;    // (k, robot_k_T_robot_{k-1}), recent first
+  std::optional<Rigid3> measured_step_;           // this frame's odometry as robot_k_T_robot_{k-1}
+  int current_ = 0;                               // the iteration being matched
   MatchResult result_;
   std::vector<Pair> pairs_;
   std::vector<unsigned> taken_;  // per point: the stamp of the iteration that took it

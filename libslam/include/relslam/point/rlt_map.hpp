@@ -15,14 +15,14 @@
 namespace relslam::point {
 
 struct GroupStats {
-  int created = 0;          // every group ever built
+  int created = 0;  // every group ever built
   int alive = 0;
   int temporary_alive = 0;
   long long alive_members = 0;  // members of the alive groups, summed (thesis Fig 123: group size)
   int final_created = 0;
   int level3_created = 0;
-  int dynamic_points = 0;   // flagged so far
-  int merged_points = 0;    // merged so far
+  int dynamic_points = 0;  // flagged so far
+  int merged_points = 0;   // merged so far
 };
 
 // RltMapper's steps, group creation (group_creation.hpp) and RltPoint merging

@@ -19,11 +19,11 @@
 namespace relslam::point {
 
 enum class PoseSource : unsigned char {
-  Start,          // the first iteration: the identity by definition (the map frame)
-  MappedPoints,   // RltICP of this iteration's observations to their map positions (thesis 6.1)
-  UnmappedPoints, // fewer than 3 mapped points visible: registered to provisional positions
-  Held,           // no registration possible: the previous pose is kept
-  Odometry,       // no registration possible: the previous pose moved by the frame's odometry
+  Start,           // the first iteration: the identity by definition (the map frame)
+  MappedPoints,    // RltICP of this iteration's observations to their map positions (thesis 6.1)
+  UnmappedPoints,  // fewer than 3 mapped points visible: registered to provisional positions
+  Held,            // no registration possible: the previous pose is kept
+  Odometry,        // no registration possible: the previous pose moved by the frame's odometry
 };
 
 // Wall time of the thesis's components (Figs 138–142), milliseconds.

@@ -16,7 +16,9 @@ class RebuiltOVLPQuadTree final : public GlobalIndex {
 
   void place(int id, const Eigen::Vector3d& p) override;
   void remove(int id) override;
-  bool contains(int id) const override { return id >= 0 && static_cast<std::size_t>(id) < slot_.size() && slot_[id] >= 0; }
+  bool contains(int id) const override {
+    return id >= 0 && static_cast<std::size_t>(id) < slot_.size() && slot_[id] >= 0;
+  }
   void prepare() override { grid_.build(points_); }  // the O(map) reload of every iteration
   std::span<const int> query(const Eigen::Vector3d& q) override;
   std::size_t size() const override { return points_.size(); }

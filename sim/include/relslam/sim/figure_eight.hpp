@@ -25,9 +25,9 @@ class FigureEight final : public Centerline {
  private:
   double length_;
   double incline_height_;
-  double radius_;      // r = length / (2(π + 2φ) + 4√3) with φ = 30°
-  double straight_;    // tangent segment length √3·r
-  double arc_;         // arc length r(π + 2φ)
+  double radius_;    // r = length / (2(π + 2φ) + 4√3) with φ = 30°
+  double straight_;  // tangent segment length √3·r
+  double arc_;       // arc length r(π + 2φ)
 };
 
 }  // namespace relslam::sim

@@ -23,8 +23,8 @@ std::optional<FarCap> parse_far_cap(std::string_view name);
 // (+x left, +y up, +z forward). Culling is applied to the *noisy* points (spec 2.2): with a
 // symmetric height band this reproduces the thesis's unbiased vertical behaviour (6.6.1).
 struct Frustum {
-  double near = 1.0;    // units; closer points are not seen [C]
-  double far = 100.0;   // units; forward limit [C], gives ~0.97·density visible points
+  double near = 1.0;   // units; closer points are not seen [C]
+  double far = 100.0;  // units; forward limit [C], gives ~0.97·density visible points
   // Half the horizontal field of view; 45° gives the 90° view of the spec [C].
   double half_angle_rad = std::numbers::pi / 4.0;
   // Vertical half-extent |y| <= half_height; equal to the band's half height so culling
@@ -67,7 +67,8 @@ void describe(OptionsOf<Frustum> auto& f, auto& fields) {
   fields.field("far", f.far, "farthest visible depth, units", above(f.near, "near"));
   fields.degrees("half_angle_deg", f.half_angle_rad, "half the horizontal field of view", above(0.0), at_most(89.0));
   fields.field("half_height", f.half_height, "visible height band |y| <= this, units", above(0.0));
-  fields.choice("far_cap", f.far_cap, "far end: flat plane z <= far, or range |p| <= far", {FarCap::Plane, FarCap::Range});
+  fields.choice("far_cap", f.far_cap, "far end: flat plane z <= far, or range |p| <= far",
+                {FarCap::Plane, FarCap::Range});
 }
 
 }  // namespace relslam::sim

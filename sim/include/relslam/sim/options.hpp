@@ -71,8 +71,8 @@ struct SimOptions {
   // Noise grows with range: sigma(r) = noise_sigma·(1 + r/far). Off in every thesis run [C].
   bool range_noise = false;
 
-  double loop_length = 1145.0;    // units per figure-eight loop at scale 1 [T "about 1145"]
-  int iterations_per_loop = 3800; // at scale 1 [T "about 3800"]; fixes the step length
+  double loop_length = 1145.0;     // units per figure-eight loop at scale 1 [T "about 1145"]
+  int iterations_per_loop = 3800;  // at scale 1 [T "about 3800"]; fixes the step length
   // Height gained between the start and the crossing: the robot passes above its start after
   // the first lobe, so it cannot close the loop early [T shape, C value]. Must exceed twice
   // band_half_height so the two passes see disjoint points.
@@ -96,10 +96,13 @@ inline constexpr long long kMaxLandmarks = 20'000'000;
 
 // The scenario keys of SimOptions (sim.*): help and checks per field.
 void describe(OptionsOf<SimOptions> auto& o, auto& f) {
-  f.choice("path", o.path, "robot path (thesis 6.6.1, 6.7.2)", {PathKind::FigureEight, PathKind::Line, PathKind::Stationary});
+  f.choice("path", o.path, "robot path (thesis 6.6.1, 6.7.2)",
+           {PathKind::FigureEight, PathKind::Line, PathKind::Stationary});
   f.field("loops", o.loops, "times round the figure eight; 1 loop = 3800 iterations", at_least(1));
-  f.field("iterations", o.iterations, "run length in iterations; overrides sim.loops", at_least(1), at_most(kMaxIterations));
-  f.field("scale", o.scale, "multiplies path lengths; 2 = the double-size eight (Fig 136)", above(0.0), at_most(1000.0));
+  f.field("iterations", o.iterations, "run length in iterations; overrides sim.loops", at_least(1),
+          at_most(kMaxIterations));
+  f.field("scale", o.scale, "multiplies path lengths; 2 = the double-size eight (Fig 136)", above(0.0),
+          at_most(1000.0));
   f.field("density", o.density, "points per 100 units of path (thesis 6.6.2)", at_least(0.0));
   f.field("noise_sigma", o.noise_sigma, "std. deviation of white Gaussian noise per axis, units", at_least(0.0));
   f.field("range_noise", o.range_noise, "noise grows with range: sigma·(1 + range/far)");

@@ -3,9 +3,9 @@
 // map was made for (relative_plane_em.md §3.7). Part of relslam/sim: no I/O; map files are read
 // in eval/io (planar_map_file.hpp).
 
-#include "relslam/sim/plane_sensor.hpp"
 #include "relslam/sim/planar_path.hpp"
 #include "relslam/sim/planar_world.hpp"
+#include "relslam/sim/plane_sensor.hpp"
 
 #include <string>
 

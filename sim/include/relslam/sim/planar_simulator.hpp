@@ -3,9 +3,9 @@
 // its path, reporting the walls it sees. Part of relslam/sim.
 
 #include "relslam/sim/planar_map.hpp"
-#include "relslam/sim/plane_sensor.hpp"
 #include "relslam/sim/planar_path.hpp"
 #include "relslam/sim/planar_world.hpp"
+#include "relslam/sim/plane_sensor.hpp"
 
 #include <cstdint>
 #include <optional>

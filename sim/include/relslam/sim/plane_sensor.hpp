@@ -7,8 +7,8 @@
 #include "relslam/core/option_issue.hpp"
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"
-#include "relslam/sim/plane_noise.hpp"
 #include "relslam/sim/planar_world.hpp"
+#include "relslam/sim/plane_noise.hpp"
 #include "relslam/sim/viewing_frustum.hpp"
 
 #include <cstdint>

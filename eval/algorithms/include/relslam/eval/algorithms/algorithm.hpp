@@ -38,8 +38,8 @@ void append_fields(const Columns<Row>& columns, const Row& row, std::vector<CsvF
 
 // What scoring knows of one estimated landmark, for the algorithm's landmarks.csv rows.
 struct LandmarkScore {
-  int true_id = -1;         // the true landmark behind most of its observations (-1 none)
-  double error = 0;         // distance to the nearest true landmark now (NaN off the map)
+  int true_id = -1;           // the true landmark behind most of its observations (-1 none)
+  double error = 0;           // distance to the nearest true landmark now (NaN off the map)
   bool true_dynamic = false;  // its true landmark moves
 };
 

@@ -23,18 +23,18 @@ struct Ekf2dOptions {
   EkfAssociation association_no_odometry = EkfAssociation::Nn;
   // Sensor model. A trunk's centre comes from a laser arc, so its range is uncertain by a good
   // part of the trunk's diameter (up to 1.5 m) [C].
-  double std_range = 0.5;                                // m
-  double std_yaw_rad = 1.0 * std::numbers::pi / 180.0;   // read and written in degrees
+  double std_range = 0.5;                               // m
+  double std_yaw_rad = 1.0 * std::numbers::pi / 180.0;  // read and written in degrees
   // Without odometry: constant-position noise per scan (x, y in m, heading in rad); the vehicle
   // moves up to 1.4 m and turns a few degrees per scan [C].
   std::vector<double> stds_q_no_odometry = {1.0, 1.0, 5.0 * std::numbers::pi / 180.0};
   // With odometry: the standard deviation of each scan's dead-reckoned motion, a floor plus a
   // share of the motion itself [C].
-  double odometry_std_xy = 0.05;          // m
-  double odometry_std_xy_ratio = 0.1;     // of the distance moved
+  double odometry_std_xy = 0.05;       // m
+  double odometry_std_xy_ratio = 0.1;  // of the distance moved
   double odometry_std_heading_rad = 0.5 * std::numbers::pi / 180.0;
   double odometry_std_heading_ratio = 0.1;  // of the heading change
-  double chi2_threshold = 0.99;  // individual compatibility test of JCBB / NN
+  double chi2_threshold = 0.99;             // individual compatibility test of JCBB / NN
   double time_budget_ms = 1000.0;
   int budget_iterations = 20;
 };

@@ -37,8 +37,8 @@ struct Ekf6dOptions {
   // the landmark error. MRPT takes R from these only (spec mrpt §0.6). The defaults are what
   // `relslam tune-ekf scenarios/s-ekf-f8.json` chose for the simulated noise of 0.1 units per
   // axis (seed 1001, 1000 iterations, 60 trials) [C, tuned]; only their ratio to stds_q matters.
-  double std_range = 0.2;                                   // units
-  double std_yaw_rad = 0.5 * std::numbers::pi / 180.0;     // read and written in degrees
+  double std_range = 0.2;                               // units
+  double std_yaw_rad = 0.5 * std::numbers::pi / 180.0;  // read and written in degrees
   double std_pitch_rad = 0.5 * std::numbers::pi / 180.0;
   // Constant-position motion noise (x, y, z, qr, qx, qy, qz): without odometry it must cover a
   // step's motion, 0.3 units and ~0.3° on the figure eight; half the spec's starting point
@@ -54,7 +54,8 @@ struct Ekf6dOptions {
 // The scenario keys of Ekf6dOptions (ekf6d.*): help and checks per field.
 void describe(OptionsOf<Ekf6dOptions> auto& o, auto& f) {
   f.choice("method", o.method, "EKF update: davison (thesis 6.7) or full", kEkfMethods);
-  f.choice("association", o.association, "known (true ids, as the thesis), or ids withheld: jcbb or nn", kEkfAssociations);
+  f.choice("association", o.association, "known (true ids, as the thesis), or ids withheld: jcbb or nn",
+           kEkfAssociations);
   f.field("std_range", o.std_range, "sensor model range std. deviation, units", above(0.0));
   f.degrees("std_yaw_deg", o.std_yaw_rad, "sensor model yaw std. deviation", above(0.0));
   f.degrees("std_pitch_deg", o.std_pitch_rad, "sensor model pitch std. deviation", above(0.0));
@@ -63,7 +64,8 @@ void describe(OptionsOf<Ekf6dOptions> auto& o, auto& f) {
   f.field("chi2_threshold", o.chi2_threshold, "data association individual compatibility (jcbb, nn)", above(0.0),
           at_most(1.0));
   f.field("time_budget_ms", o.time_budget_ms, "stop the EKF past this time per iteration (thesis: 1 s)", above(0.0));
-  f.field("budget_iterations", o.budget_iterations, "...once its mean over this many iterations exceeds it", at_least(1));
+  f.field("budget_iterations", o.budget_iterations, "...once its mean over this many iterations exceeds it",
+          at_least(1));
 }
 
 }  // namespace relslam::eval

@@ -12,7 +12,7 @@ class InputError : public std::runtime_error {
   InputError(std::string file, int line, std::string field, const std::string& problem);
 
   const std::string& file() const { return file_; }
-  int line() const { return line_; }        // 1-based text line or rawlog record; 0 = unknown
+  int line() const { return line_; }  // 1-based text line or rawlog record; 0 = unknown
   const std::string& field() const { return field_; }
   const std::string& problem() const { return problem_; }
 

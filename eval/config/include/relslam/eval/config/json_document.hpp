@@ -10,7 +10,7 @@
 namespace relslam::eval {
 
 struct JsonDocument {
-  std::string file;        // as the user named it
+  std::string file;  // as the user named it
   nlohmann::json value;
   // Dotted path ("sim.dynamic.count", array elements "algorithms[1]") -> 1-based line.
   std::map<std::string, int> lines;

@@ -47,7 +47,8 @@ struct OutputOptions {
 void describe(OptionsOf<OutputOptions> auto& o, auto& f) {
   f.field("observations_csv", o.observations_csv, "write observations.csv (large at high density)");
   f.field("rawlog", o.rawlog, "write observations.rawlog for MRPT tools");
-  f.field("rawlog_landmark_ids", o.rawlog_landmark_ids, "rawlog carries true landmark ids (else -1: unknown association)");
+  f.field("rawlog_landmark_ids", o.rawlog_landmark_ids,
+          "rawlog carries true landmark ids (else -1: unknown association)");
   f.field("rawlog_gzip", o.rawlog_gzip, "gzip-compress the rawlog");
 }
 
@@ -68,7 +69,7 @@ struct Scenario {
   std::string name;         // defaults to the file name without extension
   std::string description;  // what the experiment is for (thesis figures)
   ScenarioKind kind = ScenarioKind::Simulation;
-  std::uint64_t seed = 1;   // the only source of randomness of a run
+  std::uint64_t seed = 1;  // the only source of randomness of a run
   sim::SimOptions sim;
   std::vector<std::string> algorithms;
   point::PointSlamOptions relative_point;  // the Relative Point algorithm's constants

@@ -13,9 +13,9 @@
 namespace relslam::eval {
 
 struct ScenarioKey {
-  std::string key;   // dotted path in the JSON file, e.g. "sim.density"
-  std::string type;  // for people: "number", "integer", "one of: a, b", ...
-  std::string help;  // one line: meaning, unit, and thesis reference
+  std::string key;          // dotted path in the JSON file, e.g. "sim.density"
+  std::string type;         // for people: "number", "integer", "one of: a, b", ...
+  std::string help;         // one line: meaning, unit, and thesis reference
   bool text_value = false;  // --set takes the raw text as a string (no JSON parsing needed)
   std::function<nlohmann::json(const Scenario&)> read;
   // Stores a JSON value; returns "" or what is wrong with it ("expected an integer, got 2.5").

@@ -13,7 +13,7 @@ namespace relslam::eval {
 
 // Detections kept for the algorithms [C: every one by default].
 struct DetectionFilter {
-  double min_range = 0;  // m
+  double min_range = 0;     // m
   double max_range = 1000;  // m: past every detection (the farthest is 75.3 m)
   double min_diameter = 0;  // m
   bool keeps(double range, double diameter) const {

@@ -42,7 +42,7 @@ void check_jobs_load(const std::string& scenario_file, const std::vector<std::st
 
 struct BatchResult {
   BatchJob job;
-  std::string error;  // empty when the run went through (its algorithms may still have failed)
+  std::string error;             // empty when the run went through (its algorithms may still have failed)
   std::vector<SummaryRow> rows;  // per algorithm, then the relative_point/ekf6d ratio row when both ran
 };
 

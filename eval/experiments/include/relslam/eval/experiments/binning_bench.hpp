@@ -14,7 +14,7 @@ namespace relslam::eval {
 
 struct BinningBenchRow {
   int n = 0;
-  double percent = 0;  // uncorrelated share; the correlated mix reports 50
+  double percent = 0;                    // uncorrelated share; the correlated mix reports 50
   const char* variant = "uncorrelated";  // or "correlated"
   point::BinPairing pairing = point::BinPairing::Disjoint;
   bool heuristic = true;

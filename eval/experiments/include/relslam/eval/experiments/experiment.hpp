@@ -23,7 +23,7 @@ struct ExperimentResult {
   std::optional<SummaryRow> ratio;  // relative_point over ekf6d (or ekf2d), when both ran
   int iterations = 0;
   double seconds = 0;
-  nlohmann::json source;            // what the observations were: manifest material
+  nlohmann::json source;  // what the observations were: manifest material
 };
 
 // InputError at "algorithms" when the scenario lists none or one the registry does not have.

@@ -16,15 +16,15 @@ namespace relslam::eval {
 
 struct GpsComparison {
   std::string algorithm;
-  int scans = 0;                // processed by the algorithm
-  PlanarAlignment alignment;    // its trajectory -> GPS (rigid, 2D): pairs, rmse (ATE), max
+  int scans = 0;              // processed by the algorithm
+  PlanarAlignment alignment;  // its trajectory -> GPS (rigid, 2D): pairs, rmse (ATE), max
 };
 
 struct VictoriaParkResult {
   ExperimentResult experiment;
-  int scans = 0;                // in the window
-  int scans_below_three = 0;    // with fewer than 3 kept trees: the Relative algorithm cannot register them
-  int gps_scans = 0;            // with a GPS fix to compare against
+  int scans = 0;              // in the window
+  int scans_below_three = 0;  // with fewer than 3 kept trees: the Relative algorithm cannot register them
+  int gps_scans = 0;          // with a GPS fix to compare against
   std::vector<GpsComparison> gps;
   std::vector<std::pair<std::string, MapComparison>> maps;  // each algorithm's map against ekf2d's
 };

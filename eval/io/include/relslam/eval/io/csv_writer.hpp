@@ -66,9 +66,11 @@ class CsvWriter {
   static void append_field(std::string& out, const std::string& v) { append_text(out, v); }
   static void append_field(std::string& out, const char* v) { append_text(out, v); }
   static void append_field(std::string& out, const CsvField& v) {
-    std::visit([&out](const auto& x) {
-      if constexpr (!std::is_same_v<std::decay_t<decltype(x)>, std::monostate>) append_field(out, x);
-    }, v);
+    std::visit(
+        [&out](const auto& x) {
+          if constexpr (!std::is_same_v<std::decay_t<decltype(x)>, std::monostate>) append_field(out, x);
+        },
+        v);
   }
   template <class T>
   static void append_field(std::string& out, const std::optional<T>& v) {

@@ -43,14 +43,14 @@ struct SceneFrustum {
 };
 
 struct RenderScene {
-  std::string title;                          // top-left caption
-  std::vector<Eigen::Vector3d> true_points;   // every true landmark at this iteration
-  std::vector<bool> true_dynamic;             // parallel to true_points
+  std::string title;                         // top-left caption
+  std::vector<Eigen::Vector3d> true_points;  // every true landmark at this iteration
+  std::vector<bool> true_dynamic;            // parallel to true_points
   std::vector<SceneLandmark> landmarks;
   std::vector<SceneGroup> groups;
-  std::optional<Rigid3> true_pose;            // world_T_robot
+  std::optional<Rigid3> true_pose;  // world_T_robot
   std::optional<Rigid3> estimated_pose;
-  std::vector<Eigen::Vector3d> true_path;     // up to this iteration
+  std::vector<Eigen::Vector3d> true_path;  // up to this iteration
   std::vector<Eigen::Vector3d> estimated_path;
   SceneFrustum frustum;
 };
@@ -62,7 +62,7 @@ struct RenderFrame {
 };
 
 struct RenderOptions {
-  int width = 1280;   // pixels
+  int width = 1280;  // pixels
   int height = 960;
   RenderView view = RenderView::Top;
   // Point and group labels (thesis Fig 129). Unset: only when at most this many landmarks are

@@ -17,7 +17,9 @@ struct RangeBearing {
   double pitch_rad = 0;
 };
 
-inline Eigen::Vector3d mrpt_from_robot(const Eigen::Vector3d& p_robot) { return {p_robot.z(), p_robot.x(), p_robot.y()}; }
+inline Eigen::Vector3d mrpt_from_robot(const Eigen::Vector3d& p_robot) {
+  return {p_robot.z(), p_robot.x(), p_robot.y()};
+}
 inline Eigen::Vector3d robot_from_mrpt(const Eigen::Vector3d& p_mrpt) { return {p_mrpt.y(), p_mrpt.z(), p_mrpt.x()}; }
 // A pose between two frames that both use MRPT's axes, re-expressed with ours: A · pose · A^-1.
 Rigid3 robot_axes_from_mrpt(const Rigid3& mrpt_pose);
@@ -46,7 +48,7 @@ struct RangeBearingSensor {
   double max_range = 0.0;
   double field_of_view_yaw_rad = 0.0;
   double field_of_view_pitch_rad = 0.0;
-  double std_range = 0.0;       // informative only: MRPT's EKFs ignore them (spec mrpt §0.6)
+  double std_range = 0.0;  // informative only: MRPT's EKFs ignore them (spec mrpt §0.6)
   double std_yaw_rad = 0.0;
   double std_pitch_rad = 0.0;
 };

@@ -23,9 +23,9 @@ struct RawlogMeasurement {
 
 // One sensory frame (or, in observation-only files, one bearing-range observation).
 struct RawlogFrame {
-  int index = 0;            // 0-based, in file order
-  double timestamp_s = 0;   // MRPT time as seconds since the epoch
-  Rigid3 robot_T_sensor;    // MRPT's sensorLocationOnRobot, in MRPT's robot frame
+  int index = 0;           // 0-based, in file order
+  double timestamp_s = 0;  // MRPT time as seconds since the epoch
+  Rigid3 robot_T_sensor;   // MRPT's sensorLocationOnRobot, in MRPT's robot frame
   std::vector<RawlogMeasurement> measurements;
   // Odometry since the previous frame, when the file has any (MRPT's robot frame: x forward,
   // y left, z up). In action-first files it is the action just before this frame; in the
@@ -40,9 +40,9 @@ struct Rawlog {
   // True for files written SF, action, SF, ... (MRPT's simul-landmarks). kf-slam drops their
   // first frame, so its step k is our frame k + 1 (spec mrpt §0.7); we keep every frame.
   bool sensory_frame_first = false;
-  int records = 0;                // serialized objects read
-  int skipped_observations = 0;   // observations of other types, ignored
-  RangeBearingSensor sensor;      // as the first bearing-range observation describes it
+  int records = 0;               // serialized objects read
+  int skipped_observations = 0;  // observations of other types, ignored
+  RangeBearingSensor sensor;     // as the first bearing-range observation describes it
   std::vector<RawlogFrame> frames;
 };
 

@@ -19,7 +19,7 @@ void prepare_run_folder(const std::filesystem::path& dir, bool force);
 
 // What the manifest records about how the run was started.
 struct Invocation {
-  std::string command;               // "simulate", "run", ...
+  std::string command;                 // "simulate", "run", ...
   std::vector<std::string> arguments;  // the whole command line
   std::string scenario_file;
   std::vector<std::string> overrides;  // each --set as typed

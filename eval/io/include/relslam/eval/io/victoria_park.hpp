@@ -26,8 +26,8 @@ struct TreeDetection {
 Eigen::Vector2d laser_point(const TreeDetection& tree);
 
 struct LaserScan {
-  int index = 0;      // 1-based in the full log of 7,249 scans (the thesis's "iteration")
-  double time = 0;    // s, the data set's one clock (origin: the first GPS message)
+  int index = 0;                     // 1-based in the full log of 7,249 scans (the thesis's "iteration")
+  double time = 0;                   // s, the data set's one clock (origin: the first GPS message)
   std::vector<TreeDetection> trees;  // may be empty
 };
 

@@ -47,9 +47,9 @@ class LandmarkErrorTracker {
   std::vector<double> static_error_;  // per estimated id; NaN = off the map
   std::vector<int> static_nearest_;
   std::vector<Eigen::Vector3d> position_;
-  std::vector<double> error_;         // current error, dynamic truth included
-  std::vector<int> on_map_;           // ids currently on the map (for the moving-truth pass)
-  std::vector<int> slot_;             // id -> index in on_map_, or -1
+  std::vector<double> error_;  // current error, dynamic truth included
+  std::vector<int> on_map_;    // ids currently on the map (for the moving-truth pass)
+  std::vector<int> slot_;      // id -> index in on_map_, or -1
   double sum_ = 0;
   int count_ = 0;
 };

@@ -26,12 +26,12 @@ PlanarAlignment align_planar(const std::vector<Eigen::Vector2d>& from, const std
                              bool with_scale);
 
 struct MapComparison {
-  int landmarks = 0;            // on the compared map
+  int landmarks = 0;  // on the compared map
   int reference_landmarks = 0;
-  int matched = 0;              // mutual nearest neighbours within the gate after alignment
-  double rms = 0;               // residual of the matched pairs, m
+  int matched = 0;  // mutual nearest neighbours within the gate after alignment
+  double rms = 0;   // residual of the matched pairs, m
   double median = 0;
-  PlanarAlignment alignment;    // map -> reference, similarity
+  PlanarAlignment alignment;  // map -> reference, similarity
 };
 
 // Aligns `map` to `reference` starting from the frames as given (both maps start at the same

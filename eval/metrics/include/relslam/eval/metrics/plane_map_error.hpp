@@ -14,8 +14,8 @@ namespace relslam::eval {
 
 // One mapped plane against its true wall [R, spec §7.2].
 struct PlaneError {
-  double ends = 0;         // e_ends = ½(|A_p − A_W| + |B_p − B_W|): corresponding key points; too small a plane pays
-  double angle_rad = 0;    // e_ang = |wrap(θ_p − θ_W)|
+  double ends = 0;       // e_ends = ½(|A_p − A_W| + |B_p − B_W|): corresponding key points; too small a plane pays
+  double angle_rad = 0;  // e_ang = |wrap(θ_p − θ_W)|
   double perpendicular = 0;  // e_perp: distance from the plane's midpoint to the wall's line
   double length_ratio = 0;   // L_p / L_W
 };

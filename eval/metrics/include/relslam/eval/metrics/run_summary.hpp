@@ -51,12 +51,12 @@ struct SummaryRow {
   double final_mean_landmark_error = 0;  // per landmark on the map
   double mean_landmark_error = 0;        // per landmark, averaged over iterations
   double final_position_error = 0;
-  TrajectoryError trajectory;            // ATE (unaligned: the frames coincide; and aligned), RPE
+  TrajectoryError trajectory;  // ATE (unaligned: the frames coincide; and aligned), RPE
   int landmarks_on_map = 0;
-  int duplicates = 0;                    // map landmarks sharing their true landmark with another
+  int duplicates = 0;  // map landmarks sharing their true landmark with another
   RuntimeStats runtime;
-  double peak_rss_mb = 0;                // the whole process, at the end of this algorithm's run
-  std::string input_digest;              // hash of the observation frames it was given
+  double peak_rss_mb = 0;    // the whole process, at the end of this algorithm's run
+  std::string input_digest;  // hash of the observation frames it was given
 };
 
 // One row per algorithm; then, when both relative_point and ekf6d ran, a row

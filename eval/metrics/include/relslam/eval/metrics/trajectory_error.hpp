@@ -10,8 +10,8 @@
 namespace relslam::eval {
 
 struct TrajectoryError {
-  double ate_rmse = 0;            // estimate and truth share a frame by construction: no alignment
-  double ate_rmse_aligned = 0;    // after the best rigid motion (SE(3) Umeyama, no scale)
+  double ate_rmse = 0;              // estimate and truth share a frame by construction: no alignment
+  double ate_rmse_aligned = 0;      // after the best rigid motion (SE(3) Umeyama, no scale)
   double rpe_translation_rmse = 0;  // of the frame-to-frame motion, units
   double rpe_rotation_rmse_deg = 0;
 };

@@ -11,17 +11,17 @@ namespace relslam::eval {
 struct RenderArgs {
   std::string run_dir;
   std::string algorithm = "relative_point";
-  int iteration = -1;        // -1: the run's last iteration
-  std::string out;           // PNG (or any image type OpenCV writes)
-  std::string video;         // MP4 of the run, one frame every `every` iterations
+  int iteration = -1;  // -1: the run's last iteration
+  std::string out;     // PNG (or any image type OpenCV writes)
+  std::string video;   // MP4 of the run, one frame every `every` iterations
   int every = 50;
   int fps = 10;
   int width = 1280;
   int height = 960;
-  std::string view = "top";  // top or side
-  std::string fit = "map";   // map (everything) or robot (close-up around the true robot)
-  std::vector<double> center;  // u,v: overrides fit
-  double span = 0;             // world units across; with center
+  std::string view = "top";     // top or side
+  std::string fit = "map";      // map (everything) or robot (close-up around the true robot)
+  std::vector<double> center;   // u,v: overrides fit
+  double span = 0;              // world units across; with center
   std::string labels = "auto";  // auto, on, off
   bool quiet = false;
 };

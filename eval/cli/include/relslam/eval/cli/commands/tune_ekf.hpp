@@ -18,8 +18,8 @@ struct TuneEkfArgs : ScenarioCommandArgs {
   std::vector<double> std_range = {0.05, 0.1, 0.2, 0.4};           // units
   std::vector<double> std_angle_deg = {0.05, 0.1, 0.2, 0.5, 1.0};  // yaw = pitch, degrees
   std::vector<double> q_scale = {0.5, 1.0, 2.0};                   // times stds_q (0.35 x3, 0.005 x4)
-  int iterations = 1000;    // a shortened run: the EKF's cost grows with the map [C]
-  int seed_offset = 1000;   // tuning seed = scenario seed + this, kept apart from the experiments [C]
+  int iterations = 1000;   // a shortened run: the EKF's cost grows with the map [C]
+  int seed_offset = 1000;  // tuning seed = scenario seed + this, kept apart from the experiments [C]
   int jobs = 2;
 };
 

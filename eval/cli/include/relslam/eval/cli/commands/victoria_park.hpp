@@ -12,13 +12,13 @@
 namespace relslam::eval {
 
 struct VictoriaParkArgs : ScenarioCommandArgs {
-  std::string data;    // the data folder (else $RELSLAM_VICTORIA_PARK, else ../shared/datasets/victoria_park)
-  std::string window;  // overrides victoria_park.window
-  bool bridge = false; // relative_point.use_odometry = true
+  std::string data;     // the data folder (else $RELSLAM_VICTORIA_PARK, else ../shared/datasets/victoria_park)
+  std::string window;   // overrides victoria_park.window
+  bool bridge = false;  // relative_point.use_odometry = true
 };
 
 struct ConvertVictoriaParkArgs {
-  std::string out;     // the rawlog to write
+  std::string out;  // the rawlog to write
   std::string data;
   std::string window = "all";
   std::string scenario = "scenarios/victoria-park.json";  // its detection filter and laser model
