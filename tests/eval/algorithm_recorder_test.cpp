@@ -84,6 +84,15 @@ void feed(AlgorithmRecorder& recorder, int frames) {
 
 std::unique_ptr<Scripted> scripted() { return std::make_unique<Scripted>(); }
 
+// `frames` frames through a scripted algorithm set up by `script`, recorded into dir/scripted.
+SummaryRow record(const test::ScratchDir& dir, int frames, const std::function<void(Scripted&)>& script) {
+  auto algorithm = scripted();
+  script(*algorithm);
+  AlgorithmRecorder recorder(std::move(algorithm), two_landmarks(), dir / "scripted");
+  feed(recorder, frames);
+  return recorder.finish();
+}
+
 TEST(AlgorithmRecorder, ExactEstimatesScoreZeroAndEveryFileIsWritten) {
   test::ScratchDir dir;
   AlgorithmRecorder recorder(scripted(), two_landmarks(), dir / "scripted");
@@ -111,11 +120,7 @@ TEST(AlgorithmRecorder, ExactEstimatesScoreZeroAndEveryFileIsWritten) {
 
 TEST(AlgorithmRecorder, AnExceptionEndsTheRunWithTheIterationAndReason) {
   test::ScratchDir dir;
-  auto algorithm = scripted();
-  algorithm->throw_at = 3;
-  AlgorithmRecorder recorder(std::move(algorithm), two_landmarks(), dir / "scripted");
-  feed(recorder, 6);
-  const SummaryRow row = recorder.finish();
+  const SummaryRow row = record(dir, 6, [](Scripted& a) { a.throw_at = 3; });
   EXPECT_EQ(row.status.kind, RunStatus::Kind::Failed);
   EXPECT_EQ(row.status.text(), "failed at iteration 3: scripted failure");
   EXPECT_EQ(row.iterations, 3);
@@ -124,33 +129,22 @@ TEST(AlgorithmRecorder, AnExceptionEndsTheRunWithTheIterationAndReason) {
 
 TEST(AlgorithmRecorder, ANonFiniteEstimateIsAFailureNotANumber) {
   test::ScratchDir dir;
-  auto algorithm = scripted();
-  algorithm->nan_at = 2;
-  AlgorithmRecorder recorder(std::move(algorithm), two_landmarks(), dir / "scripted");
-  feed(recorder, 4);
-  const SummaryRow row = recorder.finish();
+  const SummaryRow row = record(dir, 4, [](Scripted& a) { a.nan_at = 2; });
   EXPECT_EQ(row.status.text(), "failed at iteration 2: the estimate became NaN");
   EXPECT_EQ(row.iterations, 2);
 }
 
 TEST(AlgorithmRecorder, AnAlgorithmThatGivesUpKeepsRunningButFails) {
   test::ScratchDir dir;
-  auto algorithm = scripted();
-  algorithm->give_up_at = 1;
-  AlgorithmRecorder recorder(std::move(algorithm), two_landmarks(), dir / "scripted");
-  feed(recorder, 4);
-  const SummaryRow row = recorder.finish();
+  const SummaryRow row = record(dir, 4, [](Scripted& a) { a.give_up_at = 1; });
   EXPECT_EQ(row.status.text(), "failed: scripted give-up");
   EXPECT_EQ(row.iterations, 4);
 }
 
 TEST(AlgorithmRecorder, TheTimeBudgetStopsTheRunOnItsMean) {
   test::ScratchDir dir;
-  auto algorithm = scripted();
-  algorithm->budget = TimeBudget{0.0, 3};  // every step is over a zero budget
-  AlgorithmRecorder recorder(std::move(algorithm), two_landmarks(), dir / "scripted");
-  feed(recorder, 10);
-  const SummaryRow row = recorder.finish();
+  // every step is over a zero budget
+  const SummaryRow row = record(dir, 10, [](Scripted& a) { a.budget = TimeBudget{0.0, 3}; });
   EXPECT_EQ(row.status.kind, RunStatus::Kind::Stopped);
   EXPECT_EQ(row.status.text(), "stopped at iteration 2: over the time budget (0 ms) on average over 3 iterations");
   EXPECT_EQ(row.iterations, 3);
