@@ -36,7 +36,7 @@ TEST(RelativePlaneOptions, ViolationsNameTheirField) {
   EXPECT_TRUE(names(issues, "global_match.min_overlap_fraction"));
   EXPECT_TRUE(names(issues, "plane_capacity"));
   EXPECT_TRUE(names(issues, "min_common"));
-  EXPECT_TRUE(names(issues, "local_match.max_normal_angle_rad"));
+  EXPECT_TRUE(names(issues, "local_match.max_normal_angle_deg"));
   EXPECT_EQ(issues.size(), 5u);
 }
 

@@ -2,11 +2,23 @@
 
 #include "ekf2d.hpp"
 #include "ekf6d.hpp"
+#include "relative_plane.hpp"
 #include "relative_point.hpp"
 
 #include <stdexcept>
 
 namespace relslam::eval {
+
+namespace {
+
+template <class Entry>
+const Entry* find_in(const std::vector<Entry>& entries, const std::string& name) {
+  for (const Entry& e : entries)
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+}  // namespace
 
 const std::vector<AlgorithmEntry>& algorithm_registry() {
   static const std::vector<AlgorithmEntry> entries = {
@@ -22,22 +34,41 @@ const std::vector<AlgorithmEntry>& algorithm_registry() {
   return entries;
 }
 
-const AlgorithmEntry* find_algorithm(const std::string& name) {
-  for (const AlgorithmEntry& e : algorithm_registry())
-    if (e.name == name) return &e;
-  return nullptr;
+const std::vector<PlaneAlgorithmEntry>& plane_algorithm_registry() {
+  static const std::vector<PlaneAlgorithmEntry> entries = {
+      {"relative_plane",
+       "Relative Plane: relative maps of wall groups, no odometry, pose from scratch each frame (thesis 4)",
+       [](const PlaneAlgorithmContext& c) { return make_relative_plane(c.scenario.relative_plane, c.world_T_start); }},
+  };
+  return entries;
+}
+
+const AlgorithmEntry* find_algorithm(const std::string& name) { return find_in(algorithm_registry(), name); }
+const PlaneAlgorithmEntry* find_plane_algorithm(const std::string& name) {
+  return find_in(plane_algorithm_registry(), name);
 }
 
 namespace {
 
-// "" or what is wrong with a list of names.
-std::string unknown_name_problem(const std::vector<std::string>& names) {
-  for (const std::string& name : names)
-    if (!find_algorithm(name)) {
-      std::string list;
-      for (const AlgorithmEntry& e : algorithm_registry()) list += (list.empty() ? "" : ", ") + e.name;
-      return "unknown algorithm \"" + name + "\" (known: " + list + ")";
-    }
+template <class Entry>
+std::string names_of(const std::vector<Entry>& entries) {
+  std::string list;
+  for (const Entry& e : entries) list += (list.empty() ? "" : ", ") + e.name;
+  return list;
+}
+
+// "" or what is wrong with a list of names, for a scenario of this kind.
+std::string unknown_name_problem(const std::vector<std::string>& names, ScenarioKind kind) {
+  const bool planar = kind == ScenarioKind::Planar;
+  for (const std::string& name : names) {
+    if (planar ? find_plane_algorithm(name) != nullptr : find_algorithm(name) != nullptr) continue;
+    const bool other_half = planar ? find_algorithm(name) != nullptr : find_plane_algorithm(name) != nullptr;
+    const std::string known = planar ? names_of(plane_algorithm_registry()) : names_of(algorithm_registry());
+    if (other_half)
+      return "\"" + name + "\" runs on " + (planar ? "point landmarks" : "planes (kind \"planar\")") +
+             ", not on this scenario's " + (planar ? "planes" : "point landmarks") + " (here: " + known + ")";
+    return "unknown algorithm \"" + name + "\" (known: " + known + ")";
+  }
   return "";
 }
 
@@ -52,23 +83,29 @@ std::vector<std::string> names_in(const nlohmann::json& value) {
 
 void check_algorithm_names(const LoadedScenario& loaded) {
   const Scenario& s = loaded.scenario;
-  if (const std::string problem = unknown_name_problem(s.algorithms); !problem.empty())
+  if (const std::string problem = unknown_name_problem(s.algorithms, s.kind); !problem.empty())
     throw loaded.error("algorithms", problem);
   for (const SweepAxis& axis : s.sweep)
     if (axis.key == "algorithms")
       for (const nlohmann::json& value : axis.values)
-        if (const std::string problem = unknown_name_problem(names_in(value)); !problem.empty())
+        if (const std::string problem = unknown_name_problem(names_in(value), s.kind); !problem.empty())
           throw loaded.error("sweep.algorithms", problem);
   for (const Variant& variant : s.variants)
     for (const auto& [key, value] : variant.settings)
       if (key == "algorithms")
-        if (const std::string problem = unknown_name_problem(names_in(value)); !problem.empty())
+        if (const std::string problem = unknown_name_problem(names_in(value), s.kind); !problem.empty())
           throw loaded.error("variants." + variant.name + ".algorithms", problem);
 }
 
 std::unique_ptr<Algorithm> make_algorithm(const std::string& name, const AlgorithmContext& context) {
   const AlgorithmEntry* entry = find_algorithm(name);
   if (!entry) throw std::logic_error("make_algorithm: unknown algorithm " + name);
+  return entry->make(context);
+}
+
+std::unique_ptr<PlaneAlgorithm> make_plane_algorithm(const std::string& name, const PlaneAlgorithmContext& context) {
+  const PlaneAlgorithmEntry* entry = find_plane_algorithm(name);
+  if (!entry) throw std::logic_error("make_plane_algorithm: unknown plane algorithm " + name);
   return entry->make(context);
 }
 

@@ -16,6 +16,7 @@ std::string_view to_string(ScenarioKind kind) {
     case ScenarioKind::Simulation: return "simulation";
     case ScenarioKind::BinningBenchmark: return "binning_benchmark";
     case ScenarioKind::VictoriaPark: return "victoria_park";
+    case ScenarioKind::Planar: return "planar";
   }
   return "?";
 }
@@ -50,7 +51,9 @@ std::string parse_degrees(const json& v, double& out) {
   out = v.get<double>() * std::numbers::pi / 180.0;
   return "";
 }
-json show_degrees(const double& radians) { return radians * 180.0 / std::numbers::pi; }
+// Rounded to 1e-9 degrees so 15° reads 15, not 14.999999999999998; reading it back gives the
+// same radians as the initialiser 15.0 * π / 180.
+json show_degrees(const double& radians) { return std::round(radians * 180.0 / std::numbers::pi * 1e9) / 1e9; }
 
 // Integral floats (3800.0) are integers; 2.5 is not.
 std::string parse_integer(const json& v, int& out) {
@@ -293,14 +296,17 @@ std::vector<ScenarioKey> build_keys() {
       scenario_key<&Scenario::description>("description", "what the experiment reproduces (thesis figures)",
                                            codec_for(std::string())),
       scenario_key<&Scenario::kind>("kind",
-                                    "simulation, the synthetic binning benchmark S-BIN, or the Victoria Park data set",
+                                    "simulation (point world), the synthetic binning benchmark S-BIN, the Victoria Park data set, "
+                                    "or planar (walls, Relative Plane)",
                                     ChoiceCodec<ScenarioKind>{kScenarioKinds}),
       seed_key(),
   };
   add_keys<&Scenario::sim>(keys, "sim");
+  add_keys<&Scenario::planar>(keys, "planar");
   keys.push_back(algorithms_key());
   add_keys<&Scenario::output>(keys, "output");
   add_keys<&Scenario::relative_point>(keys, "relative_point");
+  add_keys<&Scenario::relative_plane>(keys, "relative_plane");
   add_keys<&Scenario::ekf6d>(keys, "ekf6d");
   add_keys<&Scenario::ekf2d>(keys, "ekf2d");
   add_keys<&Scenario::victoria_park>(keys, "victoria_park");

@@ -172,6 +172,8 @@ void check_semantics(const LoadedScenario& loaded) {
   };
   add("sim", sim::check(s.sim));
   add("relative_point", point::check(s.relative_point));
+  add("planar", check_fields(s.planar));
+  add("relative_plane", plane::check(s.relative_plane));
   add("ekf6d", check_fields(s.ekf6d));
   add("ekf2d", check_fields(s.ekf2d));
   add("victoria_park", check_fields(s.victoria_park));

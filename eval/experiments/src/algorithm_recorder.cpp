@@ -16,12 +16,23 @@ const std::filesystem::path& created(const std::filesystem::path& dir) {
 
 }  // namespace
 
+// FNV-1a over raw bytes.
+void FrameDigest::mix(const void* data, std::size_t n) {
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < n; ++i) state_ = (state_ ^ bytes[i]) * 0x100000001b3ULL;
+}
+
+void FrameDigest::add(const PlaneFrame& frame) {
+  mix(&frame.iteration, sizeof frame.iteration);
+  for (const PlaneObject& p : frame.planes) {
+    mix(p.a.data(), 2 * sizeof(double));
+    mix(p.b.data(), 2 * sizeof(double));
+    mix(&p.y_lo, sizeof p.y_lo);
+    mix(&p.y_hi, sizeof p.y_hi);
+  }
+}
+
 void FrameDigest::add(const ObservationFrame& frame) {
-  // FNV-1a over the iteration and the raw bytes of the points.
-  auto mix = [this](const void* data, std::size_t n) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) state_ = (state_ ^ bytes[i]) * 0x100000001b3ULL;
-  };
   mix(&frame.iteration, sizeof frame.iteration);
   for (const Eigen::Vector3d& p : frame.points) mix(p.data(), 3 * sizeof(double));
   if (frame.odometry) {

@@ -1,6 +1,7 @@
 #include "relslam/eval/experiments/experiment.hpp"
 
 #include "relslam/eval/algorithms/registry.hpp"
+#include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/sources/simulation_source.hpp"
 
@@ -59,6 +60,7 @@ ExperimentResult Experiment::run(bool progress) {
 }
 
 ExperimentResult simulate_and_run(const LoadedScenario& loaded, const std::filesystem::path& out, bool progress) {
+  if (loaded.scenario.kind == ScenarioKind::Planar) return simulate_planar_and_run(loaded, out, progress);
   require_algorithms(loaded);
   SimulationSource source(loaded);
   source.record_into(out);
@@ -80,8 +82,10 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
 
 void print_results(const ExperimentResult& result, const std::string& title) {
   std::printf("%s: %d iterations\n", title.c_str(), result.iterations);
-  std::printf("%-20s %-8s %10s %14s %10s %10s %10s\n", "algorithm", "status", "map size", "mean lm err", "pos err",
-              "median ms", "p95 ms");
+  // Planar runs score planes (the key-point error e_ends), the others landmarks.
+  const bool planar = !result.rows.empty() && result.rows.front().planar.has_value();
+  std::printf("%-20s %-8s %10s %14s %10s %10s %10s\n", "algorithm", "status", planar ? "planes" : "map size",
+              planar ? "mean map err" : "mean lm err", "pos err", "median ms", "p95 ms");
   auto line = [](const SummaryRow& r) {
     std::printf("%-20s %-8s %10d %14.4g %10.4g %10.4g %10.4g\n", r.algorithm.c_str(),
                 std::string(to_string(r.status.kind)).c_str(), r.landmarks_on_map, r.final_mean_landmark_error,

@@ -41,24 +41,51 @@ RuntimeStats runtime_stats(std::vector<double> t) {
 
 void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
                    const std::optional<SummaryRow>& ratio) {
-  CsvWriter csv(file,
-                {"algorithm", "status", "iterations", "final_landmark_error", "final_mean_landmark_error",
-                 "mean_landmark_error", "final_position_error", "ate_rmse", "ate_rmse_aligned", "rpe_translation_rmse",
-                 "rpe_rotation_rmse_deg", "landmarks_on_map", "duplicates", "runtime_median_ms", "runtime_p95_ms",
-                 "runtime_max_ms", "runtime_mean_ms", "peak_rss_mb", "input_digest"});
-  for (const SummaryRow& r : rows)
-    csv.row(r.algorithm, r.status.text(), r.iterations, r.final_landmark_error, r.final_mean_landmark_error,
-            r.mean_landmark_error, r.final_position_error, r.trajectory.ate_rmse, r.trajectory.ate_rmse_aligned,
-            r.trajectory.rpe_translation_rmse, r.trajectory.rpe_rotation_rmse_deg, r.landmarks_on_map, r.duplicates,
-            r.runtime.median_ms, r.runtime.p95_ms, r.runtime.max_ms, r.runtime.mean_ms, r.peak_rss_mb, r.input_digest);
-  if (ratio) {
-    const SummaryRow& r = *ratio;
-    const std::optional<double> none;
-    csv.row(r.algorithm, r.status.text(), r.iterations, r.final_landmark_error, r.final_mean_landmark_error,
-            r.mean_landmark_error, r.final_position_error, r.trajectory.ate_rmse, r.trajectory.ate_rmse_aligned,
-            r.trajectory.rpe_translation_rmse, r.trajectory.rpe_rotation_rmse_deg, none, none, r.runtime.median_ms,
-            r.runtime.p95_ms, r.runtime.max_ms, r.runtime.mean_ms, none, "");
-  }
+  // A run scores either landmarks or planes: the first row says which.
+  const bool planar = !rows.empty() && rows.front().planar.has_value();
+  std::vector<std::string> columns = {"algorithm", "status", "iterations"};
+  if (planar)
+    columns.insert(columns.end(), {"final_map_error", "final_mean_map_error", "mean_map_error"});
+  else
+    columns.insert(columns.end(), {"final_landmark_error", "final_mean_landmark_error", "mean_landmark_error"});
+  columns.insert(columns.end(), {"final_position_error", "ate_rmse", "ate_rmse_aligned", "rpe_translation_rmse",
+                                 "rpe_rotation_rmse_deg", planar ? "planes_on_map" : "landmarks_on_map", "duplicates",
+                                 "runtime_median_ms", "runtime_p95_ms", "runtime_max_ms", "runtime_mean_ms",
+                                 "peak_rss_mb", "input_digest"});
+  if (planar)
+    columns.insert(columns.end(), {"final_heading_error_deg", "max_position_error", "pose_valid_fraction",
+                                   "walls_mapped", "walls_seen"});
+  CsvWriter csv(file, columns);
+  std::vector<CsvField> fields;
+  const auto write = [&](const SummaryRow& r, bool is_ratio) {
+    fields = {r.algorithm,
+              r.status.text(),
+              static_cast<long long>(r.iterations),
+              r.final_landmark_error,
+              r.final_mean_landmark_error,
+              r.mean_landmark_error,
+              r.final_position_error,
+              r.trajectory.ate_rmse,
+              r.trajectory.ate_rmse_aligned,
+              r.trajectory.rpe_translation_rmse,
+              r.trajectory.rpe_rotation_rmse_deg,
+              is_ratio ? CsvField{} : CsvField{static_cast<long long>(r.landmarks_on_map)},
+              is_ratio ? CsvField{} : CsvField{static_cast<long long>(r.duplicates)},
+              r.runtime.median_ms,
+              r.runtime.p95_ms,
+              r.runtime.max_ms,
+              r.runtime.mean_ms,
+              is_ratio ? CsvField{} : CsvField{r.peak_rss_mb},
+              is_ratio ? std::string() : r.input_digest};
+    if (planar) {
+      const PlanarScores p = r.planar.value_or(PlanarScores{});
+      fields.insert(fields.end(), {p.final_heading_error_deg, p.max_position_error, p.pose_valid_fraction,
+                                   static_cast<long long>(p.walls_mapped), static_cast<long long>(p.walls_seen)});
+    }
+    csv.row_fields(fields);
+  };
+  for (const SummaryRow& r : rows) write(r, false);
+  if (ratio) write(*ratio, true);
   csv.close();
 }
 

@@ -4,9 +4,10 @@
 // ../shared/specs/relative_plane_em.md §5.14 (the thesis gives almost no numbers), [C] chosen
 // here. Part 1 of the algorithm: Rules 1–12, planes reported at full size.
 
-#include "relslam/core/option_issue.hpp"
+#include "relslam/core/option_fields.hpp"
 #include "relslam/plane/plane_object.hpp"
 
+#include <string_view>
 #include <vector>
 
 namespace relslam::plane {
@@ -78,7 +79,62 @@ struct RelativePlaneOptions {
   RuleSwitches rules;
 };
 
-// Every violated constraint, fields named as in the struct ("local_match.box_margin").
+constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Group};
+std::string_view to_string(IntervalMode mode);  // "pair", "group"
+
+// The scenario keys of MatchBounds (relative_plane.local_match.*, relative_plane.global_match.*).
+// Rule 1 needs the gap test (`local`): without it every RltPlane ever seen is a candidate.
+void describe(OptionsOf<MatchBounds> auto& b, auto& f, bool local) {
+  // Beyond 90° a flipped normal would pass, which Rule 10 (rules.normal_direction) decides.
+  f.degrees("max_normal_angle_deg", b.max_normal_angle_rad, "Rule 10: normals differ by at most this, degrees",
+            at_least(0.0), at_most(90.0));
+  f.field("max_offset_change", b.max_offset_change, "|d_prev - d_cur| at most this, units", at_least(0.0));
+  f.field("box_margin", b.box_margin, "bounding boxes widened by this before the corner test, units", at_least(0.0));
+  f.field("min_overlap_fraction", b.min_overlap_fraction,
+          "overlap along the plane, share of the shorter one (collinear neighbours differ)", at_least(0.0),
+          at_most(1.0));
+  f.field("max_iteration_gap", b.max_iteration_gap,
+          local ? "Rule 1: at most this many iterations since the RltPlane's last observation"
+                : "iterations between the two observations; negative: no test (global matching)",
+          holds(!local || b.max_iteration_gap >= 1, "must be >= 1: Rule 1 needs the gap test"));
+}
+
+// The scenario keys of RuleSwitches (relative_plane.rules.*): each rule the thesis turns on or off.
+void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
+  f.field("local_registration", r.local_registration, "Rule 1: register against each RltPlane's last observation");
+  f.field("rotate_to_first", r.rotate_to_first, "Rule 3: offsets in the frame where the first plane lies at 0 deg");
+  f.field("anchor_first_observation", r.anchor_first_observation,
+          "Rule 4: map aligned with the first observations and the start pose");
+  f.field("common_interval", r.common_interval, "Rule 7: join a group only if seen with all its planes");
+  f.field("two_linking_planes", r.two_linking_planes, "Rule 8: two linking planes per new group");
+  f.field("latest_linking_planes", r.latest_linking_planes, "Rule 9: prefer the linking planes first seen latest");
+  f.field("normal_direction", r.normal_direction, "Rule 10: a plane matches only with its normal the same way");
+  f.field("global_matching", r.global_matching, "Rule 11: unmatched observations are matched against the map");
+  f.field("traverse_to_link", r.traverse_to_link, "Rule 12: link a new group through a traversal of the group graph");
+}
+
+// The scenario keys of RelativePlaneOptions (relative_plane.*), with their checks.
+void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
+  f.nested("local_match", o.local_match, true);
+  f.nested("global_match", o.global_match, false);
+  f.field("plane_capacity", o.plane_capacity, "observations kept per RltPlane (thesis 4.4.3.4: 1200)", at_least(1));
+  f.field("min_readings", o.min_readings, "an unassigned RltPlane is grouped once it has this many observations",
+          at_least(1));
+  f.field("unseen_drop", o.unseen_drop, "an unassigned plane unseen this many iterations leaves the list",
+          at_least(0));
+  f.field("unassigned_drop", o.unassigned_drop,
+          "... or still below min_readings this many iterations after it was created", at_least(o.min_readings));
+  // A plane joins or links with min_common shared iterations, which it must be able to have.
+  f.field("min_common", o.min_common, "Rule 7: iterations a plane must share with a group to join it", at_least(1),
+          at_most(o.min_readings, "min_readings"));
+  f.field("link_window", o.link_window, "Rules 8, 9: linking planes seen within this many iterations", at_least(0));
+  f.field("same_length", o.same_length, "two lengths within this are the same size, units", at_least(0.0));
+  f.choice("interval_mode", o.interval_mode, "iterations a pair is compared over (Figs 74/75): pair or group",
+           kIntervalModes);
+  f.nested("rules", o.rules);
+}
+
+// Every violated constraint, fields named as their keys ("local_match.box_margin").
 std::vector<OptionIssue> check(const RelativePlaneOptions& options);
 
 }  // namespace relslam::plane

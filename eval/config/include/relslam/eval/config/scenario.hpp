@@ -6,7 +6,9 @@
 #include "relslam/eval/config/binning_bench_options.hpp"
 #include "relslam/eval/config/ekf2d_options.hpp"
 #include "relslam/eval/config/ekf6d_options.hpp"
+#include "relslam/eval/config/planar_options.hpp"
 #include "relslam/eval/config/victoria_park_options.hpp"
+#include "relslam/plane/options.hpp"
 #include "relslam/point/options.hpp"
 #include "relslam/sim/options.hpp"
 
@@ -25,10 +27,12 @@ enum class ScenarioKind {
   Simulation,        // simulate a path and run the algorithms on it
   BinningBenchmark,  // the synthetic RltBinning benchmark S-BIN (thesis Figs 111–116)
   VictoriaPark,      // the Victoria Park data set (thesis 6.8), run by relslam victoria-park
+  Planar,            // the planar world of walls and the Relative Plane algorithm (thesis 4)
 };
 inline constexpr ScenarioKind kScenarioKinds[] = {ScenarioKind::Simulation, ScenarioKind::BinningBenchmark,
-                                                  ScenarioKind::VictoriaPark};
-std::string_view to_string(ScenarioKind kind);  // "simulation", "binning_benchmark", "victoria_park"
+                                                  ScenarioKind::VictoriaPark, ScenarioKind::Planar};
+// "simulation", "binning_benchmark", "victoria_park", "planar"
+std::string_view to_string(ScenarioKind kind);
 
 // What `relslam simulate` writes besides ground truth and the manifest.
 struct OutputOptions {
@@ -70,9 +74,11 @@ struct Scenario {
   std::string description;  // what the experiment is for (thesis figures)
   ScenarioKind kind = ScenarioKind::Simulation;
   std::uint64_t seed = 1;  // the only source of randomness of a run
-  sim::SimOptions sim;
+  sim::SimOptions sim;                     // the point world (kind simulation)
+  PlanarOptions planar;                    // the planar world (kind planar)
   std::vector<std::string> algorithms;
   point::PointSlamOptions relative_point;  // the Relative Point algorithm's constants
+  plane::RelativePlaneOptions relative_plane;  // the Relative Plane algorithm's (kind planar)
   Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
   Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
   VictoriaParkOptions victoria_park;       // kind victoria_park only

@@ -5,6 +5,7 @@
 // and turns an exception, a non-finite estimate or the time budget into a recorded status
 // instead of a crash (the batch goes on).
 
+#include "relslam/core/plane_object.hpp"
 #include "relslam/eval/algorithms/algorithm.hpp"
 #include "relslam/eval/experiments/iteration_table.hpp"
 #include "relslam/eval/io/tum_writer.hpp"
@@ -21,14 +22,16 @@
 
 namespace relslam::eval {
 
-// A running hash of the frames an algorithm was given (iteration, point and odometry bytes), so
-// a run can show that every algorithm saw the very same observation stream.
+// A running hash of the frames an algorithm was given (iteration, point and odometry bytes, or
+// plane corners and heights), so a run can show that every algorithm saw the very same stream.
 class FrameDigest {
  public:
   void add(const ObservationFrame& frame);
+  void add(const PlaneFrame& frame);
   std::string hex() const;
 
  private:
+  void mix(const void* data, std::size_t bytes);
   std::uint64_t state_ = 0xcbf29ce484222325ULL;
 };
 

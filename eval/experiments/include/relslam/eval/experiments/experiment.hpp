@@ -43,7 +43,8 @@ class Experiment {
   std::vector<std::unique_ptr<AlgorithmRecorder>> recorders_;
 };
 
-// Simulates the scenario into `out` (the files of relslam simulate) and runs its algorithms.
+// Simulates the scenario into `out` (the files of relslam simulate) and runs its algorithms;
+// point world or, for kind "planar", the planar world (planar_experiment.hpp).
 ExperimentResult simulate_and_run(const LoadedScenario& loaded, const std::filesystem::path& out, bool progress);
 // The observations of an MRPT rawlog, with optional ground truth in MRPT's text formats.
 ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& files, const std::filesystem::path& out,

@@ -43,6 +43,15 @@ struct RunStatus {
 // The kind alone: "ok", "failed", "stopped", "ratio", "not run".
 std::string_view to_string(RunStatus::Kind kind);
 
+// The scores of a planar run (spec relative_plane_em.md §7.2) that the point columns lack.
+struct PlanarScores {
+  double final_heading_error_deg = 0;  // at the last iteration with a pose
+  double max_position_error = 0;       // over the iterations with a pose
+  double pose_valid_fraction = 0;      // iterations with a pose / iterations processed
+  int walls_mapped = 0;                // distinct true walls that a mapped plane stands for
+  int walls_seen = 0;                  // distinct true walls observed
+};
+
 struct SummaryRow {
   std::string algorithm;
   RunStatus status;
@@ -57,9 +66,13 @@ struct SummaryRow {
   RuntimeStats runtime;
   double peak_rss_mb = 0;    // the whole process, at the end of this algorithm's run
   std::string input_digest;  // hash of the observation frames it was given
+  // Planar runs: the landmark scores above are those of the mapped planes (the summed and mean
+  // key-point error e_ends, planes on the map, planes sharing their wall), and these are set.
+  std::optional<PlanarScores> planar;
 };
 
-// One row per algorithm; then, when both relative_point and ekf6d ran, a row
+// One row per algorithm; planar rows (SummaryRow::planar) name their columns for planes
+// (final_map_error, planes_on_map, ...) and add the PlanarScores columns. Then, when both relative_point and ekf6d ran, a row
 // "relative_point/ekf6d" (status "ratio") holding their ratios, compared over the iterations
 // both processed (the EKF may have stopped early): `ratio` is that row, computed by the caller.
 void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,

@@ -1,0 +1,51 @@
+#pragma once
+// One algorithm of the Relative Plane half (plane frames in, planar pose and a map of planes
+// out) as the harness drives it; the counterpart of algorithm.hpp for the point half. The
+// adapter only steps its algorithm and exposes what it estimates and its own diagnostics as
+// named columns; scoring, files and status belong to the recorder
+// (experiments/plane_recorder.hpp).
+
+#include "relslam/core/planar_pose.hpp"
+#include "relslam/core/plane_object.hpp"
+#include "relslam/eval/io/csv_writer.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace relslam::eval {
+
+// An estimated plane on the map: its id (what assignment() names) and where it is, world frame.
+using MappedPlane = std::pair<int, PlaneObject>;
+
+class PlaneAlgorithm {
+ public:
+  virtual ~PlaneAlgorithm() = default;
+  virtual const std::string& name() const = 0;
+
+  // The timed work: one step on this frame (planes in the robot frame). Throws when it fails,
+  // which ends its run.
+  virtual void step(const PlaneFrame& frame) = 0;
+  // Untimed, after step(): copy out whatever the accessors below report.
+  virtual void read_out() {}
+
+  // After step(): world_T_robot, or nothing when no pose could be computed this iteration.
+  virtual std::optional<PlanarPose> pose() const = 0;
+  // The estimated plane each observation went to, in input order (-1 none).
+  virtual const std::vector<int>& assignment() const = 0;
+  // The planes on the map now, ascending ids.
+  virtual const std::vector<MappedPlane>& map() const = 0;
+
+  // Its own columns of iterations.csv (after the shared score columns) and this step's fields.
+  virtual std::vector<std::string> iteration_columns() const = 0;
+  virtual void iteration_fields(std::vector<CsvField>& out) const = 0;
+  // planes.csv: its columns after the scored ones, and the fields of estimated plane `id`.
+  virtual std::vector<std::string> plane_columns() const = 0;
+  virtual void plane_fields(int id, std::vector<CsvField>& out) const = 0;
+  // At the end of the run: any tables of its own structure (groups.csv, links.csv) into dir.
+  virtual void write_tables(const std::filesystem::path&) const {}
+};
+
+}  // namespace relslam::eval

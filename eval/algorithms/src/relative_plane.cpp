@@ -1,0 +1,127 @@
+// The Relative Plane algorithm (libslam's RltXPointsS, thesis Chapter 4) as an algorithm of a
+// planar run: its structure counts and the Profiler's part timings (thesis 4.4.2.5) as
+// iterations.csv columns, each RltPlane's observations and group in planes.csv, and its groups
+// and links as groups.csv and links.csv (spec relative_plane_em.md §7.3).
+#include "relative_plane.hpp"
+
+#include "relslam/eval/algorithms/columns.hpp"
+#include "relslam/plane/rlt_xpoints_s.hpp"
+
+#include <numbers>
+
+namespace relslam::eval {
+namespace {
+
+using plane::RelativePlaneStep;
+using plane::RltXPointsS;
+
+CsvField id_field(int id) { return id >= 0 ? csv_field(id) : CsvField{}; }
+
+struct IterationRow {
+  const RelativePlaneStep& step;
+  const RltXPointsS& slam;
+};
+
+const Columns<IterationRow> kIterationColumns = {
+    {"pose_valid", [](const IterationRow& r) { return csv_field(r.step.pose_valid); }},
+    {"rlt_planes", [](const IterationRow& r) { return csv_field(r.slam.planes().size()); }},
+    {"groups", [](const IterationRow& r) { return csv_field(r.slam.xpoints().size()); }},
+    {"links", [](const IterationRow& r) { return csv_field(r.slam.links().size()); }},
+    {"current_group", [](const IterationRow& r) { return id_field(r.step.current_group); }},
+    {"global_matches", [](const IterationRow& r) { return csv_field(r.step.global_matches); }},
+    {"local_matches", [](const IterationRow& r) { return csv_field(r.step.local_matches); }},
+    {"new_planes", [](const IterationRow& r) { return csv_field(r.step.new_planes); }},
+    {"pose_planes", [](const IterationRow& r) { return csv_field(r.step.pose_planes); }},
+    {"unassigned", [](const IterationRow& r) { return csv_field(r.slam.unassigned().size()); }},
+    {"t_add_ms", [](const IterationRow& r) { return csv_field(r.step.timings.add_ms); }},
+    {"t_manage_ms", [](const IterationRow& r) { return csv_field(r.step.timings.manage_ms); }},
+    {"t_compute_ms", [](const IterationRow& r) { return csv_field(r.step.timings.compute_ms); }},
+    {"t_build_ms", [](const IterationRow& r) { return csv_field(r.step.timings.build_ms); }},
+    {"t_pose_ms", [](const IterationRow& r) { return csv_field(r.step.timings.pose_ms); }},
+};
+
+// One RltPlane as planes.csv sees it, after the recorder's scored columns.
+struct PlaneRow {
+  const plane::RltPlane& plane;
+  const plane::MapPlane& mapped;
+};
+
+const Columns<PlaneRow> kPlaneColumns = {
+    {"n_obs", [](const PlaneRow& r) { return csv_field(r.plane.readings()); }},
+    {"group", [](const PlaneRow& r) { return id_field(r.mapped.source); }},
+    {"memberships", [](const PlaneRow& r) { return csv_field(r.plane.refs().size()); }},
+    {"first_iteration", [](const PlaneRow& r) { return csv_field(r.plane.created_iteration()); }},
+    {"last_iteration", [](const PlaneRow& r) { return csv_field(r.plane.last_iteration()); }},
+};
+
+// Ids joined by ';' (groups.csv's planes, links.csv's linking planes).
+std::string joined(const std::vector<int>& ids) {
+  std::string out;
+  for (int id : ids) out += (out.empty() ? "" : ";") + std::to_string(id);
+  return out;
+}
+
+class RelativePlane final : public PlaneAlgorithm {
+ public:
+  RelativePlane(const plane::RelativePlaneOptions& options, const PlanarPose& world_T_start)
+      : slam_(options, world_T_start) {}
+
+  const std::string& name() const override { return name_; }
+
+  void step(const PlaneFrame& frame) override { last_ = slam_.step(frame); }
+
+  void read_out() override {
+    assignment_.assign(last_.assignment.begin(), last_.assignment.end());
+    map_.clear();
+    for (std::size_t id = 0; id < last_.map.size(); ++id)
+      if (last_.map[id].mapped) map_.emplace_back(static_cast<int>(id), last_.map[id].plane);
+  }
+
+  std::optional<PlanarPose> pose() const override {
+    return last_.pose_valid ? std::optional<PlanarPose>(last_.world_T_robot) : std::nullopt;
+  }
+  const std::vector<int>& assignment() const override { return assignment_; }
+  const std::vector<MappedPlane>& map() const override { return map_; }
+
+  std::vector<std::string> iteration_columns() const override { return column_names(kIterationColumns); }
+  void iteration_fields(std::vector<CsvField>& out) const override {
+    append_fields(kIterationColumns, IterationRow{last_, slam_}, out);
+  }
+  std::vector<std::string> plane_columns() const override { return column_names(kPlaneColumns); }
+  void plane_fields(int id, std::vector<CsvField>& out) const override {
+    const auto i = static_cast<std::size_t>(id);
+    append_fields(kPlaneColumns, PlaneRow{slam_.planes().at(i), slam_.map().at(i)}, out);
+  }
+
+  void write_tables(const std::filesystem::path& dir) const override {
+    CsvWriter groups(dir / "groups.csv", {"group_id", "created_iter", "placed", "global_x", "global_z",
+                                          "global_psi_deg", "planes", "base_plane", "adjacent"});
+    for (const plane::RltXPoint& x : slam_.xpoints()) {
+      const PlanarPose& p = x.world_pose();
+      groups.row(x.id(), x.created_iteration(), x.placed(), p.translation.x(), p.translation.y(),
+                 p.heading * 180.0 / std::numbers::pi, joined(x.planes()),
+                 x.planes().empty() ? CsvField{} : csv_field(x.planes().front()), joined(x.adjacent()));
+    }
+    groups.close();
+    CsvWriter links(dir / "links.csv", {"from", "to", "linking_planes", "created_iter", "first"});
+    for (const plane::RltXPointLink& l : slam_.links())
+      links.row(id_field(l.from), id_field(l.to), joined(l.planes), l.created_iteration, l.first);
+    links.close();
+  }
+
+ private:
+  std::string name_ = "relative_plane";
+  RltXPointsS slam_;
+  RelativePlaneStep last_;
+  std::vector<int> assignment_;
+  std::vector<MappedPlane> map_;
+};
+
+}  // namespace
+
+std::unique_ptr<PlaneAlgorithm> make_relative_plane(const plane::RelativePlaneOptions& options,
+                                                    const PlanarPose& world_T_start) {
+  return std::make_unique<RelativePlane>(options, world_T_start);
+}
+
+}  // namespace relslam::eval

@@ -1,0 +1,83 @@
+#pragma once
+// Settings of a planar-world run (scenario kind "planar"; thesis Chapter 4, spec
+// relative_plane_em.md §3): which map, how much of its path, and the sensor and noise that
+// override what the map file was made for. describe() gives each field's key, help and checks
+// (relslam/core/option_fields.hpp).
+
+#include "relslam/core/option_fields.hpp"
+
+#include <numbers>
+#include <string>
+#include <string_view>
+
+namespace relslam::eval {
+
+// "map" in a setting below: keep what the map file says.
+inline constexpr std::string_view kFromMap = "map";
+
+// The sensor's noise (spec §3.6, §3.8). Position and rotation both 0 is the noise-free run.
+struct PlanarNoiseSettings {
+  // map, none, gaussian, uniform or three_valued_rotation (Figs 74/75) [R: gaussian].
+  std::string model = std::string(kFromMap);
+  double position_sigma = 0.01;                                  // σ_p per axis, units [R]
+  double rotation_sigma_rad = 0.3 * std::numbers::pi / 180.0;    // σ_r about the wall midpoint [R]
+  double end_sigma = 0.0;                                        // jitter of each end along the wall [R]
+};
+
+bool is_noise_model_name(const std::string& name);
+
+void describe(OptionsOf<PlanarNoiseSettings> auto& n, auto& f) {
+  f.field("model", n.model, "map, none, gaussian, uniform or three_valued_rotation (thesis Figs 74/75)",
+          holds(is_noise_model_name(n.model), "expected map, none, gaussian, uniform or three_valued_rotation"));
+  f.field("position_sigma", n.position_sigma, "translation noise per axis, units (0 and rotation 0: noise-free)",
+          at_least(0.0));
+  f.degrees("rotation_sigma_deg", n.rotation_sigma_rad, "rotation noise about the wall's midpoint, degrees",
+            at_least(0.0), at_most(45.0));
+  f.field("end_sigma", n.end_sigma, "independent jitter of each wall end along the wall, units (Fig 88)",
+          at_least(0.0));
+}
+
+// The sensor's output kind: plane observations now; point clouds (EM, Chapter 5) come later.
+enum class PlanarSensorKind { Planes };
+inline constexpr PlanarSensorKind kPlanarSensorKinds[] = {PlanarSensorKind::Planes};
+inline std::string_view to_string(PlanarSensorKind) { return "planes"; }
+
+struct PlanarOptions {
+  // A map name from scenarios/maps/ (a_four_planes, b_hallway_unit, c_hallway_back,
+  // d_office_loop, e_motion_room, e1_first_corner) or the path of a map file.
+  std::string map = "a_four_planes";
+  int loops = 0;       // times the path's steps run; 0: as the map says
+  int iterations = 0;  // stop after this many iterations; 0: the whole path
+  std::string frustum = std::string(kFromMap);        // map, small or large (spec §3.3)
+  std::string frustum_shape = std::string(kFromMap);  // map, planar (thesis) or radial (Fig 89's fix)
+  // map, frustum, full_size, always_visible (Map A) or scripted (Map B).
+  std::string visibility = std::string(kFromMap);
+  // Walls seen from behind are dropped [T]; off, each is seen with the face towards the robot
+  // (the thesis's early simulator, Fig 72).
+  bool backface_cull = true;
+  PlanarSensorKind sensor = PlanarSensorKind::Planes;
+  PlanarNoiseSettings noise;
+};
+
+bool is_frustum_name(const std::string& name);        // map, small, large
+bool is_frustum_shape_name(const std::string& name);  // map, planar, radial
+bool is_visibility_name(const std::string& name);     // map, frustum, full_size, always_visible, scripted
+
+// The scenario keys of PlanarOptions (planar.*).
+void describe(OptionsOf<PlanarOptions> auto& o, auto& f) {
+  f.field("map", o.map, "map name in scenarios/maps (a_four_planes, ...) or a map file path",
+          holds(!o.map.empty(), "names no map"));
+  f.field("loops", o.loops, "times the map's path runs; 0: as the map says", at_least(0));
+  f.field("iterations", o.iterations, "stop after this many iterations; 0: the whole path", at_least(0));
+  f.field("frustum", o.frustum, "viewing frustum: map, small or large (spec 3.3)",
+          holds(is_frustum_name(o.frustum), "expected map, small or large"));
+  f.field("frustum_shape", o.frustum_shape, "frustum shape: map, planar (thesis trapezoid) or radial (Fig 89)",
+          holds(is_frustum_shape_name(o.frustum_shape), "expected map, planar or radial"));
+  f.field("visibility", o.visibility, "map, frustum, full_size, always_visible (Map A) or scripted (Map B)",
+          holds(is_visibility_name(o.visibility), "expected map, frustum, full_size, always_visible or scripted"));
+  f.field("backface_cull", o.backface_cull, "drop walls seen from behind (off: the early simulator of Fig 72)");
+  f.choice("sensor", o.sensor, "what the robot reports: planes (points come with EM, Chapter 5)", kPlanarSensorKinds);
+  f.nested("noise", o.noise);
+}
+
+}  // namespace relslam::eval

@@ -1,0 +1,62 @@
+#pragma once
+// The recorder of a plane algorithm's run (the counterpart of algorithm_recorder.hpp for the
+// Relative Plane half): it times each step, scores the pose and the map of planes against the
+// frame's truth (spec relative_plane_em.md §7.1–7.2), writes iterations.csv (the shared score
+// columns, then the algorithm's own), trajectory.tum, planes.csv and the algorithm's tables,
+// hashes the frames, and turns an exception or a non-finite estimate into a recorded status.
+
+#include "relslam/eval/algorithms/plane_algorithm.hpp"
+#include "relslam/eval/experiments/algorithm_recorder.hpp"
+#include "relslam/eval/io/csv_writer.hpp"
+#include "relslam/eval/io/tum_writer.hpp"
+#include "relslam/eval/metrics/plane_map_error.hpp"
+#include "relslam/eval/metrics/run_summary.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <vector>
+
+namespace relslam::eval {
+
+class PlaneRecorder {
+ public:
+  // Shared columns of iterations.csv, before the algorithm's own.
+  static const std::vector<std::string>& score_columns();
+
+  // `walls`: the true walls by id (world frame). Writes into dir (created).
+  PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const std::vector<PlaneObject>& walls,
+                const std::filesystem::path& dir);
+
+  const std::string& name() const { return algorithm_->name(); }
+  void step(const PlaneFrame& observation, const PlaneTruthFrame& truth);
+  // Closes the files, writes planes.csv and the algorithm's tables; the row for summary.csv.
+  SummaryRow finish();
+  const PlaneAlgorithm& algorithm() const { return *algorithm_; }
+  // The estimated pose of every iteration processed so far (nothing where it had none).
+  const std::vector<std::optional<PlanarPose>>& trajectory() const { return estimates_; }
+  const WallVotes& votes() const { return votes_; }
+
+ private:
+  bool running() const { return status_.kind == RunStatus::Kind::NotRun || status_.kind == RunStatus::Kind::Ok; }
+
+  std::unique_ptr<PlaneAlgorithm> algorithm_;
+  const std::vector<PlaneObject>& walls_;
+  std::filesystem::path dir_;
+  CsvWriter iterations_;
+  TumWriter trajectory_;
+  FrameDigest digest_;
+  RunStatus status_;
+  WallVotes votes_;
+  std::set<int> walls_seen_;
+  std::vector<std::optional<PlanarPose>> estimates_;
+  std::vector<PlanarPose> truths_;
+  std::vector<double> runtimes_ms_;
+  std::vector<double> mean_map_errors_;
+  PlaneMapError last_map_error_;
+  std::optional<PlanarPoseError> last_pose_error_;
+  double max_position_error_ = 0;
+  std::vector<CsvField> fields_;  // reused row buffer
+};
+
+}  // namespace relslam::eval

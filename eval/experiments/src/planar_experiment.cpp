@@ -1,0 +1,47 @@
+#include "relslam/eval/experiments/planar_experiment.hpp"
+
+#include "relslam/eval/algorithms/registry.hpp"
+#include "relslam/eval/io/progress.hpp"
+#include "relslam/eval/sources/planar_simulation_source.hpp"
+
+#include <chrono>
+
+namespace relslam::eval {
+
+PlanarExperiment::PlanarExperiment(const LoadedScenario& loaded, PlaneFrameSource& source,
+                                   const std::filesystem::path& out)
+    : source_(source), out_(out) {
+  require_algorithms(loaded);
+  const PlaneAlgorithmContext context{loaded.scenario, source.start()};
+  for (const std::string& name : loaded.scenario.algorithms)
+    recorders_.push_back(
+        std::make_unique<PlaneRecorder>(make_plane_algorithm(name, context), source.walls(), out / name));
+}
+
+ExperimentResult PlanarExperiment::run(bool progress) {
+  const auto start = std::chrono::steady_clock::now();
+  Progress bar(source_.label(), source_.frames(), progress);
+  source_.stream([&](const PlaneFrame& observation, const PlaneTruthFrame& truth) {
+    for (auto& recorder : recorders_) recorder->step(observation, truth);
+    bar.update(observation.iteration + 1);
+  });
+  ExperimentResult result;
+  for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
+  write_summary(out_ / "summary.csv", result.rows);
+  bar.finish();
+  result.iterations = static_cast<int>(source_.frames());
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.source = source_.describe();
+  return result;
+}
+
+ExperimentResult simulate_planar_and_run(const LoadedScenario& loaded, const std::filesystem::path& out,
+                                         bool progress) {
+  require_algorithms(loaded);
+  PlanarSimulationSource source(loaded);
+  source.record_into(out);
+  PlanarExperiment experiment(loaded, source, out);
+  return experiment.run(progress);
+}
+
+}  // namespace relslam::eval

@@ -1,0 +1,165 @@
+#include "relslam/eval/experiments/plane_recorder.hpp"
+
+#include "relslam/eval/metrics/trajectory_error.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+namespace relslam::eval {
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+const std::filesystem::path& created(const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::vector<std::string> with_own(std::vector<std::string> columns, const std::vector<std::string>& own) {
+  columns.insert(columns.end(), own.begin(), own.end());
+  return columns;
+}
+
+bool finite(const PlanarPose& p) { return p.translation.allFinite() && std::isfinite(p.heading); }
+bool finite(const PlaneObject& p) { return p.a.allFinite() && p.b.allFinite(); }
+
+}  // namespace
+
+const std::vector<std::string>& PlaneRecorder::score_columns() {
+  static const std::vector<std::string> columns = {
+      "iteration",  "map_error",    "mean_map_error", "position_error", "heading_error_deg",
+      "ex",         "ez",           "runtime_ms",     "planes_in_map",  "visible_planes"};
+  return columns;
+}
+
+PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const std::vector<PlaneObject>& walls,
+                             const std::filesystem::path& dir)
+    : algorithm_(std::move(algorithm)),
+      walls_(walls),
+      dir_(created(dir)),
+      iterations_(dir_ / "iterations.csv", with_own(score_columns(), algorithm_->iteration_columns())),
+      trajectory_(dir_ / "trajectory.tum") {}
+
+void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& truth) {
+  digest_.add(observation);
+  if (!running()) return;  // failed: the rest of the stream is not processed
+  const int k = observation.iteration;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    algorithm_->step(observation);
+  } catch (const std::exception& e) {  // a bad frame ends this algorithm's run, not the batch
+    status_ = RunStatus::failed(k, e.what());
+    return;
+  }
+  const double runtime_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  status_ = RunStatus::ok();
+
+  // Scoring, outside the timed region.
+  algorithm_->read_out();
+  const std::optional<PlanarPose> pose = algorithm_->pose();
+  const std::vector<MappedPlane>& map = algorithm_->map();
+  if ((pose && !finite(*pose)) || !std::all_of(map.begin(), map.end(), [](const auto& m) { return finite(m.second); })) {
+    status_ = RunStatus::failed(k, "the estimate became NaN");
+    return;
+  }
+  const std::vector<int>& assignment = algorithm_->assignment();
+  for (std::size_t i = 0; i < truth.planes.size(); ++i) {
+    walls_seen_.insert(truth.planes[i].wall_id);
+    if (i < assignment.size()) votes_.add(assignment[i], truth.planes[i].wall_id);
+  }
+  last_map_error_ = plane_map_error(map, votes_, walls_);
+  if (last_map_error_.scored > 0) mean_map_errors_.push_back(last_map_error_.mean);
+  std::optional<PlanarPoseError> pose_error;
+  if (pose) {
+    pose_error = planar_pose_error(*pose, truth.world_T_robot);
+    last_pose_error_ = pose_error;
+    max_position_error_ = std::max(max_position_error_, pose_error->position);
+    trajectory_.write(static_cast<double>(k), rigid_from_planar(*pose));
+  }
+  estimates_.push_back(pose);
+  truths_.push_back(truth.world_T_robot);
+  runtimes_ms_.push_back(runtime_ms);
+
+  fields_ = {static_cast<long long>(k),
+             last_map_error_.sum,
+             last_map_error_.scored > 0 ? CsvField{last_map_error_.mean} : CsvField{},
+             pose_error ? CsvField{pose_error->position} : CsvField{},
+             pose_error ? CsvField{pose_error->heading_rad * kDeg} : CsvField{},
+             pose_error ? CsvField{pose_error->axes.x()} : CsvField{},
+             pose_error ? CsvField{pose_error->axes.y()} : CsvField{},
+             runtime_ms,
+             static_cast<long long>(map.size()),
+             static_cast<long long>(observation.planes.size())};
+  algorithm_->iteration_fields(fields_);
+  iterations_.row_fields(fields_);
+}
+
+SummaryRow PlaneRecorder::finish() {
+  iterations_.close();
+  trajectory_.close();
+
+  const std::vector<MappedPlane>& map = algorithm_->map();
+  std::vector<std::string> columns = {"id",    "true_wall", "kp1_x",     "kp1_z",  "kp2_x",     "kp2_z",
+                                      "length", "e_ends",   "e_ang_deg", "e_perp", "len_ratio"};
+  CsvWriter planes(dir_ / "planes.csv", with_own(columns, algorithm_->plane_columns()));
+  std::map<int, int> planes_per_wall;
+  for (const auto& [id, plane] : map) {
+    const int wall = votes_.wall_of(id);
+    const bool known = wall >= 0 && static_cast<std::size_t>(wall) < walls_.size();
+    if (known) ++planes_per_wall[wall];
+    const std::optional<PlaneError> e =
+        known ? std::optional<PlaneError>(plane_error(plane, walls_[static_cast<std::size_t>(wall)])) : std::nullopt;
+    fields_ = {static_cast<long long>(id),
+               known ? CsvField{static_cast<long long>(wall)} : CsvField{},
+               plane.a.x(),
+               plane.a.y(),
+               plane.b.x(),
+               plane.b.y(),
+               plane.length(),
+               e ? CsvField{e->ends} : CsvField{},
+               e ? CsvField{e->angle_rad * kDeg} : CsvField{},
+               e ? CsvField{e->perpendicular} : CsvField{},
+               e ? CsvField{e->length_ratio} : CsvField{}};
+    algorithm_->plane_fields(id, fields_);
+    planes.row_fields(fields_);
+  }
+  planes.close();
+  algorithm_->write_tables(dir_);
+
+  SummaryRow row;
+  row.algorithm = name();
+  row.status = status_;
+  row.iterations = static_cast<int>(estimates_.size());
+  row.final_landmark_error = last_map_error_.sum;
+  row.final_mean_landmark_error = last_map_error_.scored > 0 ? last_map_error_.mean : std::nan("");
+  double sum = 0;
+  for (double e : mean_map_errors_) sum += e;
+  row.mean_landmark_error = mean_map_errors_.empty() ? std::nan("") : sum / mean_map_errors_.size();
+  row.final_position_error = last_pose_error_ ? last_pose_error_->position : std::nan("");
+  std::vector<Rigid3> estimated, true_poses;
+  for (std::size_t i = 0; i < estimates_.size(); ++i)
+    if (estimates_[i]) {
+      estimated.push_back(rigid_from_planar(*estimates_[i]));
+      true_poses.push_back(rigid_from_planar(truths_[i]));
+    }
+  row.trajectory = trajectory_error(estimated, true_poses);
+  row.landmarks_on_map = static_cast<int>(map.size());
+  for (const auto& [wall, n] : planes_per_wall) row.duplicates += n - 1;
+  row.runtime = runtime_stats(runtimes_ms_);
+  row.peak_rss_mb = peak_rss_mb();
+  row.input_digest = digest_.hex();
+  PlanarScores scores;
+  scores.final_heading_error_deg = last_pose_error_ ? last_pose_error_->heading_rad * kDeg : std::nan("");
+  scores.max_position_error = max_position_error_;
+  scores.pose_valid_fraction =
+      estimates_.empty() ? 0.0 : static_cast<double>(estimated.size()) / static_cast<double>(estimates_.size());
+  scores.walls_mapped = static_cast<int>(planes_per_wall.size());
+  walls_seen_.erase(-1);
+  scores.walls_seen = static_cast<int>(walls_seen_.size());
+  row.planar = scores;
+  return row;
+}
+
+}  // namespace relslam::eval

@@ -1,0 +1,69 @@
+#pragma once
+// The simulated planar world as a plane frame source (scenario kind "planar"): the scenario's
+// map file with its planar.* settings applied, simulated frame by frame; given a run folder,
+// the files of `relslam simulate` are written there as frames pass.
+
+#include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/io/csv_writer.hpp"
+#include "relslam/eval/io/tum_writer.hpp"
+#include "relslam/eval/sources/plane_frame_source.hpp"
+#include "relslam/sim/planar_simulator.hpp"
+
+#include <filesystem>
+#include <memory>
+
+namespace relslam::eval {
+
+// Where the scenario's planar.map points: an existing file (as given, or beside the scenario
+// file), or a name in the scenario folder's maps/ or the repository's scenarios/maps/.
+// InputError at planar.map, listing the known names, when there is none.
+std::filesystem::path resolve_planar_map(const LoadedScenario& loaded);
+
+// The scenario's map with its planar.* settings applied (loops, frustum, visibility, culling,
+// noise). Throws InputError naming the map file or the key at fault, also when the robot would
+// never see two walls at once (the algorithm would have nothing to relate, Rule 7).
+sim::PlanarMap build_planar_map(const LoadedScenario& loaded);
+
+// What the planar simulation produced (after stream()).
+struct PlanarSimulationSummary {
+  int iterations = 0;
+  int walls = 0;
+  long long observations = 0;  // planes reported over the run
+  double visible_mean = 0;     // planes per iteration
+  int visible_min = 0;
+  int visible_max = 0;
+  double distance_travelled = 0;
+};
+
+class PlanarSimulationSource final : public PlaneFrameSource {
+ public:
+  explicit PlanarSimulationSource(const LoadedScenario& loaded);
+  ~PlanarSimulationSource() override;
+  // Before stream(): write ground_truth_walls.csv now, and ground_truth_path.tum and
+  // plane_observations.csv as frames pass.
+  void record_into(const std::filesystem::path& dir);
+
+  std::string label() const override { return "run " + name_; }
+  long long frames() const override { return frames_; }
+  const std::vector<PlaneObject>& walls() const override { return walls_; }
+  PlanarPose start() const override { return simulator_.path().world_T_robot(0); }
+  void stream(const Consumer& consume) override;
+  nlohmann::json describe() const override;
+
+  const sim::PlanarMap& map() const { return map_; }
+  const sim::PlanarSimulator& simulator() const { return simulator_; }
+  const PlanarSimulationSummary& summary() const { return summary_; }
+
+ private:
+  struct Recorder;
+  std::string name_;
+  std::filesystem::path map_file_;
+  sim::PlanarMap map_;
+  sim::PlanarSimulator simulator_;
+  int frames_ = 0;
+  std::vector<PlaneObject> walls_;
+  std::unique_ptr<Recorder> recorder_;
+  PlanarSimulationSummary summary_;
+};
+
+}  // namespace relslam::eval

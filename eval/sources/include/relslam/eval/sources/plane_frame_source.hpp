@@ -1,0 +1,38 @@
+#pragma once
+// A source of plane frames for the Relative Plane half (thesis Chapter 4): the planar
+// simulator now, EM on simulated point clouds next (Chapter 5). Like FrameSource for the point
+// half, each frame pairs what the algorithm may see (PlaneFrame) with the truth only scoring
+// may read (PlaneTruthFrame), so the truth travels with the frames (style.md 2.3).
+
+#include "relslam/core/planar_pose.hpp"
+#include "relslam/core/plane_object.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+class PlaneFrameSource {
+ public:
+  using Consumer = std::function<void(const PlaneFrame& observation, const PlaneTruthFrame& truth)>;
+
+  virtual ~PlaneFrameSource() = default;
+  // What progress lines call it ("run p-four-planes").
+  virtual std::string label() const = 0;
+  // Frames stream() will give.
+  virtual long long frames() const = 0;
+  // The true walls, world frame, indexed by wall id (what PlaneTruth::wall_id names).
+  virtual const std::vector<PlaneObject>& walls() const = 0;
+  // world_T_robot of the first frame: the map's anchor, which the algorithm is given (Rule 4,
+  // "(0,0) or some other inputted coordinate").
+  virtual PlanarPose start() const = 0;
+  // Calls consume for every frame in iteration order, on the calling thread. Once only.
+  virtual void stream(const Consumer& consume) = 0;
+  // What the frames were, for manifest.json's "source" (complete after stream()).
+  virtual nlohmann::json describe() const = 0;
+};
+
+}  // namespace relslam::eval

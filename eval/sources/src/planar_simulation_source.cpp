@@ -1,0 +1,163 @@
+#include "relslam/eval/sources/planar_simulation_source.hpp"
+
+#include "relslam/eval/io/planar_map_file.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace relslam::eval {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The repository's maps: a name works from any working directory.
+const fs::path kRepositoryMaps = fs::path(RELSLAM_SOURCE_DIR) / "scenarios" / "maps";
+
+bool is_file(const fs::path& path) {
+  std::error_code ec;
+  return fs::is_regular_file(path, ec);
+}
+
+std::string known_map_names(const std::vector<fs::path>& folders) {
+  std::vector<std::string> names;
+  for (const fs::path& folder : folders) {
+    std::error_code ec;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec))
+      if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return list.empty() ? "none found" : list;
+}
+
+}  // namespace
+
+fs::path resolve_planar_map(const LoadedScenario& loaded) {
+  const std::string& map = loaded.scenario.planar.map;
+  const fs::path beside = loaded.file.empty() ? fs::path() : fs::path(loaded.file).parent_path();
+  const std::vector<fs::path> candidates = {map, beside / map, beside / "maps" / (map + ".json"),
+                                            kRepositoryMaps / (map + ".json")};
+  for (const fs::path& candidate : candidates)
+    if (is_file(candidate)) return candidate;
+  throw loaded.error("planar.map", "no map file \"" + map + "\" and no map of that name (known: " +
+                                       known_map_names({beside / "maps", kRepositoryMaps}) + ")");
+}
+
+sim::PlanarMap build_planar_map(const LoadedScenario& loaded) {
+  if (loaded.scenario.kind != ScenarioKind::Planar)
+    throw loaded.error("kind", "this scenario is not a planar world (kind \"planar\")");
+  const PlanarOptions& o = loaded.scenario.planar;
+  const fs::path file = resolve_planar_map(loaded);
+  sim::PlanarMap map = read_planar_map(file);
+
+  if (o.loops > 0) map.path.loops = o.loops;
+  sim::PlaneSensorOptions& sensor = map.sensor;
+  // The names were checked when the scenario was loaded (planar_options.cpp).
+  if (o.frustum != kFromMap) {
+    const sim::FrustumShape shape = sensor.frustum.shape;
+    sensor.frustum = *sim::frustum_preset(o.frustum);
+    sensor.frustum.shape = shape;
+  }
+  if (o.frustum_shape != kFromMap) sensor.frustum.shape = *sim::parse_frustum_shape(o.frustum_shape);
+  if (o.visibility != kFromMap) sensor.mode = *sim::parse_plane_visibility(o.visibility);
+  sensor.backface_cull = o.backface_cull;
+  const sim::PlaneNoiseModel model =
+      o.noise.model == kFromMap ? sensor.noise.model : *sim::parse_plane_noise_model(o.noise.model);
+  const bool silent = o.noise.position_sigma == 0 && o.noise.rotation_sigma_rad == 0 && o.noise.end_sigma == 0;
+  sensor.noise = model == sim::PlaneNoiseModel::None || silent
+                     ? sim::PlaneNoiseOptions::none()
+                     : sim::PlaneNoiseOptions{model, o.noise.position_sigma, o.noise.rotation_sigma_rad,
+                                              o.noise.end_sigma};
+
+  const std::string where = file.string() + " with the scenario's planar settings";
+  try {
+    if (!sim::first_iteration_seeing(map, 2))
+      throw loaded.error("planar.map", where +
+                                           ": the robot never sees two walls at once along its path, so the "
+                                           "algorithm has nothing to relate (thesis Rule 7)");
+  } catch (const OptionError& e) {
+    throw loaded.error("planar.map", where + ": " + e.field() + ": " + e.problem());
+  }
+  return map;
+}
+
+struct PlanarSimulationSource::Recorder {
+  explicit Recorder(const fs::path& dir)
+      : path(dir / "ground_truth_path.tum"),
+        observations(dir / "plane_observations.csv", {"iteration", "index", "true_wall", "kp1_x", "kp1_z", "kp2_x",
+                                                      "kp2_z", "kp1_true_end", "kp2_true_end"}) {}
+  TumWriter path;
+  CsvWriter observations;
+};
+
+PlanarSimulationSource::PlanarSimulationSource(const LoadedScenario& loaded)
+    : name_(loaded.scenario.name),
+      map_file_(resolve_planar_map(loaded)),
+      map_(build_planar_map(loaded)),
+      simulator_(map_, loaded.scenario.seed) {
+  const int limit = loaded.scenario.planar.iterations;
+  frames_ = limit > 0 ? std::min(limit, simulator_.iterations()) : simulator_.iterations();
+  int max_id = -1;
+  for (const sim::Wall& w : map_.world.walls) max_id = std::max(max_id, w.id);
+  walls_.assign(static_cast<std::size_t>(max_id + 1), PlaneObject{});
+  for (const sim::Wall& w : map_.world.walls) walls_[static_cast<std::size_t>(w.id)] = {w.a, w.b, 0.0, w.height, 0};
+}
+
+PlanarSimulationSource::~PlanarSimulationSource() = default;
+
+void PlanarSimulationSource::record_into(const fs::path& dir) {
+  CsvWriter walls(dir / "ground_truth_walls.csv",
+                  {"id", "a_x", "a_z", "b_x", "b_z", "length", "height", "normal_x", "normal_z", "one_sided"});
+  for (const sim::Wall& w : map_.world.walls)
+    walls.row(w.id, w.a.x(), w.a.y(), w.b.x(), w.b.y(), w.length(), w.height, w.normal().x(), w.normal().y(),
+              w.one_sided);
+  walls.close();
+  recorder_ = std::make_unique<Recorder>(dir);
+}
+
+void PlanarSimulationSource::stream(const Consumer& consume) {
+  summary_ = {};
+  summary_.iterations = frames_;
+  summary_.walls = static_cast<int>(map_.world.walls.size());
+  summary_.visible_min = frames_ > 0 ? std::numeric_limits<int>::max() : 0;
+  for (int k = 0; k < frames_; ++k) {
+    const sim::PlaneSimFrame frame = simulator_.frame(k);
+    const int seen = static_cast<int>(frame.observation.planes.size());
+    summary_.observations += seen;
+    summary_.visible_min = std::min(summary_.visible_min, seen);
+    summary_.visible_max = std::max(summary_.visible_max, seen);
+    if (k > 0)
+      summary_.distance_travelled +=
+          (frame.truth.world_T_robot.translation - simulator_.path().world_T_robot(k - 1).translation).norm();
+    if (recorder_) {
+      recorder_->path.write(k, rigid_from_planar(frame.truth.world_T_robot));
+      for (int i = 0; i < seen; ++i) {
+        const PlaneObject& p = frame.observation.planes[static_cast<std::size_t>(i)];
+        const PlaneTruth& t = frame.truth.planes[static_cast<std::size_t>(i)];
+        recorder_->observations.row(k, i, t.wall_id, p.a.x(), p.a.y(), p.b.x(), p.b.y(), t.a_is_wall_end,
+                                    t.b_is_wall_end);
+      }
+    }
+    consume(frame.observation, frame.truth);
+  }
+  summary_.visible_mean = frames_ > 0 ? static_cast<double>(summary_.observations) / frames_ : 0.0;
+  if (recorder_) {
+    recorder_->path.close();
+    recorder_->observations.close();
+  }
+}
+
+nlohmann::json PlanarSimulationSource::describe() const {
+  return {{"planar_simulation",
+           {{"map", map_.name},
+            {"map_file", map_file_.string()},
+            {"iterations", summary_.iterations},
+            {"walls", summary_.walls},
+            {"observations", summary_.observations},
+            {"visible_mean", summary_.visible_mean},
+            {"distance_travelled", summary_.distance_travelled}}}};
+}
+
+}  // namespace relslam::eval
