@@ -21,6 +21,7 @@
 #include <fstream>
 #include <map>
 #include <numeric>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -55,8 +56,8 @@ double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-int mapped_planes(const plane::RltXPointsS& slam) {
-  return static_cast<int>(std::count_if(slam.map().begin(), slam.map().end(), [](const auto& m) { return m.mapped; }));
+int mapped_planes(std::span<const plane::MapPlane> map) {
+  return static_cast<int>(std::count_if(map.begin(), map.end(), [](const plane::MapPlane& m) { return m.mapped; }));
 }
 
 // What one step cost and the map's size after it (E32's runtime.csv row).
@@ -76,11 +77,10 @@ std::vector<StepSample> timed_run(const Run& run) {
     const auto start = std::chrono::steady_clock::now();
     const plane::RelativePlaneStep step = slam.step(frame);
     const double ms = ms_since(start);
-    benchmark::DoNotOptimize(step.world_T_robot);
-    samples.push_back({ms, step.timings, static_cast<int>(frame.planes.size()), static_cast<int>(step.map.size()), 0});
+    // Counted after the clock stopped: the count is O(map) and is not the algorithm's work.
+    samples.push_back({ms, step.timings, static_cast<int>(frame.planes.size()), static_cast<int>(step.map.size()),
+                       mapped_planes(step.map)});
   }
-  // Counting mapped planes each step would add O(map) work to the loop; the final count is enough here.
-  if (!samples.empty()) samples.back().mapped = mapped_planes(slam);
   return samples;
 }
 
@@ -161,33 +161,31 @@ void BM_E32MapDLoops(benchmark::State& state) {
   sim::PlanarMap map = map_file("d_office_loop.json");
   map.path.loops = static_cast<int>(state.range(0));
   const Run run = simulate(map);
-  // Mapped planes per step: a second, untimed pass (the count is O(map) per step and must not
-  // land in the timed figures).
-  std::vector<int> mapped;
-  {
-    plane::RltXPointsS slam({}, run.world_T_start);
-    for (const PlaneFrame& frame : run.frames) {
-      slam.step(frame);
-      mapped.push_back(mapped_planes(slam));
-    }
-  }
+  // Three runs of the same input (the algorithm is deterministic, so the steps line up); each
+  // step keeps its fastest time, which strips preemption and load from other processes on a
+  // shared machine and leaves the algorithm's own trend with the map size.
+  e32_samples.clear();
   for (auto _ : state) {
-    e32_samples = timed_run(run);
-    state.SetIterationTime(std::accumulate(e32_samples.begin(), e32_samples.end(), 0.0,
-                                           [](double t, const StepSample& s) { return t + s.ms; }) /
-                           1e3);
+    const std::vector<StepSample> samples = timed_run(run);
+    state.SetIterationTime(
+        std::accumulate(samples.begin(), samples.end(), 0.0, [](double t, const StepSample& s) { return t + s.ms; }) /
+        1e3);
+    if (e32_samples.empty()) {
+      e32_samples = samples;
+      continue;
+    }
+    for (std::size_t t = 0; t < samples.size(); ++t)
+      if (samples[t].ms < e32_samples[t].ms) e32_samples[t] = samples[t];
   }
-  // Same input gives the same run (RltXPointsS is deterministic), so the counts line up.
-  for (std::size_t t = 0; t < e32_samples.size(); ++t) e32_samples[t].mapped = mapped[t];
   e32_loops = map.path.loops;
   std::vector<double> ms;
   for (const StepSample& s : e32_samples) ms.push_back(s.ms);
   state.counters["iterations"] = static_cast<double>(ms.size());
-  state.counters["median_ms"] = quantile(ms, 0.5);
+  state.counters["median_ms"] = quantile(ms, 0.5);  // of the per-step fastest times
   state.counters["rlt_planes"] = e32_samples.back().rlt_planes;
   state.counters["mapped"] = e32_samples.back().mapped;
 }
-BENCHMARK(BM_E32MapDLoops)->Arg(8)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_E32MapDLoops)->Arg(8)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // One table: samples grouped by key(sample) into bins of `width`; ms per iteration per bin, and
 // the mean of each Profiler part (thesis 4.4.2.5) in microseconds, to show which part grows.
@@ -227,8 +225,10 @@ void print_maps() {
 
 void print_e32() {
   if (e32_samples.empty()) return;
-  std::printf("\nE32 (relative_plane_em.md §6.1): Map D, %d loops + the closing part, %zu iterations, seed 1\n",
-              e32_loops, e32_samples.size());
+  std::printf(
+      "\nE32 (relative_plane_em.md §6.1): Map D, %d loops + the closing part, %zu iterations, seed 1; each step's "
+      "fastest of 3 runs\n",
+      e32_loops, e32_samples.size());
   print_bins("ms per iteration by RltPlanes (the map's size; flat = does not grow with the map)", 20,
              [](const StepSample& s) { return s.rlt_planes; });
   print_bins("ms per iteration by mapped planes", 20, [](const StepSample& s) { return s.mapped; });
