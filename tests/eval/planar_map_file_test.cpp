@@ -50,9 +50,9 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(PlanarMapFile, EveryShippedMapLoads) {
-  const std::pair<const char*, std::size_t> maps[] = {{"a_four_planes.json", 4},   {"b_hallway_unit.json", 16},
-                                                      {"c_hallway_back.json", 19}, {"d_office_loop.json", 36},
-                                                      {"e_motion_room.json", 10},  {"e1_first_corner.json", 10}};
+  const std::pair<const char*, std::size_t> maps[] = {
+      {"a_four_planes.json", 4},  {"b_hallway_unit.json", 16},  {"c_hallway_back.json", 19}, {"d_office_loop.json", 36},
+      {"e_motion_room.json", 10}, {"e1_first_corner.json", 10}, {"e01_two_walls.json", 2}};
   std::size_t files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenarios/maps")))
     files += entry.path().extension() == ".json";

@@ -1,0 +1,259 @@
+// relslam run / simulate on planar scenarios (issue 12 §3, §4): the files and columns a run
+// writes, exactness of noise-free runs through the whole harness, determinism, and clear
+// errors (exit 2) for bad maps and scenarios.
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace relslam {
+namespace {
+
+using test::read_csv;
+using test::run_relslam;
+using Table = test::CsvTable;
+
+// Spec §8: noise-free runs keep map and pose within 1e-6 wherever the pose is valid.
+constexpr double kNoiseFree = 1e-6;
+
+std::vector<std::string> run_args(const std::string& scenario, const std::filesystem::path& out,
+                                  std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"run", test::source_path("scenarios/" + scenario).string(), "--out", out.string(),
+                                   "-q"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+const std::vector<std::string> kNoiseOff = {"--set", "planar.noise.position_sigma=0", "--set",
+                                            "planar.noise.rotation_sigma_deg=0"};
+
+std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+std::vector<std::string> first(const std::vector<std::string>& header, std::size_t n) {
+  return {header.begin(), header.begin() + static_cast<std::ptrdiff_t>(std::min(n, header.size()))};
+}
+
+// Every iteration with a pose: pose and map error below kNoiseFree. Returns the rows with a pose.
+int expect_exact_where_pose_valid(const std::filesystem::path& iterations_csv) {
+  const Table t = read_csv(iterations_csv);
+  int valid = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    if (t.text(i, "pose_valid") != "1") continue;
+    ++valid;
+    EXPECT_LT(t.number(i, "position_error"), kNoiseFree) << "iteration " << t.text(i, "iteration");
+    EXPECT_LT(t.number(i, "heading_error_deg"), kNoiseFree) << "iteration " << t.text(i, "iteration");
+    EXPECT_LT(t.number(i, "map_error"), kNoiseFree) << "iteration " << t.text(i, "iteration");
+  }
+  return valid;
+}
+
+TEST(PlanarRun, WritesTheFilesAndColumnsOfTheIssue) {
+  test::ScratchDir dir;
+  const auto r = run_relslam(run_args("p-hallway.json", dir / "run"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table iterations = read_csv(dir / "run/relative_plane/iterations.csv");
+  EXPECT_EQ(first(iterations.header, 16),
+            (std::vector<std::string>{"iteration", "map_error", "mean_map_error", "position_error", "heading_error_deg",
+                                      "ex", "ez", "runtime_ms", "planes_in_map", "visible_planes", "pose_valid",
+                                      "rlt_planes", "groups", "links", "current_group", "global_matches"}));
+  for (const char* timing : {"t_add_ms", "t_manage_ms", "t_compute_ms", "t_build_ms", "t_pose_ms"})
+    iterations.column(timing);
+  EXPECT_EQ(iterations.rows.size(), 761u);  // Map B: MOVE 38 at 0.05 per iteration, plus the start
+  const Table planes = read_csv(dir / "run/relative_plane/planes.csv");
+  EXPECT_EQ(first(planes.header, 13),
+            (std::vector<std::string>{"id", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z", "length", "e_ends",
+                                      "e_ang_deg", "e_perp", "len_ratio", "n_obs", "group"}));
+  EXPECT_EQ(planes.rows.size(), 16u);                                          // every wall of Map B, once
+  EXPECT_GT(read_csv(dir / "run/relative_plane/groups.csv").rows.size(), 1u);  // Fig 71: several groups
+  EXPECT_GT(read_csv(dir / "run/relative_plane/links.csv").rows.size(), 1u);
+  EXPECT_FALSE(test::read_lines(dir / "run/relative_plane/trajectory.tum").empty());
+  const Table summary = read_csv(dir / "run/summary.csv");
+  ASSERT_EQ(summary.rows.size(), 1u);
+  EXPECT_EQ(summary.text(0, "algorithm"), "relative_plane");
+  EXPECT_EQ(summary.text(0, "status"), "ok");
+  EXPECT_EQ(summary.text(0, "planes_on_map"), "16");
+  EXPECT_EQ(summary.text(0, "walls_mapped"), "16");
+  EXPECT_EQ(summary.text(0, "duplicates"), "0");
+  for (const char* file :
+       {"ground_truth_walls.csv", "ground_truth_path.tum", "plane_observations.csv", "manifest.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "run" / file)) << file;
+}
+
+TEST(PlanarRun, NoiseFreeFourPlanesAreExactWhereverThePoseIsValid) {
+  test::ScratchDir dir;
+  const auto r =
+      run_relslam(run_args("p-four-planes.json", dir / "run", concat(kNoiseOff, {"--set", "planar.loops=2"})));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(expect_exact_where_pose_valid(dir / "run/relative_plane/iterations.csv"), 1000);
+}
+
+TEST(PlanarRun, NoiseFreeHallwayIsExactWhereverThePoseIsValid) {
+  test::ScratchDir dir;
+  const auto r = run_relslam(run_args("p-hallway.json", dir / "run"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(expect_exact_where_pose_valid(dir / "run/relative_plane/iterations.csv"), 700);
+}
+
+// Map C (Fig 72): down the hallway, turn on the line of the edge-on wall, back. Rule 11 attaches
+// the return leg's observations to the RltPlanes of the way out: one plane per wall.
+TEST(PlanarRun, NoiseFreeHallwayBackIsExactAndTheReturnLegMakesNoDuplicates) {
+  test::ScratchDir dir;
+  const auto r = run_relslam(run_args("p-hallway-back.json", dir / "run", kNoiseOff));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(expect_exact_where_pose_valid(dir / "run/relative_plane/iterations.csv"), 1000);
+  const Table summary = read_csv(dir / "run/summary.csv");
+  EXPECT_EQ(summary.text(0, "duplicates"), "0");
+  EXPECT_EQ(summary.text(0, "planes_on_map"), summary.text(0, "walls_mapped"));
+  const Table iterations = read_csv(dir / "run/relative_plane/iterations.csv");
+  const std::size_t last = iterations.rows.size() - 1;
+  EXPECT_GT(iterations.number(last, "global_matches") + 0, -1);  // the column is filled
+  EXPECT_EQ(iterations.text(last, "rlt_planes"), summary.text(0, "walls_seen"));
+}
+
+// Same scenario and seed: the same bytes in every file but the measured times.
+TEST(PlanarRun, SameSeedGivesTheSameFiles) {
+  test::ScratchDir dir;
+  const std::vector<std::string> quick = {"--set", "planar.loops=1"};
+  ASSERT_EQ(run_relslam(run_args("p-four-planes.json", dir / "a", quick)).exit_code, 0);
+  ASSERT_EQ(run_relslam(run_args("p-four-planes.json", dir / "b", quick)).exit_code, 0);
+  for (const char* file :
+       {"plane_observations.csv", "ground_truth_walls.csv", "ground_truth_path.tum", "relative_plane/planes.csv",
+        "relative_plane/groups.csv", "relative_plane/links.csv", "relative_plane/trajectory.tum"})
+    EXPECT_EQ(test::read_file(dir / "a" / file), test::read_file(dir / "b" / file)) << file;
+  const Table a = read_csv(dir / "a/relative_plane/iterations.csv"),
+              b = read_csv(dir / "b/relative_plane/iterations.csv");
+  ASSERT_EQ(a.header, b.header);
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  for (std::size_t c = 0; c < a.header.size(); ++c) {
+    const std::string& name = a.header[c];
+    if (name == "runtime_ms" || name.rfind("t_", 0) == 0) continue;
+    for (std::size_t i = 0; i < a.rows.size(); ++i) ASSERT_EQ(a.rows[i][c], b.rows[i][c]) << name << " row " << i;
+  }
+  ASSERT_EQ(run_relslam(run_args("p-four-planes.json", dir / "c", concat(quick, {"--set", "seed=2"}))).exit_code, 0);
+  EXPECT_NE(test::read_file(dir / "a/plane_observations.csv"), test::read_file(dir / "c/plane_observations.csv"));
+}
+
+TEST(PlanarSimulate, WritesWallsPathAndObservations) {
+  test::ScratchDir dir;
+  const auto r = run_relslam(
+      {"simulate", test::source_path("scenarios/p-hallway.json").string(), "--out", (dir / "sim").string(), "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table walls = read_csv(dir / "sim/ground_truth_walls.csv");
+  EXPECT_EQ(walls.rows.size(), 16u);
+  EXPECT_EQ(test::read_lines(dir / "sim/ground_truth_path.tum").size(), 761u);
+  const Table observations = read_csv(dir / "sim/plane_observations.csv");
+  EXPECT_EQ(first(observations.header, 3), (std::vector<std::string>{"iteration", "index", "true_wall"}));
+  EXPECT_FALSE(observations.rows.empty());
+  EXPECT_FALSE(std::filesystem::exists(dir / "sim/relative_plane"));
+}
+
+// ---- Bad input: exit 2 and a message naming the file and the field --------------------------
+
+struct Failure {
+  int exit_code;
+  std::string err;
+};
+
+// Runs a planar scenario whose map is `map_json` (written beside it as maps/bad.json).
+Failure run_with_map(const test::ScratchDir& dir, const std::string& map_json, const std::string& scenario_extra = "") {
+  std::filesystem::create_directories(dir / "maps");
+  std::ofstream(dir / "maps/bad.json") << map_json;
+  std::ofstream(dir / "scenario.json") << R"({"kind": "planar", "planar": {"map": "bad")" << scenario_extra
+                                       << R"(}, "algorithms": ["relative_plane"]})";
+  const auto r = run_relslam({"run", (dir / "scenario.json").string(), "--out", (dir / "run").string(), "-q"});
+  return {r.exit_code, r.err};
+}
+
+const char* kPath = R"("path": {"start": {"x": 0, "z": 0, "heading_deg": 0}, "steps": ["MOVE 1"]})";
+
+TEST(PlanarBadInput, ZeroLengthWallNamesTheMapFileAndWall) {
+  test::ScratchDir dir;
+  const Failure f = run_with_map(
+      dir,
+      std::string(
+          R"({"walls": [{"a": [3, -1], "b": [3, -1], "facing": "-x"}, {"a": [4, 1], "b": [4, 2], "facing": "-x"}], )") +
+          kPath + "}");
+  EXPECT_EQ(f.exit_code, 2);
+  EXPECT_NE(f.err.find("bad.json"), std::string::npos) << f.err;
+  EXPECT_NE(f.err.find("walls[0]"), std::string::npos) << f.err;
+}
+
+TEST(PlanarBadInput, WallEndBeyondADoubleIsRejected) {
+  test::ScratchDir dir;
+  const Failure f = run_with_map(
+      dir,
+      std::string(
+          R"({"walls": [{"a": [1e999, -1], "b": [3, 1], "facing": "-x"}, {"a": [4, 1], "b": [4, 2], "facing": "-x"}], )") +
+          kPath + "}");
+  EXPECT_EQ(f.exit_code, 2);
+  EXPECT_NE(f.err.find("bad.json"), std::string::npos) << f.err;
+}
+
+TEST(PlanarBadInput, WallWithoutFacingSideIsRejected) {
+  test::ScratchDir dir;
+  const Failure f = run_with_map(
+      dir, std::string(R"({"walls": [{"a": [3, -1], "b": [3, 1]}, {"a": [4, 1], "b": [4, 2], "facing": "-x"}], )") +
+               kPath + "}");
+  EXPECT_EQ(f.exit_code, 2);
+  EXPECT_NE(f.err.find("walls[0]"), std::string::npos) << f.err;
+  EXPECT_NE(f.err.find("facing"), std::string::npos) << f.err;
+}
+
+// The map's own sensor sees two walls, but the scenario's narrower setting does not.
+TEST(PlanarBadInput, PathThatNeverSeesTwoWallsWithTheScenariosSensorIsRejected) {
+  test::ScratchDir dir;
+  const Failure f = run_with_map(dir,
+                                 std::string(R"({"walls": [{"a": [3, -1], "b": [3, 1], "facing": "-x"},
+                                   {"a": [-3, 1], "b": [-3, -1], "facing": "+x"}], )") +
+                                     kPath + R"(, "sensor": {"mode": "always_visible"}})",
+                                 R"(, "visibility": "frustum")");
+  EXPECT_EQ(f.exit_code, 2);
+  EXPECT_NE(f.err.find("planar.map"), std::string::npos) << f.err;
+  EXPECT_NE(f.err.find("never sees two walls"), std::string::npos) << f.err;
+}
+
+TEST(PlanarBadInput, UnknownMapNameListsTheKnownOnes) {
+  test::ScratchDir dir;
+  const auto r = run_relslam(run_args("p-hallway.json", dir / "run", {"--set", "planar.map=no_such_map"}));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("planar.map"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("b_hallway_unit"), std::string::npos) << r.err;
+}
+
+TEST(PlanarBadInput, UnknownKeysAreRejectedWithASuggestion) {
+  test::ScratchDir dir;
+  std::ofstream(dir / "scenario.json") << "{\"kind\": \"planar\",\n \"planar\": {\"mapp\": \"a_four_planes\"}}";
+  const auto r = run_relslam({"run", (dir / "scenario.json").string(), "--out", (dir / "run").string(), "-q"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("scenario.json:2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("planar.map"), std::string::npos) << r.err;  // did you mean
+  const auto set = run_relslam(run_args("p-hallway.json", dir / "run2", {"--set", "relative_plane.rules.rule99=true"}));
+  EXPECT_EQ(set.exit_code, 2);
+  EXPECT_NE(set.err.find("relative_plane.rules.rule99"), std::string::npos) << set.err;
+}
+
+TEST(PlanarBadInput, BadSettingsNameTheirKey) {
+  test::ScratchDir dir;
+  for (const char* setting : {"planar.frustum=huge", "planar.noise.model=pink", "relative_plane.min_common=0",
+                              "relative_plane.local_match.max_normal_angle_deg=120"}) {
+    const auto r = run_relslam(run_args("p-hallway.json", dir / "run", {"--set", setting}));
+    EXPECT_EQ(r.exit_code, 2) << setting;
+    const std::string key = std::string(setting).substr(0, std::string(setting).find('='));
+    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+  }
+}
+
+TEST(PlanarBadInput, PointAlgorithmOnAPlanarScenarioIsRefused) {
+  test::ScratchDir dir;
+  const auto r = run_relslam(run_args("p-hallway.json", dir / "run", {"--set", "algorithms=relative_point"}));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("relative_point"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("relative_plane"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace relslam
