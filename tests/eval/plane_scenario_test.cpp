@@ -45,6 +45,7 @@ struct IterationScore {
 struct SimRun {
   std::vector<IterationScore> iterations;
   std::map<int, std::set<int>> planes_of_wall;  // true wall -> the RltPlanes it is the majority wall of
+  std::map<int, int> mapped_of_wall;            // true wall -> how many of those are on the final map
   int rlt_planes = 0;
   int mixed_faces = 0;  // RltPlanes given observations of both faces of their wall (what Rule 10 forbids)
   int global_matches = 0;
@@ -91,7 +92,10 @@ SimRun run_map(const sim::PlanarMap& map, std::uint64_t seed, const RelativePlan
     out.iterations.push_back(score);
   }
   out.rlt_planes = static_cast<int>(slam.planes().size());
-  for (int p = 0; p < out.rlt_planes; ++p) out.planes_of_wall[votes.wall_of(p)].insert(p);
+  for (int p = 0; p < out.rlt_planes; ++p) {
+    out.planes_of_wall[votes.wall_of(p)].insert(p);
+    out.mapped_of_wall[votes.wall_of(p)] += slam.map()[p].mapped;
+  }
   for (const auto& [p, seen] : faces) out.mixed_faces += seen.size() > 1;
   return out;
 }
@@ -189,11 +193,13 @@ TEST(PlaneScenario, MapCHallwayBackNoiseFreeIsExactAndTheReturnLegMakesNoDuplica
 // side corridor's x = 36 wall (wall 18), which it sees edge-on while its heading passes 60°–120°.
 // (a) Back-face culling off, Rule 10 off: the edge-on wall's noisy observations flip between
 // its faces and still match one RltPlane, whose comparisons then say two robot poses: the pose
-// breaks (measured: heading off by π, position 4–10 units) from the iteration the wall comes
-// into view, and the walls seen again become new planes. (b) Culling off, Rule 10 on: each face
-// is an RltPlane of its own (the edge-on wall gets 2–3, e.g. 3 with seed 1: a face seen again
-// before it was mapped), no RltPlane mixes faces, and pose and map stay at noise level as in
-// (c), culling on: one RltPlane per wall.
+// breaks from the iteration the wall comes into view, and the walls seen again become new
+// planes. (b) Culling off, Rule 10 on: each face is an RltPlane of its own, no RltPlane mixes
+// faces, and pose and map (each face scored against the wall turned its way) stay at noise
+// level as in (c), culling on: one RltPlane per wall. Measured, seeds 1–3: (a) worst pose
+// 5.1/9.5/9.7 units, heading off by π (π/2 with seed 4); 21/33/33 RltPlanes for 19 walls.
+// (b) worst pose 0.067/0.13/0.14, final map 0.52/1.37/1.54. (c) 0.066/0.135/0.139,
+// 0.45/1.17/1.31; 19 RltPlanes.
 TEST(PlaneScenario, MapCEdgeOnWallBreaksThePoseOnlyWithoutRule10) {
   const sim::PlanarMap shipped = map_file("c_hallway_back.json");
   ASSERT_EQ(shipped.sensor.noise.model, sim::PlaneNoiseModel::Gaussian);
@@ -214,7 +220,7 @@ TEST(PlaneScenario, MapCEdgeOnWallBreaksThePoseOnlyWithoutRule10) {
     EXPECT_LT(worst_of(a, 0, in_view - 1).position, 0.25) << "seed " << seed;
     const Worst a_turn = worst_of(a, in_view - 1, turn_end + 1);
     EXPECT_GT(std::max(a_turn.position, a_turn.heading), 1.0) << "seed " << seed;
-    EXPECT_GT(worst_of(a).heading, 3.0) << "seed " << seed;  // a pose turned round
+    EXPECT_GT(worst_of(a).heading, 1.0) << "seed " << seed;  // a pose turned by π/2 or π
     EXPECT_GE(a.mixed_faces, 1) << "seed " << seed;
     EXPECT_EQ(a.planes_of_wall.at(kEdgeOnWall).size(), 1u) << "seed " << seed;  // both faces in one RltPlane
     EXPECT_GT(a.rlt_planes, static_cast<int>(shipped.world.walls.size()) + 1) << "seed " << seed;
@@ -227,10 +233,13 @@ TEST(PlaneScenario, MapCEdgeOnWallBreaksThePoseOnlyWithoutRule10) {
       EXPECT_EQ(run->mixed_faces, 0) << "seed " << seed;
       EXPECT_LT(run->iterations.back().map_faced, 2.0) << "seed " << seed;
     }
-    // (b): the two-sided corridor walls (17, 18) have a plane per face; every other wall one.
+    // (b): the two-sided corridor walls (17, 18) have a mapped RltPlane per face; every other
+    // wall one RltPlane. A face seen only now and then (the edge-on wall's back, flickering in
+    // and out with the noise) may leave an RltPlane that never reaches min_readings before a gap
+    // longer than Rule 1's: it is dropped from the unassigned list, never mapped (seeds 1, 5).
     for (const auto& [wall, planes] : b.planes_of_wall) {
       if (wall == 17 || wall == kEdgeOnWall) {
-        EXPECT_GE(planes.size(), 2u) << "seed " << seed << " wall " << wall;
+        EXPECT_EQ(b.mapped_of_wall.at(wall), 2) << "seed " << seed << " wall " << wall;
         EXPECT_LE(planes.size(), 3u) << "seed " << seed << " wall " << wall;
       } else {
         EXPECT_EQ(planes.size(), 1u) << "seed " << seed << " wall " << wall;
