@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <numbers>
 #include <set>
@@ -177,6 +179,143 @@ TEST(RltXPointsS, WithoutRule4TheMapStaysInTheFrameOfTheFirstGroupsBasePlane) {
   ASSERT_TRUE(base.mapped);
   EXPECT_LT(base.world_T_plane.translation.norm(), 1e-12);
   EXPECT_NEAR(base.world_T_plane.heading, 0, 1e-12);
+}
+
+// A robot standing at the origin and walls that come and go by a script (the scripted sensor
+// of the hallway unit test, thesis 4.3.2, Fig. 71): each wall faces the origin from direction
+// `at_deg`, `distance` away, 2 long, and is seen whole in the iterations of `seen`.
+struct ScriptedWall {
+  double at_deg;
+  double distance;
+  std::vector<std::pair<int, int>> seen;  // first..last, both included
+};
+
+std::vector<PlaneFrame> scripted_frames(const std::vector<ScriptedWall>& script, int iterations) {
+  std::vector<PlaneFrame> frames;
+  for (int t = 0; t < iterations; ++t) {
+    std::vector<test::Wall> visible;
+    for (const ScriptedWall& w : script) {
+      if (std::ranges::none_of(w.seen, [t](const auto& s) { return s.first <= t && t <= s.second; })) continue;
+      const double at = w.at_deg * kPi / 180;
+      const Eigen::Vector2d centre = w.distance * Eigen::Vector2d(std::cos(at), std::sin(at));
+      const Eigen::Vector2d along(-std::sin(at), std::cos(at));  // front normal towards the origin
+      visible.push_back({centre - along, centre + along});
+    }
+    frames.push_back(test::observe(visible, PlanarPose{}, t, {.always = true}));
+  }
+  return frames;
+}
+
+// Thesis 4.3.2, Fig. 73 (E06), Rule 12: X0 = {A, B, C, D} is made at iteration 4; C and D leave
+// the view; a briefly seen S makes the short-lived group X1 = {A, B, S}, linked by A and B, and
+// X1 is the working group. Then A and B leave, C and D come back (Rule 11 takes them back) and
+// a new plane Q appears with them. X1 cannot give Q two linking planes seen with it (Rules 8,
+// 9); only X0 can, by C and D.
+constexpr int kA = 0, kB = 1, kC = 2, kD = 3, kS = 4, kQ = 5;  // RltPlane ids, by first sighting
+const std::vector<ScriptedWall> kShortLivedGroup = {
+    {-90, 5, {{0, 34}}},          // A
+    {-30, 4, {{0, 34}}},          // B
+    {30, 5, {{0, 9}, {35, 70}}},  // C
+    {90, 4, {{0, 9}, {35, 70}}},  // D
+    {150, 5, {{10, 25}}},         // S
+    {210, 4, {{40, 70}}},         // Q
+};
+
+TEST(RltXPointsS, Rule12TraversalLinksANewGroupPastAShortLivedWorkingGroup) {
+  const std::vector<PlaneFrame> frames = scripted_frames(kShortLivedGroup, 71);
+  RelativePlaneOptions off;
+  off.rules.traverse_to_link = false;
+  RltXPointsS with, without(off);
+  for (const PlaneFrame& frame : frames) {
+    const RelativePlaneStep step = with.step(frame);
+    without.step(frame);
+    ASSERT_EQ(step.assignment.size(), frame.planes.size());
+    if (frame.iteration >= 35) {  // the planes seen again are the old RltPlanes (Rule 11), both runs
+      EXPECT_TRUE(std::ranges::all_of(step.assignment, [](PlaneId p) { return p <= kQ; }));
+    }
+  }
+  for (const RltXPointsS* slam : {&with, &without}) {
+    ASSERT_EQ(slam->planes().size(), 6u);
+    ASSERT_GE(slam->links().size(), 2u);
+    EXPECT_EQ(slam->xpoints()[0].planes(), (std::vector<PlaneId>{kA, kB, kC, kD}));
+    EXPECT_EQ(slam->xpoints()[1].planes(), (std::vector<PlaneId>{kA, kB, kS}));
+    EXPECT_EQ(slam->links()[1].from, 0);
+    EXPECT_EQ(slam->links()[1].planes, (std::vector<PlaneId>{kA, kB}));
+  }
+  // On: the traversal passes X1 and links X2 = {C, D, Q} to X0 by C and D, at Q's fifth reading.
+  ASSERT_EQ(with.links().size(), 3u);
+  const RltXPointLink& link = with.links()[2];
+  EXPECT_EQ(link.from, 0);
+  EXPECT_EQ(link.to, 2);
+  EXPECT_EQ(link.created_iteration, 44);
+  EXPECT_EQ((std::set<PlaneId>(link.planes.begin(), link.planes.end())), (std::set<PlaneId>{kC, kD}));
+  EXPECT_EQ(with.xpoints()[2].planes(), (std::vector<PlaneId>{kC, kD, kQ}));
+  ASSERT_TRUE(with.map()[kQ].mapped);
+  EXPECT_TRUE(with.unassigned().empty());
+  // Off: only the working group X1 is tried, and it fails every iteration: Q gets no group and
+  // never reaches the map.
+  EXPECT_EQ(without.links().size(), 2u);
+  EXPECT_EQ(without.xpoints().size(), 2u);
+  EXPECT_EQ(without.unassigned(), (std::vector<PlaneId>{kQ}));
+  EXPECT_TRUE(kQ >= static_cast<PlaneId>(without.map().size()) || !without.map()[kQ].mapped);
+}
+
+TEST(RltXPointsS, Rule12LinkPlacesTheNewPlaneExactly) {
+  const std::vector<PlaneFrame> frames = scripted_frames(kShortLivedGroup, 71);
+  RltXPointsS slam;
+  double worst = 0;
+  for (const PlaneFrame& frame : frames) {
+    const RelativePlaneStep step = slam.step(frame);
+    ASSERT_TRUE(step.pose_valid || frame.iteration < 4) << frame.iteration;
+    if (!step.pose_valid) continue;
+    worst = std::max({worst, step.world_T_robot.translation.norm(), std::abs(step.world_T_robot.heading)});
+    for (std::size_t i = 0; i < step.assignment.size(); ++i) {
+      const MapPlane& mapped = step.map[step.assignment[i]];
+      if (!mapped.mapped) continue;  // robot at the origin: the map is what it sees
+      worst =
+          std::max({worst, (mapped.plane.a - frame.planes[i].a).norm(), (mapped.plane.b - frame.planes[i].b).norm()});
+    }
+  }
+  EXPECT_LT(worst, kNoiseFree);
+  EXPECT_TRUE(slam.map()[kQ].mapped);
+}
+
+// Spec §5.5.6 wants Rule 22's GetBestXPoint (the group with most planes charted this iteration);
+// that charting is part 2 (thesis 4.3.5 ff.). Until it is built the current group is the one
+// last created (spec §5.5.1 [R]: a new group becomes the working group), and it stays current
+// when the robot is back among an older group's planes only.
+TEST(RltXPointsS, CurrentGroupIsTheGroupLastCreated) {
+  const std::vector<PlaneFrame> frames = scripted_frames(kShortLivedGroup, 71);
+  RltXPointsS slam;
+  for (const PlaneFrame& frame : frames) {
+    const RelativePlaneStep step = slam.step(frame);
+    const int t = frame.iteration;
+    const XPointId expected = t < 4 ? kNone : t < 14 ? 0 : t < 44 ? 1 : 2;
+    EXPECT_EQ(step.current_group, expected) << "iteration " << t;
+    EXPECT_EQ(slam.current_xpoint(), step.current_group);
+    if (!step.groups.empty()) {
+      EXPECT_EQ(step.current_group, step.groups.back().id());
+    }
+  }
+}
+
+TEST(RltXPointsS, HallwayReturnLegKeepsTheLastGroupCurrent) {
+  const test::PlaneRun world = hallway_there_and_back();
+  RltXPointsS slam({}, world.world_T_robot.front());
+  const int turn_end = 360 + 36;  // MOVE 36 by 0.1, TURN 180° by 5°
+  XPointId at_turn = kNone;
+  for (const PlaneFrame& frame : world.frames) {
+    const RelativePlaneStep step = slam.step(frame);
+    if (!step.groups.empty()) {
+      EXPECT_EQ(step.current_group, step.groups.back().id());
+    }
+    if (frame.iteration == turn_end) at_turn = step.current_group;
+  }
+  // On the way back no plane is new (Rule 11), so no group is made and the last one stays
+  // current although the robot ends among X0's planes.
+  EXPECT_EQ(slam.current_xpoint(), at_turn);
+  EXPECT_EQ(slam.current_xpoint(), static_cast<XPointId>(slam.xpoints().size()) - 1);
+  EXPECT_NE(slam.current_xpoint(), 0);
 }
 
 TEST(RltXPointsS, SameInputGivesTheSameRun) {
