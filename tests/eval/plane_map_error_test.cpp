@@ -35,6 +35,19 @@ TEST(PlaneError, AHalfSizePlaneOnItsWallPaysOnlyAtTheCutEnd) {
   EXPECT_DOUBLE_EQ(e.length_ratio, 0.5);
 }
 
+// Without back-face culling a wall seen from behind is a plane with the opposite normal: its key
+// point 1 is the wall's b end (Rule 14), and exactly placed it scores zero.
+TEST(PlaneError, TheBackFaceIsScoredAgainstTheWallSeenFromBehind) {
+  const PlaneObject w = wall({0, 5}, {8, 5});
+  const PlaneError exact = plane_error(wall({8, 5}, {0, 5}), w);
+  EXPECT_EQ(exact.ends, 0.0);
+  EXPECT_EQ(exact.angle_rad, 0.0);
+  EXPECT_EQ(exact.perpendicular, 0.0);
+  const PlaneError shifted = plane_error(wall({8, 5.5}, {0, 5.5}), w);
+  EXPECT_DOUBLE_EQ(shifted.ends, 0.5);
+  EXPECT_DOUBLE_EQ(shifted.perpendicular, 0.5);
+}
+
 TEST(PlaneError, AShiftedAndTurnedPlaneGivesItsOffsetAndAngle) {
   const PlaneObject w = wall({-4, 0}, {4, 0});
   const PlaneObject shifted = w.transformed(PlanarPose::from(0, 0.3, 0));  // 0.3 off the line
@@ -43,8 +56,9 @@ TEST(PlaneError, AShiftedAndTurnedPlaneGivesItsOffsetAndAngle) {
   const PlaneObject turned = w.transformed(PlanarPose::from(0, 0, 0.1));  // about its midpoint
   EXPECT_NEAR(plane_error(turned, w).angle_rad, 0.1, 1e-15);
   EXPECT_NEAR(plane_error(turned, w).perpendicular, 0.0, 1e-15);
-  // A plane facing the other way is π off, not 0.
-  EXPECT_NEAR(plane_error(wall({4, 0}, {-4, 0}), w).angle_rad, kPi, 1e-15);
+  // Turned by more than 90° it faces the other way: the back face, turned by π − 0.1.
+  const PlaneObject flipped = w.transformed(PlanarPose::from(0, 0, kPi / 2 + 0.2));
+  EXPECT_NEAR(plane_error(flipped, w).angle_rad, kPi / 2 - 0.2, 1e-15);
 }
 
 TEST(PlanarPoseError, HeadingErrorWrapsAroundPi) {

@@ -1,10 +1,15 @@
 #include "relslam/eval/metrics/plane_map_error.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace relslam::eval {
 
-PlaneError plane_error(const PlaneObject& mapped, const PlaneObject& wall) {
+PlaneError plane_error(const PlaneObject& mapped, const PlaneObject& front) {
+  // A plane of the wall's back face (a two-sided wall, or no back-face culling) has its key
+  // points the other way round: it is scored against the wall as seen from behind.
+  PlaneObject wall = front;
+  if (mapped.normal().dot(front.normal()) < 0) std::swap(wall.a, wall.b);
   PlaneError e;
   e.ends = 0.5 * ((mapped.a - wall.a).norm() + (mapped.b - wall.b).norm());
   e.angle_rad = std::abs(wrap_angle(mapped.angle() - wall.angle()));

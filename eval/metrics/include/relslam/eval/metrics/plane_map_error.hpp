@@ -19,6 +19,8 @@ struct PlaneError {
   double perpendicular = 0;  // e_perp: distance from the plane's midpoint to the wall's line
   double length_ratio = 0;   // L_p / L_W
 };
+// A plane whose normal opposes the wall's stands for its back face and is scored against the
+// wall with its ends swapped (key point 1 of the back face is the wall's b).
 PlaneError plane_error(const PlaneObject& mapped, const PlaneObject& wall);
 
 // e_pos = |t_est − t_true| and e_ψ = |wrap(ψ_est − ψ_true)|.
