@@ -101,6 +101,34 @@ TEST(RltXPointsS, HallwayNoiseFreeMapAndPoseAreExactAtEveryValidIteration) {
   EXPECT_LT(s.worst_map, kNoiseFree);
 }
 
+// The final map of a run: each RltPlane's placed ends (NaN when it is not on the map).
+std::vector<PlaneObject> final_map(const test::PlaneRun& world, const RelativePlaneOptions& options) {
+  RltXPointsS slam(options, world.world_T_robot.front());
+  for (const PlaneFrame& frame : world.frames) slam.step(frame);
+  std::vector<PlaneObject> out;
+  for (const MapPlane& m : slam.map()) out.push_back(m.mapped ? m.plane : PlaneObject::from_pose({}, 0));
+  return out;
+}
+
+// E31 (Rule 2): the order in which a group's planes are chained does not change a noise-free
+// map. Reversing every new group's chain moves its base plane and every edge, yet each plane
+// lands on the same place to 1e-9.
+TEST(RltXPointsS, E31ReversedChainsGiveTheSameNoiseFreeMap) {
+  RelativePlaneOptions reversed;
+  reversed.chain_order = ChainOrder::Reversed;
+  for (const test::PlaneRun& world :
+       {hallway_there_and_back(), test::run_path(test::four_planes_walls(), test::four_planes_path(1, 0.05, 0.03),
+                                                 {.always = true})}) {
+    const std::vector<PlaneObject> a = final_map(world, {}), b = final_map(world, reversed);
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_GE(a.size(), 4u);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_LT((a[i].a - b[i].a).norm(), 1e-9) << "RltPlane " << i;
+      EXPECT_LT((a[i].b - b[i].b).norm(), 1e-9) << "RltPlane " << i;
+    }
+  }
+}
+
 TEST(RltXPointsS, Rule11ReturnLegMakesNoDuplicatePlanes) {
   const test::PlaneRun world = hallway_there_and_back();
   const RunSummary with = run(test::hallway_walls(), world);

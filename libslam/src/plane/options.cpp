@@ -10,6 +10,8 @@ std::string_view to_string(IntervalMode mode) {
   return "?";
 }
 
+std::string_view to_string(ChainOrder order) { return order == ChainOrder::Creation ? "creation" : "reversed"; }
+
 std::vector<OptionIssue> check(const RelativePlaneOptions& o) { return check_fields(o); }
 
 }  // namespace relslam::plane

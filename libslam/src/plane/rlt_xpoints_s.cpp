@@ -287,6 +287,7 @@ bool RltXPointsS::link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<P
 
 XPointId RltXPointsS::create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking) {
   const XPointId id = static_cast<XPointId>(xpoints_.size());
+  if (options_.chain_order == ChainOrder::Reversed) std::ranges::reverse(chain);  // E31 only
   for (PlaneId p : chain) planes_[p].join(id, iteration_);
   xpoints_.emplace_back(id, iteration_, std::move(chain));
   links_.push_back({from, id, std::move(linking), from == kNone, iteration_});

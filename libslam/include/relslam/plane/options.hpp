@@ -18,6 +18,13 @@ enum class IntervalMode : unsigned char {
   Group,  // ... and inside the group's common interval: less map noise, but can be very short
 };
 
+// The order of a new group's comparison chain (Rule 2: a noise-free map does not depend on it;
+// spec E31 checks that by running both).
+enum class ChainOrder : unsigned char {
+  Creation,  // planes[0], the base, is the RltPlane created first (spec §5.5.3, A38) [T]
+  Reversed,  // the last created first [C, for E31]
+};
+
 // One switch per rule the thesis turns on or off, for the ablations of spec §6. Each comment
 // says what "off" does. Rules 2, 5 and 6 have no switch: Rule 2 is a property the chaining
 // has, and Rules 5 and 6 are what the algorithm outputs (pose; map from groups and links).
@@ -76,11 +83,15 @@ struct RelativePlaneOptions {
   double same_length = 0.02;
   // Iterations a pair is compared over (Figs 74/75) [T: Pair].
   IntervalMode interval_mode = IntervalMode::Pair;
+  // Order of each new group's chain; only E31 changes it [T: creation].
+  ChainOrder chain_order = ChainOrder::Creation;
   RuleSwitches rules;
 };
 
 constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Group};
 std::string_view to_string(IntervalMode mode);  // "pair", "group"
+constexpr ChainOrder kChainOrders[] = {ChainOrder::Creation, ChainOrder::Reversed};
+std::string_view to_string(ChainOrder order);  // "creation", "reversed"
 
 // The scenario keys of MatchBounds (relative_plane.local_match.*, relative_plane.global_match.*).
 // Rule 1 needs the gap test (`local`): without it every RltPlane ever seen is a candidate.
@@ -131,6 +142,8 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.field("same_length", o.same_length, "two lengths within this are the same size, units", at_least(0.0));
   f.choice("interval_mode", o.interval_mode, "iterations a pair is compared over (Figs 74/75): pair or group",
            kIntervalModes);
+  f.choice("chain_order", o.chain_order, "order of a new group's chain: creation, or reversed (E31, Rule 2)",
+           kChainOrders);
   f.nested("rules", o.rules);
 }
 
