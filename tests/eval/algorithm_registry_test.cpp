@@ -45,5 +45,29 @@ TEST(AlgorithmRegistry, RelativePointIterationColumnsAreTheThesisComponents) {
   EXPECT_EQ(std::set<std::string>(columns.begin(), columns.end()).size(), columns.size());
 }
 
+TEST(PlaneAlgorithmRegistry, EveryEntryBuildsAnAlgorithmOfItsName) {
+  const Scenario scenario;
+  std::set<std::string> names;
+  for (const PlaneAlgorithmEntry& entry : plane_algorithm_registry()) {
+    EXPECT_TRUE(names.insert(entry.name).second) << entry.name << " twice";
+    EXPECT_FALSE(find_algorithm(entry.name)) << entry.name << " is a point algorithm's name too";
+    const std::unique_ptr<PlaneAlgorithm> algorithm = make_plane_algorithm(entry.name, {scenario, {}});
+    EXPECT_EQ(algorithm->name(), entry.name);
+    const std::vector<std::string> columns = algorithm->iteration_columns();
+    EXPECT_EQ(std::set<std::string>(columns.begin(), columns.end()).size(), columns.size()) << entry.name;
+  }
+  EXPECT_TRUE(names.count("relative_plane"));
+}
+
+// A scenario's algorithms must run on its kind of frames: planes for kind planar, landmarks else.
+TEST(PlaneAlgorithmRegistry, NamesAreCheckedAgainstTheScenariosHalf) {
+  EXPECT_NO_THROW(check_algorithm_names(
+      parse_scenario(R"({"kind": "planar", "algorithms": ["relative_plane"]})", "t.json")));
+  EXPECT_THROW(check_algorithm_names(parse_scenario(R"({"kind": "planar", "algorithms": ["ekf6d"]})", "t.json")),
+               InputError);
+  EXPECT_THROW(check_algorithm_names(parse_scenario(R"({"algorithms": ["relative_plane"]})", "t.json")), InputError);
+  EXPECT_THROW(make_plane_algorithm("relative_point", {Scenario{}, {}}), std::logic_error);
+}
+
 }  // namespace
 }  // namespace relslam::eval

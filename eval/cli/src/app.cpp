@@ -31,6 +31,8 @@ one-loop figure eight). Every key has a default; `relslam keys` lists them,
 Examples:
   relslam run scenarios/s-f8.json --out runs/f8              # simulate and run the Relative Point algorithm
   relslam run scenarios/s-ekf-f8.json --out runs/ekf-f8       # Relative Point and the MRPT 6D EKF on one stream
+  relslam run scenarios/p-four-planes.json --out runs/four-planes   # the planar world and Relative Plane (thesis 4)
+  relslam sweep scenarios/p-e05-edge-on.json --out runs/e05     # the variants of thesis Fig. 72
   relslam sweep scenarios/s-dens-q.json --out runs/density --seeds 5 --jobs 2
   relslam sweep scenarios/s-f8.json --out runs/sigma --param sim.noise_sigma=0.01,0.05 --seeds 3
   relslam tune-ekf scenarios/s-ekf-f8.json --out runs/tune     # the EKF's sensor std. deviations
@@ -114,7 +116,11 @@ int run_cli(int argc, const char* const* argv) {
     if (app.got_subcommand("bench-binning")) return run_bench_binning(bench_binning, command_line);
     if (app.got_subcommand("render")) return run_render(render);
     if (app.got_subcommand("algorithms")) {
-      for (const AlgorithmEntry& a : algorithm_registry()) std::cout << a.name << "\n    " << a.help << '\n';
+      std::cout << "On point landmarks (kind simulation, rawlogs, Victoria Park):\n";
+      for (const AlgorithmEntry& a : algorithm_registry()) std::cout << "  " << a.name << "\n      " << a.help << '\n';
+      std::cout << "On planes (kind planar):\n";
+      for (const PlaneAlgorithmEntry& a : plane_algorithm_registry())
+        std::cout << "  " << a.name << "\n      " << a.help << '\n';
       return 0;
     }
     if (app.got_subcommand("keys")) {
