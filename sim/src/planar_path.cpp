@@ -38,7 +38,7 @@ PlanarPose partial_motion(const PathOperation& op, double s) {
 
 void check_operation(std::vector<OptionIssue>& issues, const std::string& field, const PathOperation& op) {
   const bool moves = op.kind != PathOperationKind::Turn;
-  if (moves) require_above(issues, field + ".distance", op.distance, 0.0);
+  if (moves) above(0.0)(issues, field + ".distance", op.distance);
   if (!moves && (!std::isfinite(op.angle_rad) || op.angle_rad == 0.0))
     issues.push_back(
         {field + ".angle_deg", "must be a finite non-zero angle, got " + format_number(op.angle_rad / kDegree)});
@@ -75,9 +75,9 @@ std::vector<OptionIssue> check(const PathProgram& p) {
     issues.push_back({"start", "must be finite, got (" + format_number(p.start.translation.x()) + ", " +
                                    format_number(p.start.translation.y()) + ", " +
                                    format_number(p.start.heading / kDegree) + "°)"});
-  require_above(issues, "speed", p.speed, 0.0);
-  require_above(issues, "turn_rate_deg", p.turn_rate_rad / kDegree, 0.0);
-  require_at_least(issues, "loops", p.loops, 1);
+  above(0.0)(issues, "speed", p.speed);
+  above(0.0)(issues, "turn_rate_deg", p.turn_rate_rad / kDegree);
+  at_least(1)(issues, "loops", p.loops);
   if (p.steps.empty()) issues.push_back({"steps", "is empty; a path needs at least one MOVE, TURN or ARC"});
   for (std::size_t i = 0; i < p.steps.size(); ++i)
     check_operation(issues, "steps[" + std::to_string(i) + "]", p.steps[i]);

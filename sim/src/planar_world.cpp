@@ -29,7 +29,7 @@ std::vector<OptionIssue> check(const PlanarWorld& world) {
     // A zero-length wall has no tangent, hence no normal and no front.
     if (ends_finite && w.a == w.b)
       issues.push_back({field + ".b", "equals a " + point_text(w.a) + "; a wall needs two distinct ends"});
-    require_above(issues, field + ".height", w.height, 0.0);
+    above(0.0)(issues, field + ".height", w.height);
     if (w.id < 0) issues.push_back({field + ".id", "must be >= 0, got " + std::to_string(w.id)});
     const auto [it, fresh] = first_with_id.emplace(w.id, i);
     if (!fresh)

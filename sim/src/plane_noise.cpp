@@ -25,9 +25,9 @@ std::optional<PlaneNoiseModel> parse_plane_noise_model(std::string_view name) {
 
 std::vector<OptionIssue> check(const PlaneNoiseOptions& o) {
   std::vector<OptionIssue> issues;
-  require_at_least(issues, "position", o.position, 0.0);
-  require_at_least(issues, "rotation_deg", o.rotation_rad * 180.0 / std::numbers::pi, 0.0);
-  require_at_least(issues, "end_sigma", o.end_sigma, 0.0);
+  at_least(0.0)(issues, "position", o.position);
+  at_least(0.0)(issues, "rotation_deg", o.rotation_rad * 180.0 / std::numbers::pi);
+  at_least(0.0)(issues, "end_sigma", o.end_sigma);
   return issues;
 }
 

@@ -49,7 +49,7 @@ std::vector<OptionIssue> check(const PlaneSensorOptions& o) {
   std::vector<OptionIssue> issues;
   append_prefixed(issues, "frustum.", check(o.frustum));
   append_prefixed(issues, "noise.", check(o.noise));
-  require_at_least(issues, "min_length", o.min_length, 0.0);
+  at_least(0.0)(issues, "min_length", o.min_length);
   return issues;
 }
 

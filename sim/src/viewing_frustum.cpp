@@ -79,7 +79,7 @@ std::vector<OptionIssue> check(const ViewingFrustum& f) {
   const double half_angle_deg = f.half_angle_rad / kDegree;
   if (!(half_angle_deg > 0.0 && half_angle_deg < 90.0))
     issues.push_back({"half_angle_deg", "must be > 0 and < 90, got " + format_number(half_angle_deg)});
-  require_at_least(issues, "near", f.near, 0.0);
+  at_least(0.0)(issues, "near", f.near);
   if (!(f.far > f.near) || !std::isfinite(f.far))
     issues.push_back({"far", "must be > near (" + format_number(f.near) + "), got " + format_number(f.far)});
   return issues;

@@ -133,18 +133,6 @@ class OptionChecker {
   std::string prefix_;
 };
 
-// The same checks for options that have no describe() yet (the planar world and the Relative
-// Plane algorithm, until their scenario keys land): one field at a time, the same messages.
-inline void require_at_least(std::vector<OptionIssue>& issues, const std::string& field, double value, double minimum) {
-  at_least(minimum)(issues, field, value);
-}
-inline void require_above(std::vector<OptionIssue>& issues, const std::string& field, double value, double bound) {
-  above(bound)(issues, field, value);
-}
-inline void require_at_most(std::vector<OptionIssue>& issues, const std::string& field, double value, double maximum) {
-  at_most(maximum)(issues, field, value);
-}
-
 // Every violated check of the description of `options`, in its order.
 template <class Options>
 std::vector<OptionIssue> check_fields(const Options& options) {
