@@ -104,11 +104,17 @@ SummaryRow PlaneRecorder::finish() {
   std::vector<std::string> columns = {"id",    "true_wall", "kp1_x",     "kp1_z",  "kp2_x",     "kp2_z",
                                       "length", "e_ends",   "e_ang_deg", "e_perp", "len_ratio"};
   CsvWriter planes(dir_ / "planes.csv", with_own(columns, algorithm_->plane_columns()));
-  std::map<int, int> planes_per_wall;
+  // A duplicate is a second plane for the same face of a wall: with back faces in view (no
+  // culling, Rule 10 on) a wall's front and back are two planes by design (thesis Fig. 72).
+  std::map<std::pair<int, bool>, int> planes_per_face;
+  std::set<int> walls_mapped;
   for (const auto& [id, plane] : map) {
     const int wall = votes_.wall_of(id);
     const bool known = wall >= 0 && static_cast<std::size_t>(wall) < walls_.size();
-    if (known) ++planes_per_wall[wall];
+    if (known) {
+      walls_mapped.insert(wall);
+      ++planes_per_face[{wall, plane.normal().dot(walls_[static_cast<std::size_t>(wall)].normal()) < 0}];
+    }
     const std::optional<PlaneError> e =
         known ? std::optional<PlaneError>(plane_error(plane, walls_[static_cast<std::size_t>(wall)])) : std::nullopt;
     fields_ = {static_cast<long long>(id),
@@ -146,7 +152,7 @@ SummaryRow PlaneRecorder::finish() {
     }
   row.trajectory = trajectory_error(estimated, true_poses);
   row.landmarks_on_map = static_cast<int>(map.size());
-  for (const auto& [wall, n] : planes_per_wall) row.duplicates += n - 1;
+  for (const auto& [face, n] : planes_per_face) row.duplicates += n - 1;
   row.runtime = runtime_stats(runtimes_ms_);
   row.peak_rss_mb = peak_rss_mb();
   row.input_digest = digest_.hex();
@@ -155,7 +161,7 @@ SummaryRow PlaneRecorder::finish() {
   scores.max_position_error = max_position_error_;
   scores.pose_valid_fraction =
       estimates_.empty() ? 0.0 : static_cast<double>(estimated.size()) / static_cast<double>(estimates_.size());
-  scores.walls_mapped = static_cast<int>(planes_per_wall.size());
+  scores.walls_mapped = static_cast<int>(walls_mapped.size());
   walls_seen_.erase(-1);
   scores.walls_seen = static_cast<int>(walls_seen_.size());
   row.planar = scores;

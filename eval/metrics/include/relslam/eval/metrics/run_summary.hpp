@@ -67,7 +67,8 @@ struct SummaryRow {
   double peak_rss_mb = 0;    // the whole process, at the end of this algorithm's run
   std::string input_digest;  // hash of the observation frames it was given
   // Planar runs: the landmark scores above are those of the mapped planes (the summed and mean
-  // key-point error e_ends, planes on the map, planes sharing their wall), and these are set.
+  // key-point error e_ends, planes on the map, planes sharing the same face of a wall), and
+  // these are set.
   std::optional<PlanarScores> planar;
 };
 
