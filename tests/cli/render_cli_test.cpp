@@ -1,11 +1,16 @@
 // relslam render: the replayed state drawn where the axes say, pictures of the asked size, a
-// video with one frame per step, and bad requests refused with the option named.
+// video with one frame per step, and bad requests refused with the option named; for point runs
+// and for planar ones (spec relative_plane_em.md §6.0).
 #include "relslam/eval/io/map_render.hpp"
+#include "relslam/eval/io/planar_render.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
+
+#include <filesystem>
 
 namespace relslam::eval {
 namespace {
@@ -128,6 +133,140 @@ TEST_F(RenderCli, BadRequestsNameTheOption) {
   const auto r = test::run_relslam({"render", empty.path().string(), "--out", out("x.png")});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("manifest.json: not found"), std::string::npos) << r.err;
+}
+
+// ---- planar runs (spec relative_plane_em.md §6.0, thesis Fig. 67) ----------------------------
+
+const cv::Vec3b kWall(0, 215, 255);        // true walls, yellow
+const cv::Vec3b kMappedPlane(200, 70, 0);  // mapped planes, blue
+const cv::Vec3b kReading(0, 0, 230);       // current readings, red
+
+TEST(PlanarRender, TopViewPutsXRightAndZUp) {
+  PlanarScene scene;
+  scene.walls = {{Eigen::Vector2d(10, -5), Eigen::Vector2d(10, 5)},   // across x = 10
+                 {Eigen::Vector2d(-5, 20), Eigen::Vector2d(5, 20)}};  // across z = 20
+  RenderOptions options;
+  options.width = 400;
+  options.height = 400;
+  const cv::Mat image = render_map(scene, {0, 0, 100}, options);  // 4 pixels per unit, centre (200, 200)
+  ASSERT_EQ(image.cols, 400);
+  EXPECT_EQ(image.at<cv::Vec3b>(200, 200 + 40), kWall);  // x = 10 -> 40 px right of centre
+  EXPECT_EQ(image.at<cv::Vec3b>(200 - 80, 200), kWall);  // z = 20 -> 80 px above centre
+  // Nothing blue above the legend (which holds a swatch of each colour).
+  EXPECT_EQ(count_colour(image(cv::Rect(0, 0, 400, 280)), kMappedPlane), 0);
+}
+
+TEST(PlanarRender, GroupsJoinTheirPlanesAndReadingsLieOnTop) {
+  PlanarScene scene;
+  const PlaneObject wall{Eigen::Vector2d(-10, 10), Eigen::Vector2d(10, 10)};
+  scene.walls = {wall};
+  scene.mapped = {wall};
+  scene.readings = {wall};
+  scene.groups = {{0, Eigen::Vector2d(0, -10), {wall.midpoint()}}};
+  RenderOptions options;
+  options.width = 400;
+  options.height = 400;
+  const cv::Mat image = render_map(scene, {0, 0, 100}, options);
+  // The reading is drawn over the mapped plane over the wall, each narrower than the last.
+  EXPECT_EQ(image.at<cv::Vec3b>(200 - 40, 200 + 20), kReading);
+  EXPECT_GT(count_colour(image, kMappedPlane), 0);
+  EXPECT_GT(count_colour(image, kWall), 0);
+  // The group's line runs from its label at z = -10 up to the plane's midpoint.
+  EXPECT_NE(image.at<cv::Vec3b>(200, 200), cv::Vec3b(255, 255, 255));
+}
+
+class PlanarRenderCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new test::ScratchDir;
+    const auto r = test::run_relslam({"run", test::source_path("scenarios/p-hallway.json").string(), "--set",
+                                      "planar.iterations=200", "--out", (*dir_ / "run").string(), "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  static void TearDownTestSuite() { delete dir_; }
+  static std::string run_dir() { return (*dir_ / "run").string(); }
+  static std::string out(const std::string& name) { return (*dir_ / name).string(); }
+  static test::ScratchDir* dir_;
+};
+test::ScratchDir* PlanarRenderCli::dir_ = nullptr;
+
+TEST_F(PlanarRenderCli, DrawsWallsAndMappedPlanesAtTheAskedSize) {
+  const auto r = test::run_relslam(
+      {"render", run_dir(), "--iteration", "150", "--width", "800", "--height", "400", "--out", out("plan.png")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The replay reached the pose the run recorded: no warning; the run's plane algorithm was drawn.
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("relative_plane, iteration 150"), std::string::npos) << r.out;
+  const cv::Mat image = cv::imread(out("plan.png"));
+  ASSERT_FALSE(image.empty());
+  EXPECT_EQ(image.cols, 800);
+  EXPECT_EQ(image.rows, 400);
+  // Left of the legend, which holds a swatch of each colour.
+  const cv::Mat drawing = image(cv::Rect(0, 0, image.cols - 300, image.rows));
+  EXPECT_GT(count_colour(drawing, kWall), 100);
+  EXPECT_GT(count_colour(drawing, kMappedPlane), 100);
+  EXPECT_GT(count_colour(drawing, kReading), 20);
+  // Deterministic: the same request gives the same bytes; a close-up and a centred view work too.
+  ASSERT_EQ(test::run_relslam({"render", run_dir(), "--iteration", "150", "--width", "800", "--height", "400", "--out",
+                               out("again.png"), "-q"})
+                .exit_code,
+            0);
+  EXPECT_EQ(test::read_file(out("plan.png")), test::read_file(out("again.png")));
+  EXPECT_EQ(test::run_relslam({"render", run_dir(), "--fit", "robot", "--out", out("close.png"), "-q"}).exit_code, 0);
+  EXPECT_EQ(test::run_relslam({"render", run_dir(), "--center", "10,0", "--span", "20", "--labels", "on", "--out",
+                               out("centred.png"), "-q"})
+                .exit_code,
+            0);
+}
+
+TEST_F(PlanarRenderCli, AVideoHasAFramePerStep) {
+  const auto r = test::run_relslam(
+      {"render", run_dir(), "--video", out("plan.mp4"), "--every", "20", "--width", "320", "--height", "240", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  cv::VideoCapture video(out("plan.mp4"));
+  ASSERT_TRUE(video.isOpened());
+  EXPECT_EQ(video.get(cv::CAP_PROP_FRAME_COUNT), 10);  // iterations 0, 20, ..., 180
+  EXPECT_EQ(video.get(cv::CAP_PROP_FRAME_WIDTH), 320);
+}
+
+TEST_F(PlanarRenderCli, FindsTheMapByTheRecordedFileWhenItsNameIsGone) {
+  // A run folder whose scenario names a map this checkout does not have (renamed since):
+  // the manifest's planar_simulation.map_file still leads to it.
+  test::ScratchDir moved;
+  std::filesystem::copy(run_dir(), moved / "run", std::filesystem::copy_options::recursive);
+  const std::filesystem::path file = moved / "run" / "manifest.json";
+  nlohmann::json manifest = nlohmann::json::parse(test::read_file(file));
+  ASSERT_TRUE(manifest["planar_simulation"].contains("map_file")) << manifest.dump(2);
+  manifest["scenario"]["planar"]["map"] = "no_such_map";
+  test::write_file(file, manifest.dump(2));
+  const auto r = test::run_relslam(
+      {"render", (moved / "run").string(), "--iteration", "100", "--out", (moved / "x.png").string(), "-q"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  // Without the recorded file, the error names the missing map.
+  manifest["planar_simulation"].erase("map_file");
+  test::write_file(file, manifest.dump(2));
+  const auto bad = test::run_relslam({"render", (moved / "run").string(), "--out", (moved / "x.png").string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("no_such_map"), std::string::npos) << bad.err;
+}
+
+TEST_F(PlanarRenderCli, BadRequestsNameTheOption) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string expected;
+  };
+  for (const Case& c : std::vector<Case>{
+           {{"--iteration", "200", "--out", out("x.png")}, "--iteration: the run has iterations 0..199, got 200"},
+           {{"--algorithm", "relative_point", "--out", out("x.png")}, "--algorithm: a planar run draws a plane"},
+           {{"--view", "side", "--out", out("x.png")}, "--view: a planar run is drawn from the top only"},
+       }) {
+    std::vector<std::string> args = {"render", run_dir()};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const auto r = test::run_relslam(args);
+    EXPECT_EQ(r.exit_code, 2) << c.expected;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace

@@ -82,6 +82,12 @@ class RelativePlane final : public PlaneAlgorithm {
   }
   const std::vector<int>& assignment() const override { return assignment_; }
   const std::vector<MappedPlane>& map() const override { return map_; }
+  std::vector<PlaneGroup> groups() const override {
+    std::vector<PlaneGroup> out;
+    for (const plane::RltXPoint& x : slam_.xpoints())
+      if (x.placed()) out.push_back({x.id(), x.world_pose(), {x.planes().begin(), x.planes().end()}});
+    return out;
+  }
 
   std::vector<std::string> iteration_columns() const override { return column_names(kIterationColumns); }
   void iteration_fields(std::vector<CsvField>& out) const override {

@@ -2,46 +2,14 @@
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/input_error.hpp"
-#include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/sources/simulated_world.hpp"
 #include "relslam/point/rlt_mapper.hpp"
 
-#include <nlohmann/json.hpp>
-
-#include <cmath>
-#include <fstream>
-#include <sstream>
+#include <algorithm>
 
 namespace relslam::eval {
-namespace {
 
 namespace fs = std::filesystem;
-
-nlohmann::json read_manifest(const fs::path& run_dir) {
-  const fs::path file = run_dir / "manifest.json";
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string(), 0, "", "not found: render needs the folder of a relslam run");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(file.string(), 0, "", std::string("not a relslam manifest: ") + e.what());
-  }
-}
-
-// The pose at iteration k in a TUM file ("t x y z qx qy qz qw", t = iteration), if it has one.
-std::optional<Rigid3> recorded_pose(const fs::path& tum, int k) {
-  std::ifstream in(tum);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream row(line);
-    double t, x, y, z, qx, qy, qz, qw;
-    if (!(row >> t >> x >> y >> z >> qx >> qy >> qz >> qw)) continue;
-    if (static_cast<int>(std::lround(t)) == k) return Rigid3::from(Eigen::Quaterniond(qw, qx, qy, qz), {x, y, z});
-  }
-  return std::nullopt;
-}
-
-}  // namespace
 
 struct RunReplay::State {
   fs::path run_dir;
@@ -102,12 +70,17 @@ struct RunReplay::State {
   }
 };
 
-RunReplay::RunReplay(const fs::path& run_dir, const std::string& algorithm) {
-  const nlohmann::json manifest = read_manifest(run_dir);
-  const fs::path file = run_dir / "manifest.json";
-  if (!manifest.contains("scenario") || manifest.contains("rawlog") || manifest.contains("victoria_park"))
-    throw InputError(file.string(), 0, "", "render replays simulated runs (relslam run SCENARIO); this one is not");
-  LoadedScenario loaded = parse_scenario_with_overrides(manifest["scenario"].dump(), file.string(), {});
+RunReplay::RunReplay(const fs::path& run_dir, const std::string& algorithm)
+    : RunReplay(read_replay_manifest(run_dir), algorithm) {}
+
+RunReplay::RunReplay(ReplayManifest manifest, const std::string& requested) {
+  const std::string algorithm = requested.empty() ? "relative_point" : requested;
+  const fs::path file = manifest.file;
+  const fs::path run_dir = manifest.run_dir;
+  LoadedScenario loaded = std::move(manifest.loaded);
+  if (loaded.scenario.kind != ScenarioKind::Simulation)
+    throw InputError(file.string(), 0, "",
+                     "not a point-world simulation (kind \"" + std::string(to_string(loaded.scenario.kind)) + "\")");
   const auto& listed = loaded.scenario.algorithms;
   if (algorithm != "relative_point" && algorithm != "ekf6d")
     throw InputError("", 0, "--algorithm", "render draws relative_point or ekf6d, not " + algorithm);
@@ -166,17 +139,11 @@ RenderScene RunReplay::world_outline(int last) const {
   return scene;
 }
 
+const std::string& RunReplay::algorithm() const { return state_->algorithm; }
+
 std::string RunReplay::check_against_recorded(int k) const {
   const State& s = *state_;
-  const fs::path tum = s.run_dir / s.algorithm / "trajectory.tum";
-  const std::optional<Rigid3> recorded = recorded_pose(tum, k);
-  if (!recorded) return "";  // the run stopped earlier or wrote no trajectory: nothing to compare
-  // TUM rows carry about 9 significant digits.
-  const double tolerance = 1e-6 * (1.0 + recorded->translation.norm());
-  const double gap = (recorded->translation - s.estimated_pose.translation).norm();
-  if (gap <= tolerance) return "";
-  return "the replayed pose at iteration " + std::to_string(k) + " is " + std::to_string(gap) + " units from " +
-         tum.string() + ": the run was made by another build or scenario, so the picture may not show it";
+  return compare_with_recorded(s.run_dir / s.algorithm / "trajectory.tum", k, s.estimated_pose.translation);
 }
 
 }  // namespace relslam::eval

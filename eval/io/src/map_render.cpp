@@ -1,5 +1,7 @@
 #include "relslam/eval/io/map_render.hpp"
 
+#include "render_drawing.hpp"
+
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -10,6 +12,11 @@
 
 namespace relslam::eval {
 namespace {
+
+using render::draw_scale_bar;
+using render::draw_text;
+using render::group_colour;
+using render::kText;
 
 // Colours (BGR), after the thesis's renders: green RltPoint boxes, black final and red
 // temporary labels (Fig 127), true robot blue and estimated robot red (Figs 153–156).
@@ -22,48 +29,23 @@ const cv::Scalar kTemporaryLabel(0, 0, 220);
 const cv::Scalar kDynamicMark(200, 0, 200);
 const cv::Scalar kTrueRobot(220, 80, 0);
 const cv::Scalar kEstimatedRobot(0, 0, 230);
-const cv::Scalar kText(40, 40, 40);
 
 // The picture's two world axes for a view.
 Eigen::Vector2d plane(const Eigen::Vector3d& p, RenderView view) {
   return view == RenderView::Top ? Eigen::Vector2d(p.z(), p.x()) : Eigen::Vector2d(p.z(), p.y());
 }
 
-// World (u, v) to pixels: u to the right, v up.
+// World points to pixels through the view's two axes.
 class Projection {
  public:
-  Projection(const RenderFrame& frame, const RenderOptions& options)
-      : frame_(frame),
-        scale_(std::max(options.width, options.height) / frame.span),
-        half_w_(options.width / 2.0),
-        half_h_(options.height / 2.0),
-        view_(options.view) {}
-  cv::Point operator()(const Eigen::Vector3d& p) const { return pixel(plane(p, view_)); }
-  cv::Point pixel(const Eigen::Vector2d& uv) const {
-    return {static_cast<int>(std::lround(half_w_ + (uv.x() - frame_.center_u) * scale_)),
-            static_cast<int>(std::lround(half_h_ - (uv.y() - frame_.center_v) * scale_))};
-  }
-  bool inside(const cv::Point& px, int w, int h) const { return px.x >= 0 && px.y >= 0 && px.x < w && px.y < h; }
+  Projection(const RenderFrame& frame, const RenderOptions& options) : map_(frame, options), view_(options.view) {}
+  cv::Point operator()(const Eigen::Vector3d& p) const { return map_.pixel(plane(p, view_)); }
+  bool inside(const cv::Point& px, int w, int h) const { return render::PixelMap::inside(px, w, h); }
 
  private:
-  RenderFrame frame_;
-  double scale_, half_w_, half_h_;
+  render::PixelMap map_;
   RenderView view_;
 };
-
-// A stable, well-spread colour per group (golden-ratio hue steps), so a group keeps its colour
-// from frame to frame of a video.
-cv::Scalar group_colour(int id) {
-  const double hue = std::fmod(0.618033988749895 * id, 1.0) * 180.0;
-  cv::Mat hsv(1, 1, CV_8UC3, cv::Scalar(hue, 200, 190)), bgr;
-  cv::cvtColor(hsv, bgr, cv::COLOR_HSV2BGR);
-  const cv::Vec3b c = bgr.at<cv::Vec3b>(0, 0);
-  return {static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2])};
-}
-
-void draw_text(cv::Mat& image, const std::string& text, cv::Point at, const cv::Scalar& colour, double size = 0.4) {
-  cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, size, colour, 1, cv::LINE_AA);
-}
 
 void draw_path(cv::Mat& image, const std::vector<Eigen::Vector3d>& path, const Projection& project,
                const cv::Scalar& colour) {
@@ -100,45 +82,17 @@ void draw_robot(cv::Mat& image, const Rigid3& pose, const SceneFrustum& frustum,
 }
 
 void draw_legend(cv::Mat& image, bool has_groups) {
-  struct Entry {
-    const char* text;
-    cv::Scalar colour;
-  };
-  std::vector<Entry> entries = {{"true point", kTruePoint},
-                                {"true dynamic point", kTrueDynamic},
-                                {"map point (RltPoint / EKF landmark)", kPointBox},
-                                {"flagged dynamic", kDynamicMark},
-                                {"true robot and frustum", kTrueRobot},
-                                {"estimated robot and frustum", kEstimatedRobot}};
+  std::vector<render::LegendEntry> entries = {{"true point", kTruePoint},
+                                              {"true dynamic point", kTrueDynamic},
+                                              {"map point (RltPoint / EKF landmark)", kPointBox},
+                                              {"flagged dynamic", kDynamicMark},
+                                              {"true robot and frustum", kTrueRobot},
+                                              {"estimated robot and frustum", kEstimatedRobot}};
   if (has_groups) {
     entries.push_back({"label: final group (black)", kFinalLabel});
     entries.push_back({"label: temporary group (red)", kTemporaryLabel});
   }
-  const int x = image.cols - 290, line = 16;
-  int y = image.rows - line * static_cast<int>(entries.size()) - 6;
-  cv::rectangle(image, {x - 8, y - 14}, {image.cols - 4, image.rows - 4}, {245, 245, 245}, cv::FILLED);
-  for (const Entry& e : entries) {
-    cv::rectangle(image, {x, y - 8}, {x + 8, y}, e.colour, cv::FILLED);
-    draw_text(image, e.text, {x + 14, y}, kText);
-    y += line;
-  }
-}
-
-void draw_scale_bar(cv::Mat& image, const RenderFrame& frame, const RenderOptions& options) {
-  const double pixels_per_unit = std::max(options.width, options.height) / frame.span;
-  // The largest of 1, 2, 5 x 10^n that fits in a fifth of the picture.
-  double length = std::pow(10.0, std::floor(std::log10(0.2 * frame.span)));
-  for (double m : {5.0, 2.0})
-    if (m * length * pixels_per_unit <= 0.2 * options.width) {
-      length *= m;
-      break;
-    }
-  const int px = static_cast<int>(std::lround(length * pixels_per_unit));
-  const cv::Point a(12, options.height - 14), b(12 + px, options.height - 14);
-  cv::line(image, a, b, kText, 2);
-  char text[32];
-  std::snprintf(text, sizeof text, "%g units", length);
-  draw_text(image, text, {12, options.height - 20}, kText);
+  render::draw_legend(image, entries);
 }
 
 }  // namespace
@@ -154,14 +108,7 @@ RenderFrame fit_everything(const RenderScene& scene, const RenderOptions& option
   for (const auto& p : scene.true_path) grow(p);
   for (const auto& p : scene.estimated_path) grow(p);
   for (const auto& l : scene.landmarks) grow(l.p);
-  if (!(lo.array() <= hi.array()).all()) return {};
-  const Eigen::Vector2d c = 0.5 * (lo + hi), extent = hi - lo;
-  // The wider picture side takes the span; the other side must still hold its extent.
-  const double aspect =
-      static_cast<double>(std::max(options.width, options.height)) / std::min(options.width, options.height);
-  const bool wide = options.width >= options.height;
-  const double span = std::max(wide ? extent.x() : extent.y(), (wide ? extent.y() : extent.x()) * aspect);
-  return {c.x(), c.y(), 1.08 * std::max(span, 1.0)};
+  return render::fit_box(lo, hi, options);
 }
 
 RenderFrame fit_robot(const RenderScene& scene, const RenderOptions& options) {

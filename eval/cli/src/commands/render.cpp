@@ -1,8 +1,10 @@
 #include "relslam/eval/cli/commands/render.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/experiments/planar_replay.hpp"
 #include "relslam/eval/experiments/run_replay.hpp"
 #include "relslam/eval/io/map_render.hpp"
+#include "relslam/eval/io/planar_render.hpp"
 #include "relslam/eval/io/progress.hpp"
 
 #include <opencv2/imgcodecs.hpp>
@@ -31,10 +33,19 @@ RenderOptions render_options(const RenderArgs& args) {
   return o;
 }
 
-// The part of the world to show: --center/--span, else the fit rule.
-RenderFrame frame_for(const RenderArgs& args, const RenderScene& scene, const RenderOptions& options) {
+// What a kind of run can be drawn as: a point run in either view, a planar run from the top
+// only (its world is 2½D: walls span their whole height, thesis 4.2.3).
+void check_view(const RunReplay&, const RenderOptions&) {}
+void check_view(const PlanarReplay&, const RenderOptions& options) {
+  if (options.view != RenderView::Top) throw InputError("", 0, "--view", "a planar run is drawn from the top only");
+}
+
+// The part of the world to show: --center/--span, else the fit rule (for either kind of scene).
+template <class Scene>
+RenderFrame frame_for(const RenderArgs& args, const Scene& scene, const RenderOptions& options) {
   if (!args.center.empty()) {
-    if (args.center.size() != 2) throw InputError("", 0, "--center", "two numbers U,V (top view: z,x; side view: z,y)");
+    if (args.center.size() != 2)
+      throw InputError("", 0, "--center", "two numbers U,V (top view: z,x; side view: z,y; planar runs: x,z)");
     if (!(args.span > 0)) throw InputError("", 0, "--span", "must be > 0 with --center");
     return {args.center[0], args.center[1], args.span};
   }
@@ -53,12 +64,14 @@ void write_image(const std::string& file, const cv::Mat& image) {
   if (!ok) throw InputError(file, 0, "--out", "cannot write an image here (a known image extension such as .png?)");
 }
 
-void warn_if_replay_differs(const RunReplay& replay, int k, bool quiet) {
+template <class Replay>
+void warn_if_replay_differs(const Replay& replay, int k, bool quiet) {
   const std::string mismatch = replay.check_against_recorded(k);
   if (!mismatch.empty() && !quiet) std::fprintf(stderr, "relslam: warning: %s\n", mismatch.c_str());
 }
 
-int render_video(const RenderArgs& args, RunReplay& replay, const RenderOptions& options, int last) {
+template <class Replay>
+int render_video(const RenderArgs& args, Replay& replay, const RenderOptions& options, int last) {
   if (args.every < 1) throw InputError("", 0, "--every", "must be >= 1");
   if (args.fps < 1) throw InputError("", 0, "--fps", "must be >= 1");
   cv::VideoWriter writer(args.video, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), args.fps,
@@ -70,7 +83,7 @@ int render_video(const RenderArgs& args, RunReplay& replay, const RenderOptions&
   Progress bar("render " + args.video, last + 1, !args.quiet);
   int frames = 0;
   for (int k = 0; k <= last; k += args.every) {
-    const RenderScene scene = replay.scene_at(k);
+    const auto scene = replay.scene_at(k);
     writer.write(render_map(scene, frame ? *frame : frame_for(args, scene, options), options));
     ++frames;
     bar.update(k + 1);
@@ -83,11 +96,30 @@ int render_video(const RenderArgs& args, RunReplay& replay, const RenderOptions&
   return 0;
 }
 
+template <class Replay>
+int render_replay(const RenderArgs& args, Replay&& replay, const RenderOptions& options) {
+  check_view(replay, options);
+  const int last = args.iteration < 0 ? replay.iterations() - 1 : args.iteration;
+  if (last < 0 || last >= replay.iterations())
+    throw InputError(
+        "", 0, "--iteration",
+        "the run has iterations 0.." + std::to_string(replay.iterations() - 1) + ", got " + std::to_string(last));
+  if (!args.video.empty()) {
+    render_video(args, replay, options, last);
+    if (args.out.empty()) return 0;
+  }
+  const auto scene = replay.scene_at(last);
+  write_image(args.out, render_map(scene, frame_for(args, scene, options), options));
+  warn_if_replay_differs(replay, last, args.quiet);
+  if (!args.quiet) std::printf("wrote %s: %s, iteration %d\n", args.out.c_str(), replay.algorithm().c_str(), last);
+  return 0;
+}
+
 }  // namespace
 
 void add_render(CLI::App& app, RenderArgs& args) {
   CLI::App* cmd = app.add_subcommand(
-      "render", "Draw a simulated run at an iteration, or a video of it (thesis Figs 127-129, 153-162)");
+      "render", "Draw a simulated run at an iteration, or a video of it (thesis Figs 67, 127-129, 153-162)");
   cmd->description(
       "Draw a run folder of relslam run at one iteration, like thesis Figures 127-129 and 153-162: the\n"
       "true points (grey; dynamic orange), the algorithm's map (green boxes; flagged dynamic points as\n"
@@ -95,11 +127,16 @@ void add_render(CLI::App& app, RenderArgs& args) {
       "labels black for final and red for temporary groups, and the true (blue) and estimated (red) robot\n"
       "with its frustum. The run is replayed from its manifest.json (same scenario, same seed: the same\n"
       "state), so any iteration can be drawn; a warning says if the replay departs from trajectory.tum.\n"
+      "A planar run (scenario kind \"planar\", thesis Chapter 4) is drawn from the top, x right and z up,\n"
+      "as thesis Fig. 67: true walls (yellow), mapped planes (blue), the planes seen at that iteration\n"
+      "placed at the estimated pose (red), each group X<id> with thin lines to its planes, the true\n"
+      "(orange) and estimated (blue) paths and the frustum at the estimated pose.\n"
       "Examples:\n"
       "  relslam render runs/f8 --out runs/f8/map.png                       # the last iteration, whole map\n"
       "  relslam render runs/f8 --iteration 1200 --fit robot --labels on --out close.png   # Fig 129 style\n"
       "  relslam render runs/dyn --algorithm ekf6d --iteration 900 --out ekf.png          # Figs 153-156\n"
-      "  relslam render runs/f8 --video runs/f8/run.mp4 --every 20");
+      "  relslam render runs/f8 --video runs/f8/run.mp4 --every 20\n"
+      "  relslam render runs/hall --iteration 300 --out hall.png            # a planar run, Fig 67 style");
   cmd->add_option("run", args.run_dir, "Run folder (written by relslam run from a scenario)")->required();
   cmd->add_option("--iteration,-k", args.iteration,
                   "Iteration to draw (default: the last; with --video: the last frame)");
@@ -107,17 +144,21 @@ void add_render(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--video", args.video, "MP4 video of the run to write");
   cmd->add_option("--every", args.every, "Video: one frame every N iterations")->capture_default_str();
   cmd->add_option("--fps", args.fps, "Video: frames per second")->capture_default_str();
-  cmd->add_option("--algorithm,-a", args.algorithm, "relative_point or ekf6d")->capture_default_str();
+  cmd->add_option("--algorithm,-a", args.algorithm,
+                  "Point runs: relative_point (default) or ekf6d; planar runs: a plane algorithm the run "
+                  "included (default: its first)");
   cmd->add_option("--width", args.width, "Picture width, pixels")->capture_default_str();
   cmd->add_option("--height", args.height, "Picture height, pixels")->capture_default_str();
-  cmd->add_option("--view", args.view, "top (world z right, x up) or side (z right, y up)")->capture_default_str();
+  cmd->add_option("--view", args.view, "top (world z right, x up; planar runs: x right, z up) or side (z right, y up)")
+      ->capture_default_str();
   cmd->add_option("--fit", args.fit, "map (everything) or robot (around the true robot and its frustum)")
       ->capture_default_str();
-  cmd->add_option("--center", args.center, "Picture centre U,V in world units (overrides --fit)")
+  cmd->add_option("--center", args.center, "Picture centre U,V in world units, as the view's axes (overrides --fit)")
       ->delimiter(',')
       ->expected(2);
   cmd->add_option("--span", args.span, "World units across the picture's wider side (with --center)");
-  cmd->add_option("--labels", args.labels, "Point and group labels: auto (when few points are in view), on, off")
+  cmd->add_option("--labels", args.labels,
+                  "Point and group labels: auto (when few points or groups are in view), on, off")
       ->capture_default_str();
   cmd->add_flag("--quiet,-q", args.quiet, "Print nothing but errors");
 }
@@ -126,21 +167,12 @@ int run_render(const RenderArgs& args) {
   if (args.out.empty() && args.video.empty())
     throw InputError("", 0, "--out", "give --out IMAGE, --video MP4, or both");
   const RenderOptions options = render_options(args);
-  RunReplay replay(args.run_dir, args.algorithm);
-  const int last = args.iteration < 0 ? replay.iterations() - 1 : args.iteration;
-  if (last >= replay.iterations())
-    throw InputError(
-        "", 0, "--iteration",
-        "the run has iterations 0.." + std::to_string(replay.iterations() - 1) + ", got " + std::to_string(last));
-  if (!args.video.empty()) {
-    render_video(args, replay, options, last);
-    if (args.out.empty()) return 0;
-  }
-  const RenderScene scene = replay.scene_at(last);
-  write_image(args.out, render_map(scene, frame_for(args, scene, options), options));
-  warn_if_replay_differs(replay, last, args.quiet);
-  if (!args.quiet) std::printf("wrote %s: %s, iteration %d\n", args.out.c_str(), args.algorithm.c_str(), last);
-  return 0;
+  ReplayManifest manifest = read_replay_manifest(args.run_dir);
+  // The one place the run's kind matters: each replay rebuilds its own kind of scene, and the
+  // drawing overloads (map_render.hpp, planar_render.hpp) follow the scene's type.
+  if (manifest.kind() == ScenarioKind::Planar)
+    return render_replay(args, PlanarReplay(std::move(manifest), args.algorithm), options);
+  return render_replay(args, RunReplay(std::move(manifest), args.algorithm), options);
 }
 
 }  // namespace relslam::eval

@@ -20,6 +20,15 @@ namespace relslam::eval {
 // An estimated plane on the map: its id (what assignment() names) and where it is, world frame.
 using MappedPlane = std::pair<int, PlaneObject>;
 
+// A group of planes as the algorithm keeps it (thesis RltXPoint, 4.4.3.2): where the map placed
+// its origin and which planes (ids of map()) belong to it. Read by pictures only (spec §6.0,
+// thesis Fig. 67: each group's label joined to its planes).
+struct PlaneGroup {
+  int id = 0;
+  PlanarPose world_pose;
+  std::vector<int> planes;
+};
+
 class PlaneAlgorithm {
  public:
   virtual ~PlaneAlgorithm() = default;
@@ -37,6 +46,8 @@ class PlaneAlgorithm {
   virtual const std::vector<int>& assignment() const = 0;
   // The planes on the map now, ascending ids.
   virtual const std::vector<MappedPlane>& map() const = 0;
+  // The groups placed on the map now; none for an algorithm that keeps no groups.
+  virtual std::vector<PlaneGroup> groups() const { return {}; }
 
   // Its own columns of iterations.csv (after the shared score columns) and this step's fields.
   virtual std::vector<std::string> iteration_columns() const = 0;

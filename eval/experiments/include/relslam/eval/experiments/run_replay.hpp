@@ -4,6 +4,7 @@
 // any iteration exactly — the groups, owners and levels that run folders do not store. Used by
 // `relslam render`.
 
+#include "relslam/eval/experiments/replay_manifest.hpp"
 #include "relslam/eval/io/map_render.hpp"
 
 #include <filesystem>
@@ -14,13 +15,16 @@ namespace relslam::eval {
 
 class RunReplay {
  public:
-  // Throws InputError when `run_dir` has no manifest.json of a simulated run (relslam run or
-  // simulate), or `algorithm` is not one the run can replay (relative_point, ekf6d).
+  // Throws InputError when `run_dir` has no manifest.json of a simulated point-world run (relslam
+  // run or simulate), or `algorithm` is not one the run can replay (relative_point, ekf6d; empty:
+  // relative_point).
   RunReplay(const std::filesystem::path& run_dir, const std::string& algorithm);
+  RunReplay(ReplayManifest manifest, const std::string& algorithm);
   RunReplay(RunReplay&&) noexcept;
   ~RunReplay();
 
   int iterations() const;
+  const std::string& algorithm() const;
   // Runs the algorithm up to and including iteration k (never backwards: InputError) and
   // describes that moment.
   RenderScene scene_at(int k);

@@ -1,6 +1,6 @@
 #pragma once
 // `relslam render`: a picture (or a video) of a simulated run at any iteration, like thesis
-// Figures 127–129 and 153–162.
+// Figures 127–129 and 153–162, or of a planar run like Fig. 67 (spec relative_plane_em.md §6.0).
 
 #include <CLI/CLI.hpp>
 
@@ -10,10 +10,10 @@ namespace relslam::eval {
 
 struct RenderArgs {
   std::string run_dir;
-  std::string algorithm = "relative_point";
-  int iteration = -1;  // -1: the run's last iteration
-  std::string out;     // PNG (or any image type OpenCV writes)
-  std::string video;   // MP4 of the run, one frame every `every` iterations
+  std::string algorithm;  // empty: relative_point for point runs, the run's first for planar ones
+  int iteration = -1;     // -1: the run's last iteration
+  std::string out;        // PNG (or any image type OpenCV writes)
+  std::string video;      // MP4 of the run, one frame every `every` iterations
   int every = 50;
   int fps = 10;
   int width = 1280;

@@ -1,0 +1,58 @@
+#include "relslam/eval/experiments/replay_manifest.hpp"
+
+#include "relslam/eval/config/input_error.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+namespace relslam::eval {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The pose at iteration k in a TUM file ("t x y z qx qy qz qw", t = iteration), if it has one.
+std::optional<Rigid3> recorded_pose(const fs::path& tum, int k) {
+  std::ifstream in(tum);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    double t, x, y, z, qx, qy, qz, qw;
+    if (!(row >> t >> x >> y >> z >> qx >> qy >> qz >> qw)) continue;
+    if (static_cast<int>(std::lround(t)) == k) return Rigid3::from(Eigen::Quaterniond(qw, qx, qy, qz), {x, y, z});
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ReplayManifest read_replay_manifest(const fs::path& run_dir) {
+  const fs::path file = run_dir / "manifest.json";
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string(), 0, "", "not found: render needs the folder of a relslam run");
+  nlohmann::json manifest;
+  try {
+    manifest = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file.string(), 0, "", std::string("not a relslam manifest: ") + e.what());
+  }
+  if (!manifest.contains("scenario") || manifest.contains("rawlog") || manifest.contains("victoria_park"))
+    throw InputError(file.string(), 0, "", "render replays simulated runs (relslam run SCENARIO); this one is not");
+  LoadedScenario loaded = parse_scenario_with_overrides(manifest["scenario"].dump(), file.string(), {});
+  return {run_dir, file, std::move(manifest), std::move(loaded)};
+}
+
+std::string compare_with_recorded(const fs::path& tum, int k, const Eigen::Vector3d& replayed) {
+  const std::optional<Rigid3> recorded = recorded_pose(tum, k);
+  if (!recorded) return "";  // the run stopped earlier or wrote no trajectory: nothing to compare
+  // TUM rows carry about 9 significant digits.
+  const double tolerance = 1e-6 * (1.0 + recorded->translation.norm());
+  const double gap = (recorded->translation - replayed).norm();
+  if (gap <= tolerance) return "";
+  return "the replayed pose at iteration " + std::to_string(k) + " is " + std::to_string(gap) + " units from " +
+         tum.string() + ": the run was made by another build or scenario, so the picture may not show it";
+}
+
+}  // namespace relslam::eval

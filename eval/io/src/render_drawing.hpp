@@ -1,0 +1,48 @@
+#pragma once
+// Internal to io: what the point picture (map_render.cpp) and the planar picture
+// (planar_render.cpp) draw alike — world-to-pixel mapping, text, the scale bar, the legend, the
+// fit rule and the group colours — so both kinds of run look like one family of figures.
+
+#include "relslam/eval/io/map_render.hpp"
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include <string>
+#include <vector>
+
+namespace relslam::eval::render {
+
+// World (u, v) to pixels: u to the right, v up.
+class PixelMap {
+ public:
+  PixelMap(const RenderFrame& frame, const RenderOptions& options);
+  cv::Point pixel(const Eigen::Vector2d& uv) const;
+  static bool inside(const cv::Point& px, int w, int h) { return px.x >= 0 && px.y >= 0 && px.x < w && px.y < h; }
+
+ private:
+  RenderFrame frame_;
+  double scale_, half_w_, half_h_;
+};
+
+// A stable, well-spread colour per group (golden-ratio hue steps), so a group keeps its colour
+// from frame to frame of a video.
+cv::Scalar group_colour(int id);
+
+inline const cv::Scalar kText(40, 40, 40);
+
+void draw_text(cv::Mat& image, const std::string& text, cv::Point at, const cv::Scalar& colour, double size = 0.4);
+void draw_scale_bar(cv::Mat& image, const RenderFrame& frame, const RenderOptions& options);
+
+struct LegendEntry {
+  std::string text;
+  cv::Scalar colour;
+};
+// A box of colour swatches in the lower right corner.
+void draw_legend(cv::Mat& image, const std::vector<LegendEntry>& entries);
+
+// The frame that holds the box lo..hi (picture axes u, v) with a margin, the wider picture side
+// taking the span.
+RenderFrame fit_box(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const RenderOptions& options);
+
+}  // namespace relslam::eval::render
