@@ -673,8 +673,9 @@ def plane_variants(fig, sweep, columns, ylabels):
     series = sweep_series(sweep, columns, algorithm=PLANE)
     axes = np.atleast_1d(fig.subplots(len(columns), 1, sharex=True))
     for ax, column, ylabel in zip(axes, columns, ylabels):
-        for name, d in series.items():
-            ax.plot(d["iteration"], d[column], lw=1, label=name)
+        for (name, d), style in zip(series.items(), [("-", 2.4), ("--", 1.4), (":", 1.4)] * 4):
+            # dashed over solid: variants that agree (as Rule 12 on and off may) stay told apart
+            ax.plot(d["iteration"], d[column], ls=style[0], lw=style[1], label=name)
         finish(ax, "iteration" if ax is axes[-1] else "", ylabel, legend=False)
     axes[0].legend(fontsize=8)
     return "; ".join(f"{name}: " + ", ".join(f"last {c} {last_finite(d[c]):.3g}" for c in columns)
@@ -750,12 +751,12 @@ E05 = ("p-e05-edge-on",)
 E06 = ("p-e06-rule12",)
 
 FIGURES = sorted([
-    Figure(64, "four planes problem: Map A after ten loops", ("p-four-planes",), map_overlay),
+    Figure(64, "four planes problem: Map A, true walls and mapped planes, E03", ("p-four-planes",), map_overlay),
     Figure(65, "the RltPlane structure (also paper Fig. 1)", ("p-four-planes",), rltplane_table),
     Figure(66, "invariance issue, E01 (also paper Fig. 3)", ("p-e01-invariance",), invariance_scatter),
     Figure(67, "completed map of Map D with its groups (also paper Fig. 2)", ("p-office",),
            P(map_overlay, groups=True)),
-    Figure(70, "four planes problem: map and pose error over ten loops, E03", ("p-four-planes",), four_planes_errors),
+    Figure(70, "four planes problem: map and pose error per loop, E03", ("p-four-planes",), four_planes_errors),
     Figure(71, "hallway problem: groups and links, E04", ("p-hallway",), hallway_groups),
     Figure(72, "edge-on wall: back-face culling and Rule 10, E05 (a)-(c)", E05,
            P(plane_variants, columns=["position_error", "rlt_planes", "mean_map_error"],
