@@ -850,7 +850,8 @@ def render(figure, runs, out):
         return Result(figure, "error", str(e))
     prefix = f"Fig. {figure.id} — " if isinstance(figure.id, int) else "Extra — "
     fig.suptitle(prefix + figure.title)
-    return Result(figure, "ok", rp.save_png(fig, os.path.join(out, figure.name + ".png"), DPI), shows or "")
+    shows = shows if isinstance(shows, str) else ""  # helpers such as compare_algorithms return their axes
+    return Result(figure, "ok", rp.save_png(fig, os.path.join(out, figure.name + ".png"), DPI), shows)
 
 
 def render_all(runs, out, ids=None, log=print):
