@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs every thesis Chapter 6 experiment and writes the report: each figure next to its thesis
+# Runs the thesis's Chapter 4 (Relative Plane) and Chapter 6 (Relative Point) experiments and
+# writes the report: each figure next to its thesis
 # number and caption (report/index.html) and the thesis's numbers next to ours (report/claims.md).
 #   scripts/reproduce.sh [--quick] [--out DIR] [--report DIR] [--binary PATH] [--jobs N]
 #     --quick    shortened runs (fewer iterations and loops; under 15 minutes on two cores)
@@ -64,7 +65,18 @@ run() { local name=$1 scenario=$2; shift 2; relslam run "scenarios/$scenario.jso
 sweep() { local name=$1; shift; relslam sweep "scenarios/$name.json" --out "$out/$name" --force -q --jobs "$jobs" "$@"; }
 set_each() { local a=(); for kv in "$@"; do a+=(--set "$kv"); done; echo "${a[@]}"; }
 
-echo "reproduce: thesis Chapter 6 into $out ($([ $quick -eq 1 ] && echo quick || echo full) mode); log in $log"
+echo "reproduce: thesis Chapters 4 and 6 into $out ($([ $quick -eq 1 ] && echo quick || echo full) mode); log in $log"
+
+# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01, E03-E06, E21).
+# Seconds each, so quick mode runs them in full; the variant files go through sweep.
+step p-e01-invariance    run p-e01-invariance p-e01-invariance
+step p-four-planes       run p-four-planes p-four-planes
+step p-hallway           run p-hallway p-hallway
+step p-hallway-back      run p-hallway-back p-hallway-back
+step p-e05-edge-on       sweep p-e05-edge-on
+step p-e06-rule12        sweep p-e06-rule12
+step p-office            run p-office p-office
+step p-room              run p-room p-room
 
 # 6.5 - 6.6: the figure eight, its variants and the run-time experiments.
 step s-f8                run s-f8 s-f8

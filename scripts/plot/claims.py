@@ -1,4 +1,5 @@
-"""The thesis's numbers (spec relative_point.md §10) next to ours, computed from the run folders.
+"""The thesis's numbers (spec relative_point.md §10) and the Relative Plane facts it states (spec
+relative_plane_em.md §6.1, §6.3: E01, E03-E06) next to ours, computed from the run folders.
 
 Each row names the thesis value, our value and the files it came from; a row whose run folder is
 missing says "not run" and no number is ever filled in by hand. report.py writes the table as
@@ -159,6 +160,96 @@ def vp_level(run, level):
     return "; ".join(cells) or f"no 'levels {level}' benchmark"
 
 
+# ---- Chapter 4, the Relative Plane half ------------------------------------------------------
+# The thesis states these as facts, not numbers ("the map is correct", "no drift"), so the verdicts
+# need thresholds of our own [R]: a map is correct when every wall seen is mapped, none twice, and the
+# final mean e_ends is under CORRECT_MAP units, ten times the plane position noise σ_p = 0.01 (spec
+# §3.8); a last loop whose mean map error exceeds the first's by DRIFT_RATIO counts as drift.
+CORRECT_MAP = 0.1
+DRIFT_RATIO = 1.25
+
+
+def plane_summary(run, *parts):
+    """summary.csv's relative_plane row of RUN/parts as {column: value}."""
+    columns = ["final_mean_map_error", "final_position_error", "walls_mapped", "walls_seen", "duplicates",
+               "pose_valid_fraction", "max_position_error"]
+    row = run.summary(columns) if not parts else None
+    if parts:
+        t = rp.read_table(run.file(*parts, "summary.csv"), ["algorithm", *columns], text=("algorithm",))
+        row = {a: {c: t[c][i] for c in columns} for i, a in enumerate(t["algorithm"])}
+    if fg.PLANE not in row:
+        raise rp.DataError(f"{os.path.join(run.path, *parts, 'summary.csv')}: column algorithm: no {fg.PLANE} row")
+    return row[fg.PLANE]
+
+
+def verdict(s):
+    correct = (s["walls_mapped"] == s["walls_seen"] and s["duplicates"] == 0
+               and s["final_mean_map_error"] < CORRECT_MAP)
+    return (f"{'correct' if correct else 'wrong'}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
+            f"{s['duplicates']:.0f} duplicates, final mean map error {s['final_mean_map_error']:.3g}, "
+            f"final position error {s['final_position_error']:.3g}, max {s['max_position_error']:.3g}")
+
+
+def rule3_invariance(run):
+    run.file("plane_observations.csv")
+    run.file("ground_truth_path.tum")
+    psi, raw, rel, expected = fg.invariance(run.path)
+    return (f"raw std (Δx, Δz) ({raw[:, 0].std():.3g}, {raw[:, 1].std():.3g}) vs Rule 3 std ({rel[:, 0].std():.3g}, "
+            f"{rel[:, 1].std():.3g}), Rule 3 mean ({rel[:, 0].mean():.4g}, {rel[:, 1].mean():.4g}) vs true "
+            f"({expected[0]:.4g}, {expected[1]:.4g}); {len(psi)} iterations, ψ from {np.nanmin(psi):.0f}° to "
+            f"{np.nanmax(psi):.0f}°")
+
+
+def no_drift(run):
+    run.file("manifest.json")
+    run.file(fg.PLANE, "iterations.csv")
+    loops = fg.loop_means(run.path, "mean_map_error")
+    pose = fg.loop_means(run.path, "position_error")
+    first, last = loops[0][2], loops[-1][2]
+    return (f"{'no drift' if last <= DRIFT_RATIO * first else 'drift'}: mean map error per plane, loop 1 "
+            f"{first:.3g}, loop {len(loops)} {last:.3g} (ratio {last / first:.2f}; loops range "
+            f"{min(m for *_, m in loops):.3g}-{max(m for *_, m in loops):.3g}); mean position error loop 1 "
+            f"{pose[0][2]:.3g}, loop {len(pose)} {pose[-1][2]:.3g}")
+
+
+def map_correct(run):
+    return verdict(plane_summary(run))
+
+
+def hallway(run):
+    links = rp.read_table(run.file(fg.PLANE, "links.csv"), ["from", "linking_planes"], text=("linking_planes",))
+    counts = [len([p for p in planes.split(";") if p]) for f, planes in zip(links["from"], links["linking_planes"])
+              if np.isfinite(f)]
+    groups = rp.read_table(run.file(fg.PLANE, "groups.csv"), ["group_id"])["group_id"]
+    return (f"{len(groups)} groups, {len(counts)} links with {'/'.join(map(str, counts))} linking planes; "
+            + verdict(plane_summary(run)))
+
+
+def variant_folder(run, prefix):
+    """The folder (relative to the sweep) of the first variant whose name starts with prefix."""
+    names = ["variant", "folder", "algorithm"]
+    t = rp.read_table(run.file("sweep.csv"), names, text=names)
+    for v, f, a in zip(t["variant"], t["folder"], t["algorithm"]):
+        if a == fg.PLANE and v.startswith(prefix):
+            return v, f
+    raise rp.DataError(f"{os.path.join(run.path, 'sweep.csv')}: column variant: none starts with {prefix!r}")
+
+
+def e05(run, prefix):
+    name, folder = variant_folder(run, prefix)
+    return f"{name}: " + verdict(plane_summary(run, folder))
+
+
+def e06(run):
+    cells = []
+    for prefix in ("rule12_on", "rule12_off"):
+        name, folder = variant_folder(run, prefix)
+        links = rp.read_table(run.file(folder, fg.PLANE, "links.csv"), ["from", "to"])
+        pairs = [f"X{f:.0f}→X{t:.0f}" for f, t in zip(links["from"], links["to"]) if np.isfinite(f)]
+        cells.append(f"{name}: links {' '.join(pairs) or 'none'}; " + verdict(plane_summary(run, folder)))
+    return " — ".join(cells)
+
+
 # (quantity, thesis value, run folders, claim function)
 CLAIMS = [
     ("loop length / iterations (S-F8)", "≈1145 units / ≈3800", ["s-f8"], loop),
@@ -185,6 +276,19 @@ CLAIMS = [
     ("Victoria Park per scan, 2 levels (dynamic detection)", "0.40 ms (2.9 s)", ["vp-timing.json"],
      P(vp_level, level=2)),
     ("Victoria Park per scan, 3 levels", "0.57 ms (4.13 s)", ["vp-timing.json"], P(vp_level, level=3)),
+    ("E01 Rule 3 invariance: raw midpoint difference vs Rule 3 offset", "raw changes with the heading; Rule 3 "
+     "constant up to noise (Fig 66)", ["p-e01-invariance"], rule3_invariance),
+    ("E03 four planes: no drift, first vs last loop", "long runs show no drift (4.3.1)", ["p-four-planes"], no_drift),
+    ("E03 four planes: map correct", "the four planes problem is solved (4.3.1)", ["p-four-planes"], map_correct),
+    ("E04 hallway: groups, links, map", "groups linked by 2 planes each; map correct (4.3.2)", ["p-hallway"],
+     hallway),
+    ("E05 (a) culling off, Rule 10 off", "wrong: two possible robot positions (4.3.2)", ["p-e05-edge-on"],
+     P(e05, prefix="a_")),
+    ("E05 (b) culling off, Rule 10 on", "correct (4.3.2)", ["p-e05-edge-on"], P(e05, prefix="b_")),
+    ("E05 (c) culling on, Rule 10 on", "correct; no duplicates on the way back (Rule 11)", ["p-e05-edge-on"],
+     P(e05, prefix="c_")),
+    ("E06 Rule 12 on vs off", "off: X8 links to the short-lived X7; on: to the better X6; map correct (4.3.2)",
+     ["p-e06-rule12"], e06),
 ]
 
 

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Thesis Chapter 6 charts (Figs 110-171) from the run folders `relslam` writes.
+"""Thesis charts from the run folders `relslam` writes: Chapter 4's Relative Plane figures (Figs 64-73,
+the paper's Figs 1-3) and Chapter 6's Relative Point figures (Figs 110-171).
 
 Every figure reads only CSV/JSON files below RUNS (the folder names of scripts/reproduce.sh, listed
 in FIGURES) and writes one PNG, OUT/fig<N>.png (extras: OUT/components.png, OUT/vp-timing.png), of
@@ -59,21 +60,21 @@ def algorithms(run):
     return [a for a, s in zip(t["algorithm"], t["status"]) if s != "ratio"]
 
 
-def sweep_runs(sweep, axis):
-    """[(axis value, run folder)] of a `relslam sweep` folder, relative_point rows, sweep order."""
+def sweep_runs(sweep, axis, algorithm=ALG):
+    """[(axis value, run folder)] of a `relslam sweep` folder, one algorithm's rows, sweep order."""
     path = os.path.join(sweep, "sweep.csv")
     t = rp.read_table(path, [axis, "folder", "algorithm"], text=(axis, "folder", "algorithm"))
-    runs = [(v, os.path.join(sweep, f)) for v, f, a in zip(t[axis], t["folder"], t["algorithm"]) if a == ALG]
+    runs = [(v, os.path.join(sweep, f)) for v, f, a in zip(t[axis], t["folder"], t["algorithm"]) if a == algorithm]
     if not runs:
-        raise rp.DataError(f"{path}: column algorithm: no {ALG} rows")
+        raise rp.DataError(f"{path}: column algorithm: no {algorithm} rows")
     return runs
 
 
-def sweep_series(sweep, columns, axis="variant"):
+def sweep_series(sweep, columns, axis="variant", algorithm=ALG):
     """{axis value: {column: per-iteration mean over the seeds}} (seeds cut to the shortest run)."""
     grouped = {}
-    for value, folder in sweep_runs(sweep, axis):
-        grouped.setdefault(value, []).append(iterations(folder, columns))
+    for value, folder in sweep_runs(sweep, axis, algorithm):
+        grouped.setdefault(value, []).append(iterations(folder, columns, algorithm))
     out = {}
     for value, runs in grouped.items():
         n = min(len(r["iteration"]) for r in runs)
@@ -430,6 +431,263 @@ def vp_timing(fig, path):
     finish(ax, "grouping levels", "ms per scan")
 
 
+# ---- Chapter 4: the Relative Plane half (spec relative_plane_em.md §6) -----------------------
+
+PLANE = "relative_plane"
+MAP_ERROR = "map error per plane (units)"  # mean e_ends, spec §7.2
+WALL = {"color": "gold", "lw": 5, "solid_capstyle": "butt", "zorder": 1}  # the thesis draws true walls yellow
+MAPPED = {"color": "blue", "lw": 1.6, "zorder": 3}  # and mapped planes blue (Fig 70's text)
+
+
+def plane_table(run, name, columns, text=()):
+    return rp.read_table(os.path.join(run, PLANE, name), columns, text=text)
+
+
+def true_walls(run):
+    return rp.read_table(os.path.join(run, "ground_truth_walls.csv"), ["id", "a_x", "a_z", "b_x", "b_z"])
+
+
+def true_path(run):
+    """{iteration, x, z, psi_deg} of ground_truth_path.tum (TUM time = iteration). The planar turn by
+    ψ is a rotation about −y (core/planar_pose.hpp), so q = (0, −sin ψ/2, 0, cos ψ/2)."""
+    t = rp.read_tum(os.path.join(run, "ground_truth_path.tum"))
+    psi = np.degrees(2 * np.arctan2(-np.asarray(t["qy"]), np.asarray(t["qw"])))
+    return {"iteration": np.asarray(t["t"]), "x": np.asarray(t["x"]), "z": np.asarray(t["z"]),
+            "psi_deg": (psi + 180) % 360 - 180}
+
+
+def run_loops(run):
+    """(loops, iterations) of a planar run from its manifest (0 loops: the map's own path)."""
+    path = os.path.join(run, "manifest.json")
+    m = read_json(path)
+    try:
+        return int(m["scenario"]["planar"]["loops"]), int(m["planar_simulation"]["iterations"])
+    except (KeyError, TypeError, ValueError):
+        raise rp.DataError(f"{path}: no scenario.planar.loops or planar_simulation.iterations") from None
+
+
+def loop_means(run, column):
+    """[(first iteration, last iteration, mean of column)] per loop: the run cut into its loops of equal
+    length (the last iteration closes the final loop). Invalid poses (empty fields) are left out."""
+    loops, n = run_loops(run)
+    if loops < 1:
+        raise rp.DataError(f"{os.path.join(run, 'manifest.json')}: scenario.planar.loops is {loops}: no loops")
+    d = iterations(run, [column], PLANE)
+    edges = np.linspace(0, n, loops + 1).round().astype(int)
+    out = []
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        values = d[column][(d["iteration"] >= lo) & (d["iteration"] < hi)]
+        out.append((lo, hi - 1, float(np.nanmean(values)) if np.isfinite(values).any() else float("nan")))
+    return out
+
+
+def group_layout(run):
+    """{group id: (x, z, [member plane ids])}: a label at the mean of the member planes' mapped midpoints,
+    as the paper draws its X labels ("for display purposes the centroid of the group", paper §II.D)."""
+    g = plane_table(run, "groups.csv", ["group_id", "planes"], text=("planes",))
+    p = plane_table(run, "planes.csv", ["id", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+    mid = {int(i): ((ax + bx) / 2, (az + bz) / 2)
+           for i, ax, az, bx, bz in zip(p["id"], p["kp1_x"], p["kp1_z"], p["kp2_x"], p["kp2_z"])
+           if np.isfinite([ax, az, bx, bz]).all()}
+    out = {}
+    for gid, planes in zip(g["group_id"], g["planes"]):
+        members = [int(s) for s in planes.split(";") if s and int(s) in mid]
+        if members:
+            out[int(gid)] = (np.mean([mid[m][0] for m in members]), np.mean([mid[m][1] for m in members]), members)
+    return out, mid
+
+
+def plane_overlay(ax, run, groups=False, title=None):
+    """Top-down map (spec §6.0): true walls yellow, mapped planes blue, true path orange, estimated
+    path blue; with `groups` each group's X label and a line from it to each member plane."""
+    w = true_walls(run)
+    for i, (ax_, az, bx, bz) in enumerate(zip(w["a_x"], w["a_z"], w["b_x"], w["b_z"])):
+        ax.plot([ax_, bx], [az, bz], label="true walls" if i == 0 else None, **WALL)
+    p = plane_table(run, "planes.csv", ["kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+    shown = np.isfinite(p["kp1_x"])
+    for i, k in enumerate(np.nonzero(shown)[0]):
+        ax.plot([p["kp1_x"][k], p["kp2_x"][k]], [p["kp1_z"][k], p["kp2_z"][k]],
+                label=f"mapped planes ({shown.sum()})" if i == 0 else None, **MAPPED)
+    truth = true_path(run)
+    ax.plot(truth["x"], truth["z"], color="orange", lw=1, label="true path")
+    est = rp.read_tum(os.path.join(run, PLANE, "trajectory.tum"))
+    ax.plot(est["x"], est["z"], color="tab:blue", lw=0.6, ls="--", label="estimated path (valid poses)")
+    if groups:
+        layout, mid = group_layout(run)
+        for gid, (gx, gz, members) in layout.items():
+            for m in members:
+                ax.plot([gx, mid[m][0]], [gz, mid[m][1]], color="grey", lw=0.5, zorder=2)
+            ax.annotate(f"X{gid}", (gx, gz), ha="center", va="center", fontsize=8, zorder=4,
+                        bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "grey", "lw": 0.5})
+    ax.set_aspect("equal", adjustable="datalim")
+    finish(ax, "x (units)", "z (units)")
+    if title:
+        ax.set_title(title, fontsize=9)
+
+
+def count_summary(run):
+    s = rp.read_table(os.path.join(run, "summary.csv"), ["algorithm", "final_mean_map_error", "walls_mapped",
+                                                          "walls_seen", "duplicates", "pose_valid_fraction"],
+                      text=("algorithm",))
+    rows = [i for i, a in enumerate(s["algorithm"]) if a == PLANE]
+    if not rows:
+        raise rp.DataError(f"{os.path.join(run, 'summary.csv')}: column algorithm: no {PLANE} row")
+    return {c: s[c][rows[0]] for c in s if c != "algorithm"}
+
+
+def map_overlay(fig, run, groups=False):
+    """Figs 64, 67: the final map over the true walls."""
+    ax = fig.subplots()
+    plane_overlay(ax, run, groups)
+    s = count_summary(run)
+    shows = (f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} seen walls mapped, {s['duplicates']:.0f} duplicates, "
+             f"final mean map error {s['final_mean_map_error']:.3g} units per plane, pose valid in "
+             f"{100 * s['pose_valid_fraction']:.0f} % of the iterations")
+    if groups:
+        shows += f"; {len(group_layout(run)[0])} groups"
+    return shows
+
+
+def four_planes_errors(fig, run):
+    """Fig 70 (E03): map and pose error over the loops of Map A; each loop's mean drawn as a step, since
+    "no drift" (thesis 4.3.1) means the last loop's mean is no higher than the first's."""
+    d = iterations(run, ["mean_map_error", "position_error"], PLANE)
+    axes = fig.subplots(2, 1, sharex=True)
+    texts = []
+    for ax, column, ylabel in zip(axes, ["mean_map_error", "position_error"], [MAP_ERROR, POS]):
+        ax.plot(d["iteration"], d[column], lw=0.4, color="lightsteelblue", label="per iteration")
+        loops = loop_means(run, column)
+        for k, (lo, hi, mean) in enumerate(loops):
+            ax.plot([lo, hi], [mean, mean], color="darkblue", lw=2, label="mean per loop" if k == 0 else None)
+        finish(ax, "iteration" if ax is axes[-1] else "", ylabel)
+        texts.append(f"{column}: loop 1 mean {loops[0][2]:.3g}, loop {len(loops)} mean {loops[-1][2]:.3g}, "
+                     f"max {np.nanmax(d[column]):.3g}")
+    return "; ".join(texts)
+
+
+def rltplane_rows(run, wall=0, first=6):
+    """Rows of one plane's untransformed observations (thesis Fig 65: iteration, location, orientation;
+    paper Fig 1 adds the plane equation's d): midpoint m, normal n = tangent turned +90° (spec §2.2)
+    as (nx, ny, nz) with ny = 0 (2½D), d = −n·m, robot frame."""
+    o = rp.read_table(os.path.join(run, "plane_observations.csv"),
+                      ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+    sel = np.nonzero(o["true_wall"] == wall)[0]
+    if len(sel) == 0:
+        raise rp.DataError(f"{os.path.join(run, 'plane_observations.csv')}: column true_wall: no wall {wall}")
+    rows = []
+    for k in [*sel[:first], sel[-1]]:
+        a = np.array([o["kp1_x"][k], o["kp1_z"][k]])
+        b = np.array([o["kp2_x"][k], o["kp2_z"][k]])
+        u = (b - a) / np.linalg.norm(b - a)
+        n, m = np.array([-u[1], u[0]]), (a + b) / 2
+        rows.append([f"{o['iteration'][k]:.0f}", f"({m[0]:.3f}, {m[1]:.3f})", f"({n[0]:.3f}, 0, {n[1]:.3f})",
+                     f"{-n @ m:.3f}", f"({a[0]:.2f}, {a[1]:.2f}) – ({b[0]:.2f}, {b[1]:.2f})"])
+    return rows, len(sel)
+
+
+def rltplane_table(fig, run, wall=0):
+    """Fig 65 / paper Fig 1: the RltPlane structure as a table of one plane's untransformed observations."""
+    rows, total = rltplane_rows(run, wall)
+    rows.insert(len(rows) - 1, ["…"] * 5)
+    ax = fig.subplots()
+    ax.axis("off")
+    table = ax.table(cellText=rows, loc="center", cellLoc="center",
+                     colLabels=["iteration", "location m (x, z)", "orientation n (nx, ny, nz)", "d = −n·m",
+                                "key points KP1 – KP2"], colWidths=[0.1, 0.2, 0.22, 0.12, 0.36])
+    table.auto_set_font_size(False)
+    table.set_fontsize(10)
+    table.scale(1, 1.8)
+    ax.set_title(f"the RltPlane of true wall {wall}: {total} observations, robot frame "
+                 f"(plane_observations.csv)", fontsize=10)
+    return f"wall {wall} observed {total} times; its location and orientation change with every robot pose"
+
+
+def invariance(run):
+    """E01: per iteration with both walls, the raw midpoint difference m2 − m1 and the Rule 3 offset
+    Rot(−θ1)(m2 − m1), θ1 = plane 1's direction a→b (spec §2.4), with the robot's true heading; plus
+    the offset the true walls give."""
+    o = rp.read_table(os.path.join(run, "plane_observations.csv"),
+                      ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+    walls = sorted(set(o["true_wall"]))[:2]
+    if len(walls) < 2:
+        raise rp.DataError(f"{os.path.join(run, 'plane_observations.csv')}: column true_wall: fewer than two walls")
+    pose = {"m": {}, "theta": {}}
+    for k in range(len(o["iteration"])):
+        w = o["true_wall"][k]
+        if w in walls:
+            key = (o["iteration"][k], walls.index(w))
+            pose["m"][key] = np.array([o["kp1_x"][k] + o["kp2_x"][k], o["kp1_z"][k] + o["kp2_z"][k]]) / 2
+            pose["theta"][key] = np.arctan2(o["kp2_z"][k] - o["kp1_z"][k], o["kp2_x"][k] - o["kp1_x"][k])
+    both = sorted(i for i, j in pose["m"] if j == 0 and (i, 1) in pose["m"])
+    raw = np.array([pose["m"][(i, 1)] - pose["m"][(i, 0)] for i in both])
+    rel = np.array([planar_rotation(-pose["theta"][(i, 0)]) @ r for i, r in zip(both, raw)])
+    path = true_path(run)
+    heading = dict(zip(path["iteration"], path["psi_deg"]))
+    w = true_walls(run)
+    ends = {int(i): (np.array([ax_, az]), np.array([bx, bz]))
+            for i, ax_, az, bx, bz in zip(w["id"], w["a_x"], w["a_z"], w["b_x"], w["b_z"])}
+    (a1, b1), (a2, b2) = ends[int(walls[0])], ends[int(walls[1])]
+    expected = planar_rotation(-np.arctan2(*(b1 - a1)[::-1])) @ ((a2 + b2) / 2 - (a1 + b1) / 2)
+    return np.array([heading.get(i, np.nan) for i in both]), raw, rel, expected
+
+
+def planar_rotation(angle):
+    c, s = np.cos(angle), np.sin(angle)
+    return np.array([[c, -s], [s, c]])
+
+
+def invariance_scatter(fig, run):
+    """Fig 66 / paper Fig 3 (E01): raw midpoint difference and Rule 3 offset against the heading."""
+    psi, raw, rel, expected = invariance(run)
+    axes = fig.subplots(1, 2, sharex=True)
+    for ax, j, name in zip(axes, [0, 1], ["Δx", "Δz"]):
+        ax.plot(psi, raw[:, j], ".", color="tab:orange", ms=4, label="raw: m2 − m1")
+        ax.plot(psi, rel[:, j], ".", color="tab:blue", ms=4, label="Rule 3: Rot(−θ1)(m2 − m1)")
+        ax.axhline(expected[j], color="black", lw=0.8, ls="--", label=f"true walls' offset {expected[j]:.3g}")
+        finish(ax, "robot heading ψ (degrees)", f"{name} (units)")
+    return (f"{len(psi)} iterations with both walls, headings {np.nanmin(psi):.0f}° to {np.nanmax(psi):.0f}°: raw "
+            f"std (Δx, Δz) = ({raw[:, 0].std():.3g}, {raw[:, 1].std():.3g}), Rule 3 std = ({rel[:, 0].std():.3g}, "
+            f"{rel[:, 1].std():.3g}) about the true ({expected[0]:.3g}, {expected[1]:.3g})")
+
+
+def hallway_groups(fig, run):
+    """Fig 71 (E04): Map B with its groups, and groups and links as the robot goes down the hallway."""
+    top, bottom = fig.subplots(2, 1, height_ratios=[1.3, 1])
+    plane_overlay(top, run, groups=True)
+    d = iterations(run, ["groups", "links"], PLANE)
+    # links.csv's first row anchors X0 to the world (Rule 4), so links run level with groups
+    for column, style in [("groups", {"lw": 3, "alpha": 0.5}), ("links (incl. X0's anchor)", {"lw": 1.2, "ls": "--"})]:
+        bottom.plot(d["iteration"], d[column.split()[0]], drawstyle="steps-post", label=column, **style)
+    finish(bottom, "iteration", "count")
+    links = plane_table(run, "links.csv", ["from", "linking_planes"], text=("linking_planes",))
+    per_link = [len([s for s in p.split(";") if s]) for f, p in zip(links["from"], links["linking_planes"])
+                if np.isfinite(f)]
+    s = count_summary(run)
+    return (f"{d['groups'][-1]:.0f} groups, {len(per_link)} links with {', '.join(map(str, per_link))} linking "
+            f"planes; {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, final mean map error "
+            f"{s['final_mean_map_error']:.3g}")
+
+
+def plane_variants(fig, sweep, columns, ylabels):
+    """Figs 72, 73: one line per variant of a planar sweep, one panel per column."""
+    series = sweep_series(sweep, columns, algorithm=PLANE)
+    axes = np.atleast_1d(fig.subplots(len(columns), 1, sharex=True))
+    for ax, column, ylabel in zip(axes, columns, ylabels):
+        for (name, d), style in zip(series.items(), [("-", 2.4), ("--", 1.4), (":", 1.4)] * 4):
+            # dashed over solid: variants that agree (as Rule 12 on and off may) stay told apart
+            ax.plot(d["iteration"], d[column], ls=style[0], lw=style[1], label=name)
+        finish(ax, "iteration" if ax is axes[-1] else "", ylabel, legend=False)
+    axes[0].legend(fontsize=8)
+    return "; ".join(f"{name}: " + ", ".join(f"last {c} {last_finite(d[c]):.3g}" for c in columns)
+                     for name, d in series.items())
+
+
+def last_finite(values):
+    """The last value that is not NaN (an iteration without a valid pose leaves its error empty)."""
+    finite = np.asarray(values)[np.isfinite(values)]
+    return finite[-1] if len(finite) else float("nan")
+
+
 # ---- registry --------------------------------------------------------------------------------
 
 @dataclasses.dataclass
@@ -437,7 +695,7 @@ class Figure:
     id: object  # thesis figure number, or a name for an extra
     title: str
     runs: tuple  # files or folders below RUNS, passed to draw in this order
-    draw: object  # draw(matplotlib figure, *run paths)
+    draw: object  # draw(matplotlib figure, *run paths) -> None, or one line on what our run shows
 
     @property
     def name(self):
@@ -489,7 +747,22 @@ GROUP_LABELS = ["groups created", "final groups"]
 ALL_REFS = ("n_minus_1", "n_ln_n", "n_squared_half")
 POS = "position error (units)"
 
+E05 = ("p-e05-edge-on",)
+E06 = ("p-e06-rule12",)
+
 FIGURES = sorted([
+    Figure(64, "four planes problem: Map A, true walls and mapped planes, E03", ("p-four-planes",), map_overlay),
+    Figure(65, "the RltPlane structure (also paper Fig. 1)", ("p-four-planes",), rltplane_table),
+    Figure(66, "invariance issue, E01 (also paper Fig. 3)", ("p-e01-invariance",), invariance_scatter),
+    Figure(67, "completed map of Map D with its groups (also paper Fig. 2)", ("p-office",),
+           P(map_overlay, groups=True)),
+    Figure(70, "four planes problem: map and pose error per loop, E03", ("p-four-planes",), four_planes_errors),
+    Figure(71, "hallway problem: groups and links, E04", ("p-hallway",), hallway_groups),
+    Figure(72, "edge-on wall: back-face culling and Rule 10, E05 (a)-(c)", E05,
+           P(plane_variants, columns=["position_error", "rlt_planes", "mean_map_error"],
+             ylabels=[POS, "RltPlanes", MAP_ERROR])),
+    Figure(73, "full simulation: Rule 12 on and off, E06", E06,
+           P(plane_variants, columns=["groups", "links", "mean_map_error"], ylabels=["groups", "links", MAP_ERROR])),
     Figure(110, "incremental minus rebuilt global index run time", ("s-f8-2l", "s-f8-2l-rebuilt"),
            P(runtime_difference, label="incremental − rebuilt")),
     _binning(111, "binning comparisons, no heuristic", CMP, "pairwise comparisons", 0, refs=ALL_REFS),
@@ -561,6 +834,7 @@ class Result:
     figure: Figure
     status: str  # "ok", "missing" or "error"
     detail: str  # the PNG path, the missing runs, or the error message
+    shows: str = ""  # what our run shows, measured from its files (Chapter 4 figures)
 
 
 def render(figure, runs, out):
@@ -570,13 +844,14 @@ def render(figure, runs, out):
         return Result(figure, "missing", ", ".join(missing))
     fig = plt.figure(figsize=FIGSIZE, layout="constrained")
     try:
-        figure.draw(fig, *[os.path.join(runs, r) for r in figure.runs])
+        shows = figure.draw(fig, *[os.path.join(runs, r) for r in figure.runs])
     except rp.DataError as e:
         plt.close(fig)
         return Result(figure, "error", str(e))
     prefix = f"Fig. {figure.id} — " if isinstance(figure.id, int) else "Extra — "
     fig.suptitle(prefix + figure.title)
-    return Result(figure, "ok", rp.save_png(fig, os.path.join(out, figure.name + ".png"), DPI))
+    shows = shows if isinstance(shows, str) else ""  # helpers such as compare_algorithms return their axes
+    return Result(figure, "ok", rp.save_png(fig, os.path.join(out, figure.name + ".png"), DPI), shows)
 
 
 def render_all(runs, out, ids=None, log=print):

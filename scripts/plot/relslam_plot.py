@@ -62,16 +62,17 @@ def read_columns(path, names):
 
 
 def read_tum(path):
-    """TUM trajectory -> {t, x, y, z} lists."""
+    """TUM trajectory -> {t, x, y, z, qx, qy, qz, qw} lists."""
     if not os.path.exists(path):
         raise DataError(f"{path}: file not found")
-    cols = {k: [] for k in ("t", "x", "y", "z")}
+    names = ("t", "x", "y", "z", "qx", "qy", "qz", "qw")
+    cols = {k: [] for k in names}
     with open(path) as f:
         for line in f:
             if line.startswith("#") or not line.strip():
                 continue
             v = [float(s) for s in line.split()]
-            for k, value in zip(("t", "x", "y", "z"), v):
+            for k, value in zip(names, v):
                 cols[k].append(value)
     return cols
 

@@ -1,8 +1,10 @@
 #!/usr/bin/python3
-"""A self-contained report of the thesis Chapter 6 reproduction: OUT/index.html shows, per thesis
-figure, its number, caption and what the thesis says next to our plot (figures.py) or render
-(RUNS/renders/fig<N>.png from `relslam render`), and OUT/claims.md holds the thesis's numbers
-next to ours (claims.py). Images live in OUT/figures/ and are referenced relatively.
+"""A self-contained report of the thesis reproduction (Chapter 4's Relative Plane figures and Chapter
+6's Relative Point figures): OUT/index.html shows, per thesis figure, its number, caption and what
+the thesis says next to our plot (figures.py, with a line on what our run shows where the figure
+measures one) or render (RUNS/renders/fig<N>.png from `relslam render`), and lists the figures no
+run can make yet (catalogue.PENDING) with the reason; OUT/claims.md holds the thesis's numbers and
+facts next to ours (claims.py). Images live in OUT/figures/ and are referenced relatively.
 
 Usage: /usr/bin/python3 scripts/plot/report.py --runs RUNS --out report [--quick]
   --quick   the runs were shortened (scripts/reproduce.sh --quick): both files say so at the top
@@ -32,11 +34,14 @@ def copy_renders(runs, figures_dir):
     return found
 
 
-def section(key, title, image, problem, source):
+def section(key, title, image, problem, source, shows="", pending=""):
     caption, statement = catalogue.CATALOGUE[key]
     label = f"Figure {key}" if isinstance(key, int) else "Extra"
     body = (f'<img src="{html.escape(image)}" alt="{html.escape(label)}">' if image
+            else f'<p class="pending">Not reproducible yet: {html.escape(pending)}</p>' if pending
             else f'<p class="missing">Not produced: {html.escape(problem)}</p>')
+    if shows:
+        body = f'<p class="shows"><b>What our run shows:</b> {html.escape(shows)}</p>\n' + body
     anchor = f"fig{key}" if isinstance(key, int) else str(key)
     return (f'<section id="{html.escape(anchor)}"><h2>{label}: {html.escape(title)}</h2>\n'
             f'<p class="caption"><b>Thesis caption:</b> {html.escape(caption)}</p>\n'
@@ -51,16 +56,19 @@ def figure_sections(results, renders):
         problem = {"missing": f"missing run {r.detail}", "error": r.detail}.get(r.status, "")
         image = f"figures/{r.figure.name}.png" if r.status == "ok" else None
         order = r.figure.id if isinstance(r.figure.id, int) else 1000
-        entries.append((order, section(r.figure.id, r.figure.title, image, problem, ", ".join(r.figure.runs))))
+        entries.append((order, section(r.figure.id, r.figure.title, image, problem, ", ".join(r.figure.runs),
+                                       r.shows)))
     for number, image in renders.items():
         problem = f"no renders/fig{number}.png in the runs folder (relslam render makes it)"
         entries.append((number, section(number, "render", image, problem, f"renders/fig{number}.png")))
+    for number, reason in catalogue.PENDING.items():
+        entries.append((number, section(number, "not reproducible yet", None, "", "no run yet", pending=reason)))
     return [text for _, text in sorted(entries, key=lambda e: e[0])]
 
 
 def write_index(path, runs, results, renders, quick):
     made = sum(r.status == "ok" for r in results) + sum(v is not None for v in renders.values())
-    total = len(results) + len(renders)
+    total = len(results) + len(renders)  # PENDING figures are listed, not counted
     missing = sorted({r.detail for r in results if r.status == "missing"})
     notes = [f'<p class="quick">{QUICK}</p>'] if quick else []
     notes.append(f"<p>{made} of {total} figures produced from <code>{html.escape(runs)}</code>. "
@@ -68,18 +76,21 @@ def write_index(path, runs, results, renders, quick):
     if missing:
         notes.append(f"<p>Missing runs: {html.escape('; '.join(missing))}.</p>")
     style = ("body{font-family:sans-serif;max-width:1100px;margin:auto}img{max-width:100%}"
-             ".missing{color:#a00}.quick{background:#ffd;padding:.5em;border:1px solid #cc9}"
+             ".missing{color:#a00}.pending{color:#864}.shows{background:#eef6ee;padding:.3em}"
+             ".quick{background:#ffd;padding:.5em;border:1px solid #cc9}"
              "section{border-top:1px solid #ccc;margin-top:1em}")
     with open(path, "w") as f:
-        f.write(f'<!DOCTYPE html>\n<html><head><meta charset="utf-8"><title>relslam: thesis Chapter 6 figures'
-                f'</title><style>{style}</style></head><body>\n<h1>Relative Point SLAM: thesis Chapter 6 figures'
-                f'</h1>\n{"".join(notes)}\n{"".join(figure_sections(results, renders))}</body></html>\n')
+        f.write(f'<!DOCTYPE html>\n<html><head><meta charset="utf-8"><title>relslam: thesis Chapters 4 and 6 figures'
+                f'</title><style>{style}</style></head><body>\n<h1>Relative SLAM: thesis Chapter 4 (Relative Plane) '
+                f'and Chapter 6 (Relative Point) figures</h1>\n{"".join(notes)}\n'
+                f'{"".join(figure_sections(results, renders))}</body></html>\n')
 
 
 def write_claims(path, runs, quick):
     lines = [f"> {QUICK}", ""] if quick else []
     lines += ["# Thesis numbers against ours", "",
-              f"Computed from the run folders in `{runs}` (spec relative_point.md §10). The thesis ran on an "
+              f"Computed from the run folders in `{runs}` (spec relative_point.md §10; the Relative Plane rows: "
+              "relative_plane_em.md §6.3, experiments E01-E06). The thesis ran on an "
               "Athlon 64 3400+ (2004): compare ratios and shapes, not milliseconds.", "",
               "| quantity | thesis | ours | source file |", "|---|---|---|---|"]
     rows = claims.rows(runs)
