@@ -75,6 +75,7 @@ step p-hallway           run p-hallway p-hallway
 step p-hallway-back      run p-hallway-back p-hallway-back
 step p-e05-edge-on       sweep p-e05-edge-on
 step p-e06-rule12        sweep p-e06-rule12
+step p-e31-chain-order   sweep p-e31-chain-order
 step p-office            run p-office p-office
 step p-room              run p-room p-room
 

@@ -250,6 +250,19 @@ def e06(run):
     return " — ".join(cells)
 
 
+def e31(run):
+    """Rule 2: the maps of chains in creation order and reversed, plane by plane."""
+    maps = []
+    for prefix in ("creation", "reversed"):
+        name, folder = variant_folder(run, prefix)
+        maps.append(rp.read_table(run.file(folder, fg.PLANE, "planes.csv"), ["id", "kp1_x", "kp1_z", "kp2_x", "kp2_z"]))
+    a, b = maps
+    if len(a["id"]) != len(b["id"]):
+        return f"different maps: {len(a['id'])} vs {len(b['id'])} planes"
+    worst = max((np.max(np.abs(a[c] - b[c])) for c in ("kp1_x", "kp1_z", "kp2_x", "kp2_z")), default=0.0)
+    return f"{'identical' if worst <= 1e-9 else 'different'} maps: {len(a['id'])} planes, largest difference {worst:.2g}"
+
+
 # (quantity, thesis value, run folders, claim function)
 CLAIMS = [
     ("loop length / iterations (S-F8)", "≈1145 units / ≈3800", ["s-f8"], loop),
@@ -289,6 +302,8 @@ CLAIMS = [
      P(e05, prefix="c_")),
     ("E06 Rule 12 on vs off", "off: X8 links to the short-lived X7; on: to the better X6; map correct (4.3.2)",
      ["p-e06-rule12"], e06),
+    ("E31 Rule 2: chain order, noise-free", "the same map whatever the chain order (spec E31: <= 1e-9)",
+     ["p-e31-chain-order"], e31),
 ]
 
 

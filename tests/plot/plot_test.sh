@@ -73,6 +73,7 @@ make_run p-hallway run scenarios/p-hallway.json
 make_run p-office run scenarios/p-office.json --set planar.iterations=400
 make_run p-e05-edge-on sweep scenarios/p-e05-edge-on.json --set planar.iterations=900
 make_run p-e06-rule12 sweep scenarios/p-e06-rule12.json --set planar.iterations=400
+make_run p-e31-chain-order sweep scenarios/p-e31-chain-order.json --set planar.iterations=300
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
 expected+=(110 111 112 113 114 115 116 117 $(seq 119 126) $(seq 130 152) $(seq 167 171) components)
@@ -147,7 +148,7 @@ for row in "loop length" "RltPoints / groups / final groups" "visible points per
   "ρ = 550: total points" "share of minimum computation" "Relative vs EKF" "dynamic test" \
   "Victoria Park per scan, 1" "Victoria Park per scan, 2" "Victoria Park per scan, 3" \
   "E01 Rule 3 invariance" "E03 four planes: no drift" "E03 four planes: map correct" "E04 hallway" \
-  "E05 (a)" "E05 (b)" "E05 (c)" "E06 Rule 12 on vs off"; do
+  "E05 (a)" "E05 (b)" "E05 (c)" "E06 Rule 12 on vs off" "E31 Rule 2"; do
   expect "claims.md row '$row'" grep -q "^| $row" "$claims_md"
 done
 expect "claims.md computes RltPoints from s-f8" \
