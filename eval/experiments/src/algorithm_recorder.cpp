@@ -47,6 +47,18 @@ std::string FrameDigest::hex() const {
   return text;
 }
 
+std::optional<double> timed_step(int k, RunStatus& status, const std::function<void()>& step) {
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    step();
+  } catch (const std::exception& e) {  // a bad frame ends this algorithm's run, not the batch
+    status = RunStatus::failed(k, e.what());
+    return std::nullopt;
+  }
+  status = RunStatus::ok();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 AlgorithmRecorder::AlgorithmRecorder(std::unique_ptr<Algorithm> algorithm, const LandmarkTruth& truth,
                                      const std::filesystem::path& dir)
     : algorithm_(std::move(algorithm)),
@@ -62,15 +74,9 @@ void AlgorithmRecorder::step(const ObservationFrame& observation, const TruthFra
   digest_.add(observation);
   if (!running()) return;  // failed or stopped: the rest of the stream is not processed
   const int k = observation.iteration;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    algorithm_->step(observation, truth);
-  } catch (const std::exception& e) {  // a bad frame ends this algorithm's run, not the batch
-    status_ = RunStatus::failed(k, e.what());
-    return;
-  }
-  const double runtime_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  status_ = RunStatus::ok();
+  const std::optional<double> timed = timed_step(k, status_, [&] { algorithm_->step(observation, truth); });
+  if (!timed) return;
+  const double runtime_ms = *timed;
 
   // Scoring, outside the timed region.
   algorithm_->read_out();

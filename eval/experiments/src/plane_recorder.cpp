@@ -2,7 +2,6 @@
 
 #include "relslam/eval/metrics/trajectory_error.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -46,15 +45,9 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   digest_.add(observation);
   if (!running()) return;  // failed: the rest of the stream is not processed
   const int k = observation.iteration;
-  const auto start = std::chrono::steady_clock::now();
-  try {
-    algorithm_->step(observation);
-  } catch (const std::exception& e) {  // a bad frame ends this algorithm's run, not the batch
-    status_ = RunStatus::failed(k, e.what());
-    return;
-  }
-  const double runtime_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  status_ = RunStatus::ok();
+  const std::optional<double> timed = timed_step(k, status_, [&] { algorithm_->step(observation); });
+  if (!timed) return;
+  const double runtime_ms = *timed;
 
   // Scoring, outside the timed region.
   algorithm_->read_out();

@@ -16,6 +16,8 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,6 +36,11 @@ class FrameDigest {
   void mix(const void* data, std::size_t bytes);
   std::uint64_t state_ = 0xcbf29ce484222325ULL;
 };
+
+// The timed part of every recorder's step: runs `step`, timing it with the wall clock. An
+// exception ends the algorithm's run, not the batch: `status` becomes failed at iteration k and
+// nothing is returned; otherwise status is ok and the time is returned, milliseconds.
+std::optional<double> timed_step(int k, RunStatus& status, const std::function<void()>& step);
 
 class AlgorithmRecorder {
  public:
