@@ -137,6 +137,24 @@ TEST(PlanarRun, SameSeedGivesTheSameFiles) {
   EXPECT_NE(test::read_file(dir / "a/plane_observations.csv"), test::read_file(dir / "c/plane_observations.csv"));
 }
 
+// A planar sweep: variants run, sweep.csv names its columns for planes, and E31's two chain
+// orders give the same noise-free map (Rule 2).
+TEST(PlanarSweep, ChainOrderVariantsGiveTheSameMap) {
+  test::ScratchDir dir;
+  const auto r = run_relslam({"sweep", test::source_path("scenarios/p-e31-chain-order.json").string(), "--out",
+                              (dir / "sweep").string(), "-q", "--set", "planar.iterations=400"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table sweep = read_csv(dir / "sweep/sweep.csv");
+  ASSERT_EQ(sweep.rows.size(), 2u);
+  sweep.column("final_map_error");
+  const Table a = read_csv(dir / "sweep" / sweep.text(0, "folder") / "relative_plane/planes.csv");
+  const Table b = read_csv(dir / "sweep" / sweep.text(1, "folder") / "relative_plane/planes.csv");
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  ASSERT_GE(a.rows.size(), 4u);
+  for (std::size_t i = 0; i < a.rows.size(); ++i)
+    for (const char* c : {"kp1_x", "kp1_z", "kp2_x", "kp2_z"}) EXPECT_NEAR(a.number(i, c), b.number(i, c), 1e-9) << c;
+}
+
 TEST(PlanarSimulate, WritesWallsPathAndObservations) {
   test::ScratchDir dir;
   const auto r = run_relslam(

@@ -43,15 +43,13 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryR
                    const std::optional<SummaryRow>& ratio) {
   // A run scores either landmarks or planes: the first row says which.
   const bool planar = !rows.empty() && rows.front().planar.has_value();
-  std::vector<std::string> columns = {"algorithm", "status", "iterations"};
-  if (planar)
-    columns.insert(columns.end(), {"final_map_error", "final_mean_map_error", "mean_map_error"});
-  else
-    columns.insert(columns.end(), {"final_landmark_error", "final_mean_landmark_error", "mean_landmark_error"});
-  columns.insert(columns.end(), {"final_position_error", "ate_rmse", "ate_rmse_aligned", "rpe_translation_rmse",
-                                 "rpe_rotation_rmse_deg", planar ? "planes_on_map" : "landmarks_on_map", "duplicates",
-                                 "runtime_median_ms", "runtime_p95_ms", "runtime_max_ms", "runtime_mean_ms",
-                                 "peak_rss_mb", "input_digest"});
+  std::vector<std::string> columns;
+  for (const char* name :
+       {"algorithm", "status", "iterations", "final_landmark_error", "final_mean_landmark_error", "mean_landmark_error",
+        "final_position_error", "ate_rmse", "ate_rmse_aligned", "rpe_translation_rmse", "rpe_rotation_rmse_deg",
+        "landmarks_on_map", "duplicates", "runtime_median_ms", "runtime_p95_ms", "runtime_max_ms", "runtime_mean_ms",
+        "peak_rss_mb", "input_digest"})
+    columns.push_back(summary_column(name, planar));
   if (planar)
     columns.insert(columns.end(), {"final_heading_error_deg", "max_position_error", "pose_valid_fraction",
                                    "walls_mapped", "walls_seen"});
@@ -87,6 +85,14 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryR
   for (const SummaryRow& r : rows) write(r, false);
   if (ratio) write(*ratio, true);
   csv.close();
+}
+
+std::string summary_column(std::string_view name, bool planar) {
+  std::string out(name);
+  if (!planar) return out;
+  if (out == "landmarks_on_map") return "planes_on_map";
+  if (const auto at = out.find("landmark_error"); at != std::string::npos) out.replace(at, 8, "map");
+  return out;
 }
 
 SummaryRow ratio_row(const SummaryRow& a, const SummaryRow& b) {

@@ -70,11 +70,20 @@ std::vector<std::string> axis_names(const std::vector<GridAxis>& axes) {
 }
 
 // sweep.csv: one row per run and algorithm, a failed run as one row with its error.
+// A planar sweep (its rows score planes) names its columns for planes.
+bool planar(const std::vector<BatchResult>& results) {
+  for (const BatchResult& r : results)
+    for (const SummaryRow& s : r.rows)
+      if (s.planar) return true;
+  return false;
+}
+
 void write_runs_table(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
                       const std::vector<BatchResult>& results) {
   std::vector<std::string> columns = axis_names(axes);
-  columns.insert(columns.end(), {"seed", "folder", "algorithm", "status", "iterations", "final_landmark_error",
-                                 "final_mean_landmark_error", "final_position_error", "ate_rmse", "runtime_median_ms"});
+  for (const char* name : {"seed", "folder", "algorithm", "status", "iterations", "final_landmark_error",
+                           "final_mean_landmark_error", "final_position_error", "ate_rmse", "runtime_median_ms"})
+    columns.push_back(summary_column(name, planar(results)));
   CsvWriter table(out / "sweep.csv", columns);
   for (const BatchResult& r : results) {
     auto texts = [&](const std::string& algorithm, const std::string& status) {
@@ -133,11 +142,11 @@ std::vector<Cell> cells_of(const std::vector<BatchResult>& results) {
 }
 
 void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
-                     const std::vector<Cell>& cells) {
+                     const std::vector<Cell>& cells, bool planar) {
   std::vector<std::string> columns = axis_names(axes);
   columns.insert(columns.end(), {"algorithm", "runs", "ok"});
   for (const Metric& m : kMetrics)
-    for (const char* suffix : {"_mean", "_std", "_ci95"}) columns.push_back(std::string(m.name) + suffix);
+    for (const char* suffix : {"_mean", "_std", "_ci95"}) columns.push_back(summary_column(m.name, planar) + suffix);
   CsvWriter table(out / "aggregate.csv", columns);
   for (const Cell& cell : cells) {
     std::vector<std::string> texts = cell.labels;
@@ -154,8 +163,9 @@ void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxi
   table.close();
 }
 
-void print_cells(const std::vector<GridAxis>& axes, const std::vector<Cell>& cells) {
-  std::printf("%-40s %-22s %4s %22s %22s %12s\n", "combination", "algorithm", "ok", "mean lm err (95% CI)",
+void print_cells(const std::vector<GridAxis>& axes, const std::vector<Cell>& cells, bool planar) {
+  std::printf("%-40s %-22s %4s %22s %22s %12s\n", "combination", "algorithm", "ok",
+              planar ? "mean map err (95% CI)" : "mean lm err (95% CI)",
               "pos err (95% CI)", "median ms");
   for (const Cell& cell : cells) {
     std::string name;
@@ -211,9 +221,9 @@ int run_sweep(const SweepArgs& args, const std::vector<std::string>& command_lin
       run_batch(args.scenario, args.set, jobs, args.jobs, !args.quiet, command_line);
   write_runs_table(args.out, axes, results);
   const std::vector<Cell> cells = cells_of(results);
-  write_aggregate(args.out, axes, cells);
+  write_aggregate(args.out, axes, cells, planar(results));
   if (!args.quiet) {
-    print_cells(axes, cells);
+    print_cells(axes, cells, planar(results));
     for (const BatchResult& r : results)
       if (!r.error.empty()) std::printf("run %s failed: %s\n", r.job.folder.c_str(), r.error.c_str());
     std::printf("wrote %s: sweep.csv (%zu runs), aggregate.csv (%zu cells)\n", args.out.c_str(), results.size(),

@@ -78,6 +78,11 @@ struct SummaryRow {
 // both processed (the EKF may have stopped early): `ratio` is that row, computed by the caller.
 void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
                    const std::optional<SummaryRow>& ratio = std::nullopt);
+// A summary column as planar runs name it ("final_landmark_error" -> "final_map_error",
+// "landmarks_on_map" -> "planes_on_map"), or as is for the point half. summary.csv, sweep.csv and
+// aggregate.csv all name their columns through it.
+std::string summary_column(std::string_view name, bool planar);
+
 // Element-wise a / b of the scores (landmark, position, trajectory errors and run times).
 SummaryRow ratio_row(const SummaryRow& a, const SummaryRow& b);
 
