@@ -51,7 +51,9 @@ void MrptFilter::step(const ObservationFrame& observation, const TruthFrame& tru
   } catch (const std::exception& e) {
     throw std::runtime_error(mrpt_message(e.what()));
   }
-  true_ids_ = truth.landmark_ids;
+  // Only noted here: the ids are read in read_out(), outside the timed region, while the
+  // recorder still holds this frame's truth.
+  true_ids_ = &truth.landmark_ids;
 }
 
 void MrptFilter::read_out() {
@@ -60,7 +62,9 @@ void MrptFilter::read_out() {
   for (std::size_t i = 0; i < map_.size(); ++i) map_[i] = landmark(i);
   all_ids_.resize(map_.size());
   for (std::size_t i = 0; i < map_.size(); ++i) all_ids_[i] = static_cast<int>(i);
-  assignment_ = slots(rows_, before_, true_ids_);
+  static const std::vector<int> kNoIds;
+  assignment_ = slots(rows_, before_, true_ids_ ? *true_ids_ : kNoIds);
+  true_ids_ = nullptr;
 }
 
 std::vector<std::string> MrptFilter::landmark_columns() const { return column_names(kLandmarkColumns); }

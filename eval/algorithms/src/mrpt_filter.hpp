@@ -47,7 +47,7 @@ class MrptFilter : public Algorithm {
   std::string name_;
   TimeBudget budget_;
   std::size_t rows_ = 0, before_ = 0;
-  std::vector<int> true_ids_;
+  const std::vector<int>* true_ids_ = nullptr;  // this step's truth ids, from step() to read_out()
   Rigid3 pose_;
   std::vector<Eigen::Vector3d> map_;
   std::vector<int> all_ids_;  // 0 .. map size - 1
