@@ -12,6 +12,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // The scripts as templates: @NAME@ stands for a value filled in at --emit.
+// clang-format off
 constexpr const char* kParallel = R"sh(#!/usr/bin/env bash
 # Runs this sweep's commands.txt with GNU parallel (written by relslam sweep --emit).
 #   ./parallel.sh --jobs 2                         # this machine, two runs at a time
@@ -23,7 +24,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 export PATH="${RELSLAM_BIN_DIR:-@BIN@}:$PATH"
 export RELSLAM_ENGINE=parallel  # recorded in each run's manifest.json
-#-- wd : the lines name their cell folders relative to the sweep folder, on every host.
+# --wd: the lines name their cell folders relative to the sweep folder, on every host.
 exec parallel --joblog "$here/parallel.joblog" --wd "$here" --env PATH --env RELSLAM_ENGINE "$@" \
   --arg-file "$here/commands.txt"
 )sh";
@@ -45,14 +46,12 @@ set -euo pipefail
 export PATH="${RELSLAM_BIN_DIR:-@BIN@}:$PATH"
 export RELSLAM_ENGINE=slurm  # recorded in each run's manifest.json
 line="$(sed -n "${SLURM_ARRAY_TASK_ID}p" "@HERE@/commands.txt")"
-[ -n "$line" ] || {
-  echo "commands.txt has no line ${SLURM_ARRAY_TASK_ID}" > &2;
-  exit 2;
-}
+[ -n "$line" ] || { echo "commands.txt has no line ${SLURM_ARRAY_TASK_ID}" >&2; exit 2; }
 echo "task ${SLURM_ARRAY_TASK_ID} on $(hostname): $line"
 cd "@HERE@"
 eval "$line"
 )sh";
+// clang-format on
 
 // Escaped for a place inside double quotes.
 std::string escaped(const std::string& text) {
