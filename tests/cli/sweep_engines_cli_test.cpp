@@ -129,8 +129,11 @@ TEST(SweepEngines, AFailedCellIsListedAndResumeFailedRunsOnlyIt) {
                 .exit_code,
             0);
   // Something in the way of seed 2 (as a half-written folder would be): its run refuses.
+  fs::create_directories(dir / "s/seed-2");
   test::write_file(dir / "s/seed-2/in-the-way.txt", "not a run\n");
-  EXPECT_NE(launch(dir / "s/parallel.sh", "--jobs 2", dir / "first.log"), 0);
+  EXPECT_NE(launch(dir / "s/parallel.sh", "--jobs 2", dir / "first.log"), 0)
+      << test::read_file(dir / "first.log") << test::read_file(dir / "s/parallel.joblog")
+      << test::read_file(dir / "s/commands.txt");
   const auto incomplete = run_relslam({"sweep", "--aggregate", (dir / "s").string(), "-q"});
   EXPECT_EQ(incomplete.exit_code, 1);
   EXPECT_NE(incomplete.out.find("1 of 3 runs missing or failed"), std::string::npos) << incomplete.out;
