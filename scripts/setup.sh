@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libmrpt-dev mrpt-apps mrpt-common libopencv-dev nlohmann-json3-dev libcli11-dev libnanoflann-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-pandas python3-numpy
+  parallel
 )
 
 missing=()

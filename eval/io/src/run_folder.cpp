@@ -4,6 +4,7 @@
 
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/io/build_info.hpp"
+#include "relslam/eval/io/engine_info.hpp"
 
 #include <chrono>
 #include <ctime>
@@ -58,6 +59,7 @@ void write_manifest(const fs::path& dir, const Scenario& scenario, const Invocat
       {"git", {{"revision", git_revision()}, {"dirty", git_tree_dirty()}}},
       {"libraries", library_versions()},
       {"host", host_info()},
+      {"engine", engine_info()},
       {"created_utc", utc_now()},
   };
   manifest.update(extra);

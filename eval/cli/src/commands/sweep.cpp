@@ -4,12 +4,14 @@
 #include "relslam/eval/config/scenario_keys.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/batch.hpp"
-#include "relslam/eval/io/csv_writer.hpp"
+#include "relslam/eval/experiments/sweep_launchers.hpp"
+#include "relslam/eval/experiments/sweep_plan.hpp"
+#include "relslam/eval/experiments/sweep_tables.hpp"
 #include "relslam/eval/io/run_folder.hpp"
-#include "relslam/eval/metrics/seed_statistics.hpp"
+#include "relslam/eval/metrics/summary_reader.hpp"
 
 #include <cstdio>
-#include <map>
+#include <cstdlib>
 
 namespace relslam::eval {
 namespace {
@@ -63,172 +65,142 @@ std::vector<GridAxis> axes_of(const SweepArgs& args, const LoadedScenario& loade
   return axes;
 }
 
-std::vector<std::string> axis_names(const std::vector<GridAxis>& axes) {
-  std::vector<std::string> names;
-  for (const GridAxis& axis : axes) names.push_back(axis.name);
-  return names;
+// The relslam the launchers start: $RELSLAM_BIN_DIR, else this one's folder.
+std::filesystem::path relslam_bin_dir() {
+  if (const char* dir = std::getenv("RELSLAM_BIN_DIR"); dir && *dir) return std::filesystem::absolute(dir);
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::path() : self.parent_path();
 }
 
-// sweep.csv: one row per run and algorithm, a failed run as one row with its error.
-// A planar sweep (its rows score planes) names its columns for planes.
-bool planar(const std::vector<BatchResult>& results) {
-  for (const BatchResult& r : results)
-    for (const SummaryRow& s : r.rows)
-      if (s.planar) return true;
-  return false;
+void write_tables(const SweepArgs& args, const std::filesystem::path& out, const std::vector<GridAxis>& axes,
+                  const std::vector<BatchResult>& results) {
+  write_runs_table(out, axes, results);
+  const std::vector<SweepCell> cells = sweep_cells(results);
+  write_aggregate(out, axes, cells, planar(results));
+  if (args.quiet) return;
+  print_cells(axes, cells, planar(results));
+  std::printf("wrote %s: sweep.csv (%zu runs), aggregate.csv (%zu cells)\n", out.c_str(), results.size(), cells.size());
 }
 
-void write_runs_table(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
-                      const std::vector<BatchResult>& results) {
-  std::vector<std::string> columns = axis_names(axes);
-  for (const char* name : {"seed", "folder", "algorithm", "status", "iterations", "final_landmark_error",
-                           "final_mean_landmark_error", "final_position_error", "ate_rmse", "runtime_median_ms"})
-    columns.push_back(summary_column(name, planar(results)));
-  CsvWriter table(out / "sweep.csv", columns);
-  for (const BatchResult& r : results) {
-    auto texts = [&](const std::string& algorithm, const std::string& status) {
-      std::vector<std::string> f = r.job.labels;
-      f.insert(f.end(), {std::to_string(r.job.seed), r.job.folder.lexically_relative(out).string(), algorithm, status});
-      return f;
-    };
-    if (!r.error.empty()) table.row_fields(texts("", "error: " + r.error), std::vector<std::optional<double>>(6));
-    for (const SummaryRow& s : r.rows)
-      table.row_fields(texts(s.algorithm, s.status.text()),
-                       {static_cast<double>(s.iterations), s.final_landmark_error, s.final_mean_landmark_error,
-                        s.final_position_error, s.trajectory.ate_rmse, s.runtime.median_ms});
+// --aggregate: the tables from the cells the plan names. A cell counts when its run finished
+// (manifest.json and summary.csv); the others are listed with their commands.txt lines and
+// appear in sweep.csv as errors, so no mean hides a missing seed.
+int aggregate_sweep(const SweepArgs& args) {
+  if (!args.scenario.empty() || !args.out.empty() || !args.emit.empty() || !args.params.empty())
+    throw InputError("", 0, "--aggregate", "takes only the sweep folder (its plan.json names the grid)");
+  const std::filesystem::path dir = args.aggregate;
+  const SweepPlan plan = read_plan(dir);
+  std::vector<BatchResult> results;
+  std::vector<std::size_t> incomplete;
+  for (std::size_t i = 0; i < plan.jobs.size(); ++i) {
+    BatchResult r{plan.jobs[i], "", {}};
+    const std::filesystem::path& cell = r.job.folder;
+    if (!std::filesystem::exists(cell))
+      r.error = "not run (no folder)";
+    else if (!std::filesystem::exists(cell / "manifest.json") || !std::filesystem::exists(cell / "summary.csv"))
+      r.error = "failed or unfinished (no manifest.json or summary.csv; delete the folder before running it again)";
+    else
+      r.rows = read_summary(cell / "summary.csv");
+    if (!r.error.empty()) incomplete.push_back(i);
+    results.push_back(std::move(r));
   }
-  table.close();
-}
-
-struct Metric {
-  const char* name;
-  double (*get)(const SummaryRow&);
-};
-constexpr Metric kMetrics[] = {
-    {"final_landmark_error", [](const SummaryRow& s) { return s.final_landmark_error; }},
-    {"final_mean_landmark_error", [](const SummaryRow& s) { return s.final_mean_landmark_error; }},
-    {"mean_landmark_error", [](const SummaryRow& s) { return s.mean_landmark_error; }},
-    {"final_position_error", [](const SummaryRow& s) { return s.final_position_error; }},
-    {"ate_rmse", [](const SummaryRow& s) { return s.trajectory.ate_rmse; }},
-    {"ate_rmse_aligned", [](const SummaryRow& s) { return s.trajectory.ate_rmse_aligned; }},
-    {"runtime_median_ms", [](const SummaryRow& s) { return s.runtime.median_ms; }},
-    {"runtime_mean_ms", [](const SummaryRow& s) { return s.runtime.mean_ms; }},
-};
-
-bool usable(const SummaryRow& s) { return s.status.is_ok() || s.status.kind == RunStatus::Kind::Ratio; }
-
-// aggregate.csv: per combination and algorithm, statistics over the seeds whose run succeeded.
-struct Cell {
-  std::vector<std::string> labels;
-  std::string algorithm;
-  int runs = 0;
-  std::vector<const SummaryRow*> ok;
-};
-
-std::vector<Cell> cells_of(const std::vector<BatchResult>& results) {
-  std::map<std::pair<std::vector<std::string>, std::string>, Cell> cells;
-  std::vector<std::pair<std::vector<std::string>, std::string>> order;  // first appearance: grid order
-  for (const BatchResult& r : results)
-    for (const SummaryRow& s : r.rows) {
-      const auto key = std::pair{r.job.labels, s.algorithm};
-      auto [it, inserted] = cells.try_emplace(key, Cell{r.job.labels, s.algorithm, 0, {}});
-      if (inserted) order.push_back(key);
-      ++it->second.runs;
-      if (usable(s)) it->second.ok.push_back(&s);
-    }
-  std::vector<Cell> out;
-  for (const auto& key : order) out.push_back(cells.at(key));
-  return out;
-}
-
-void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
-                     const std::vector<Cell>& cells, bool planar) {
-  std::vector<std::string> columns = axis_names(axes);
-  columns.insert(columns.end(), {"algorithm", "runs", "ok"});
-  for (const Metric& m : kMetrics)
-    for (const char* suffix : {"_mean", "_std", "_ci95"}) columns.push_back(summary_column(m.name, planar) + suffix);
-  CsvWriter table(out / "aggregate.csv", columns);
-  for (const Cell& cell : cells) {
-    std::vector<std::string> texts = cell.labels;
-    texts.insert(texts.end(), {cell.algorithm, std::to_string(cell.runs), std::to_string(cell.ok.size())});
-    std::vector<std::optional<double>> values;
-    for (const Metric& m : kMetrics) {
-      std::vector<double> v;
-      for (const SummaryRow* s : cell.ok) v.push_back(m.get(*s));
-      const SeedStatistics st = seed_statistics(v);
-      values.insert(values.end(), {st.mean, st.std, st.ci95});
-    }
-    table.row_fields(texts, values);
+  write_tables(args, dir, plan.axes, results);
+  if (incomplete.empty()) return 0;
+  // Listed even with --quiet: an incomplete table must not pass unnoticed.
+  std::string lines;
+  std::printf("%zu of %zu runs missing or failed (line of commands.txt, folder, why):\n", incomplete.size(),
+              results.size());
+  for (std::size_t i : incomplete) {
+    std::printf("  %zu %s: %s\n", i + 1, results[i].job.folder.lexically_relative(dir).c_str(),
+                results[i].error.c_str());
+    lines += (lines.empty() ? "" : ",") + std::to_string(i + 1);
   }
-  table.close();
-}
-
-void print_cells(const std::vector<GridAxis>& axes, const std::vector<Cell>& cells, bool planar) {
-  std::printf("%-40s %-22s %4s %22s %22s %12s\n", "combination", "algorithm", "ok",
-              planar ? "mean map err (95% CI)" : "mean lm err (95% CI)",
-              "pos err (95% CI)", "median ms");
-  for (const Cell& cell : cells) {
-    std::string name;
-    for (std::size_t i = 0; i < axes.size(); ++i) name += (i ? " " : "") + axes[i].name + "=" + cell.labels[i];
-    std::vector<double> lm, pos, ms;
-    for (const SummaryRow* s : cell.ok) {
-      lm.push_back(s->final_mean_landmark_error);
-      pos.push_back(s->final_position_error);
-      ms.push_back(s->runtime.median_ms);
-    }
-    const SeedStatistics a = seed_statistics(lm), b = seed_statistics(pos), c = seed_statistics(ms);
-    std::printf("%-40s %-22s %2zu/%-2d %11.4g ± %-8.2g %11.4g ± %-8.2g %12.4g\n",
-                name.empty() ? "(scenario)" : name.c_str(), cell.algorithm.c_str(), cell.ok.size(), cell.runs, a.mean,
-                a.ci95, b.mean, b.ci95, c.mean);
-  }
+  std::printf("run them again: ./parallel.sh --resume-failed ... or sbatch --array=%s slurm.sbatch\n", lines.c_str());
+  return 1;
 }
 
 }  // namespace
 
 void add_sweep(CLI::App& app, SweepArgs& args) {
   CLI::App* cmd = add_scenario_command(
-      app, args, "sweep", "Run a scenario over a parameter grid and seeds, in parallel",
+      app, args, "sweep", "Run a scenario over a parameter grid and seeds, in parallel (or emit it for other engines)",
       "Run the cross product of the --param values (or else of the scenario's `variants` and `sweep` axes)\n"
       "for --seeds seeds each (the scenario's seed, +1, ...), --jobs runs at a time; --set applies to all.\n"
       "Every run gets its own folder below --out (<axis>=<value>/.../seed-<n>/, the files of relslam run).\n"
       "sweep.csv lists every run; aggregate.csv gives per combination and algorithm the mean, sample\n"
       "standard deviation and 95 % confidence interval (Student t) over the seeds. A failing run is\n"
-      "recorded and the sweep goes on.",
+      "recorded and the sweep goes on.\n"
+      "With --emit DIR nothing runs: DIR gets the plan (plan.json), one relslam run line per cell\n"
+      "(commands.txt) and launchers for GNU parallel (parallel.sh) and Slurm (slurm.sbatch); once they\n"
+      "ran, --aggregate DIR writes sweep.csv and aggregate.csv as a local sweep does, listing missing\n"
+      "or failed cells (exit status 1 while any are).",
       "scenarios/s-dens-q.json");
+  // With --emit or --aggregate the folder is given there.
+  cmd->get_option("scenario")->required(false);
+  cmd->get_option("--out")->required(false);
   cmd->add_option("--param", args.params, "key=v1,v2,... (repeatable: the grid is the cross product)");
   cmd->add_option("--seeds", args.seeds, "Seeds per combination")->capture_default_str()->check(CLI::Range(1, 1000));
   cmd->add_option("--jobs,-j", args.jobs, "Runs at a time")->capture_default_str()->check(CLI::Range(1, 256));
+  cmd->add_option("--emit", args.emit, "Write the sweep into this folder as a plan with launchers; run nothing");
+  cmd->add_option("--aggregate", args.aggregate,
+                  "Make sweep.csv and aggregate.csv from the cells of this sweep folder");
+  cmd->add_option("--slurm-time", args.slurm_time, "With --emit: time limit per Slurm task")->capture_default_str();
+  cmd->add_option("--slurm-mem", args.slurm_memory, "With --emit: memory per Slurm task")->capture_default_str();
+  cmd->add_option("--slurm-throttle", args.slurm_throttle, "With --emit: Slurm tasks running at once")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
 }
 
 int run_sweep(const SweepArgs& args, const std::vector<std::string>& command_line) {
+  if (!args.aggregate.empty()) return aggregate_sweep(args);
+  if (args.scenario.empty()) throw InputError("", 0, "scenario", "give a scenario file (or --aggregate DIR)");
+  if (!args.emit.empty() && !args.out.empty())
+    throw InputError("", 0, "--out", "--emit DIR is the sweep folder; leave out --out");
+  if (args.emit.empty() && args.out.empty())
+    throw InputError("", 0, "--out", "give the sweep folder (--out DIR, or --emit DIR to write it as a plan)");
+  const std::filesystem::path out = args.emit.empty() ? args.out : args.emit;
   const LoadedScenario loaded = load_checked(args.scenario, args.set);
   const std::vector<GridAxis> axes = axes_of(args, loaded);
   std::vector<int> seeds;
   for (int s = 0; s < args.seeds; ++s) seeds.push_back(static_cast<int>(loaded.scenario.seed) + s);
-  const std::vector<BatchJob> jobs = grid_jobs(axes, seeds, args.out);
+  const std::vector<BatchJob> jobs = grid_jobs(axes, seeds, out);
   check_jobs_load(args.scenario, args.set, jobs);
-  prepare_run_folder(args.out, args.force);
+  prepare_run_folder(out, args.force);
   nlohmann::json grid = nlohmann::json::object();
   for (const GridAxis& axis : axes)
     for (const AxisValue& v : axis.values) grid[axis.name].push_back(v.label);
-  write_manifest(args.out, loaded.scenario, {"sweep", command_line, args.scenario, args.set},
-                 {{"sweep", {{"grid", grid}, {"seeds", seeds}, {"runs", jobs.size()}, {"jobs", args.jobs}}}});
+  nlohmann::json sweep = {{"grid", grid}, {"seeds", seeds}, {"runs", jobs.size()}};
+  if (args.emit.empty()) sweep["jobs"] = args.jobs;
+  write_manifest(out, loaded.scenario, {"sweep", command_line, args.scenario, args.set}, {{"sweep", sweep}});
+  // Every sweep folder has its plan, so --aggregate can remake the tables of any of them.
+  const SweepPlan plan{std::filesystem::absolute(args.scenario).lexically_normal().string(), args.set, axes, seeds,
+                       jobs};
+  write_plan(out, plan);
+
+  if (!args.emit.empty()) {
+    write_commands(out, plan);
+    write_parallel_launcher(out, relslam_bin_dir());
+    write_slurm_launcher(out, relslam_bin_dir(), loaded.scenario.name, jobs.size(),
+                         {args.slurm_time, args.slurm_memory, args.slurm_throttle});
+    if (!args.quiet)
+      std::printf(
+          "sweep %s: %zu runs written to %s/commands.txt, none run. Run them with\n"
+          "  %s/parallel.sh --jobs 2        (GNU parallel; -S hosts for other machines)\n"
+          "  sbatch %s/slurm.sbatch         (Slurm)\n"
+          "then: relslam sweep --aggregate %s\n",
+          loaded.scenario.name.c_str(), jobs.size(), out.c_str(), out.c_str(), out.c_str(), out.c_str());
+    return 0;
+  }
   if (!args.quiet)
     std::printf("sweep %s: %zu combinations x %d seeds = %zu runs, %d at a time\n", loaded.scenario.name.c_str(),
                 jobs.size() / seeds.size(), args.seeds, jobs.size(), args.jobs);
-
   const std::vector<BatchResult> results =
       run_batch(args.scenario, args.set, jobs, args.jobs, !args.quiet, command_line);
-  write_runs_table(args.out, axes, results);
-  const std::vector<Cell> cells = cells_of(results);
-  write_aggregate(args.out, axes, cells, planar(results));
-  if (!args.quiet) {
-    print_cells(axes, cells, planar(results));
+  write_tables(args, out, axes, results);
+  if (!args.quiet)
     for (const BatchResult& r : results)
       if (!r.error.empty()) std::printf("run %s failed: %s\n", r.job.folder.c_str(), r.error.c_str());
-    std::printf("wrote %s: sweep.csv (%zu runs), aggregate.csv (%zu cells)\n", args.out.c_str(), results.size(),
-                cells.size());
-  }
   return 0;
 }
 

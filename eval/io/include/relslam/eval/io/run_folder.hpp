@@ -26,7 +26,8 @@ struct Invocation {
 };
 
 // manifest.json: the resolved scenario, seed, invocation, git revision, library versions,
-// host and UTC time — enough to rerun (style.md 2.8). `extra` entries are merged in at the top.
+// host, the engine that ran it (engine_info) and UTC time — enough to rerun (style.md 2.8).
+// `extra` entries are merged in at the top.
 void write_manifest(const std::filesystem::path& dir, const Scenario& scenario, const Invocation& invocation,
                     const nlohmann::json& extra = nlohmann::json::object());
 

@@ -1,0 +1,39 @@
+#pragma once
+// A sweep's tables: sweep.csv (every run and algorithm) and aggregate.csv (statistics over the
+// seeds). One writer for the local sweep and for --aggregate over cells run elsewhere, so the
+// two give the same bytes for the same runs.
+
+#include "relslam/eval/experiments/batch.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+// Whether the runs score planes (then the columns are named for planes, summary_column).
+bool planar(const std::vector<BatchResult>& results);
+
+// sweep.csv in `out`: one row per run and algorithm; a run that failed (BatchResult::error) as
+// one row with status "error: ...".
+void write_runs_table(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
+                      const std::vector<BatchResult>& results);
+
+// Per combination and algorithm: how many runs have a row, and the rows usable for statistics.
+struct SweepCell {
+  std::vector<std::string> labels;
+  std::string algorithm;
+  int runs = 0;
+  std::vector<const SummaryRow*> ok;  // point into the results
+};
+// In grid order (first appearance).
+std::vector<SweepCell> sweep_cells(const std::vector<BatchResult>& results);
+
+// aggregate.csv in `out`: per cell the mean, standard deviation and 95 % CI of each metric.
+void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
+                     const std::vector<SweepCell>& cells, bool planar);
+
+// The cells as a table on stdout.
+void print_cells(const std::vector<GridAxis>& axes, const std::vector<SweepCell>& cells, bool planar);
+
+}  // namespace relslam::eval
