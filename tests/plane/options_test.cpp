@@ -40,5 +40,17 @@ TEST(RelativePlaneOptions, ViolationsNameTheirField) {
   EXPECT_EQ(issues.size(), 5u);
 }
 
+TEST(RelativePlaneOptions, KeyPointTiesAreTheSpecValuesAndChecked) {
+  RelativePlaneOptions o;
+  EXPECT_EQ(o.key_point_ties.relative, 0.3);  // spec §5.14 r_tie, ε_σ
+  EXPECT_EQ(o.key_point_ties.absolute, 0.002);
+  o.key_point_ties.relative = 1.5;
+  o.key_point_ties.absolute = -1;
+  const std::vector<OptionIssue> issues = check(o);
+  EXPECT_TRUE(names(issues, "key_point_ties.relative"));
+  EXPECT_TRUE(names(issues, "key_point_ties.absolute"));
+  EXPECT_EQ(issues.size(), 2u);
+}
+
 }  // namespace
 }  // namespace relslam::plane
