@@ -52,5 +52,22 @@ TEST(RelativePlaneOptions, KeyPointTiesAreTheSpecValuesAndChecked) {
   EXPECT_EQ(issues.size(), 2u);
 }
 
+TEST(RelativePlaneOptions, GrowthPhaseBoundsAreTheSpecValuesAndChecked) {
+  RelativePlaneOptions o;
+  EXPECT_EQ(o.growth_phase.window, 5);  // spec §5.14 w_ma, h, n_min_cmp
+  EXPECT_EQ(o.growth_phase.hysteresis, 0.03);
+  EXPECT_EQ(o.growth_phase.min_samples, 3);
+  EXPECT_EQ(o.interval_choice, IntervalChoice::MostIterations);  // Rule 18
+  EXPECT_EQ(to_string(IntervalChoice::LargestSize), "largest_size");
+  o.growth_phase.window = 0;
+  o.growth_phase.hysteresis = -0.1;
+  o.growth_phase.min_samples = 0;
+  const std::vector<OptionIssue> issues = check(o);
+  EXPECT_TRUE(names(issues, "growth_phase.window"));
+  EXPECT_TRUE(names(issues, "growth_phase.hysteresis"));
+  EXPECT_TRUE(names(issues, "growth_phase.min_samples"));
+  EXPECT_EQ(issues.size(), 3u);
+}
+
 }  // namespace
 }  // namespace relslam::plane
