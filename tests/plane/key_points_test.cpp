@@ -1,10 +1,10 @@
 #include "relslam/plane/key_points.hpp"
 
-#include "seeded_random.hpp"
+#include "clipped_wall_fixture.hpp"
 
 #include <gtest/gtest.h>
 
-#include <functional>
+#include <cstdint>
 #include <vector>
 
 namespace relslam::plane {
@@ -12,61 +12,13 @@ namespace {
 
 constexpr double kExact = 1e-9;
 
-// A wall in the world (`a` to `b`, front normal Rot(+90°)(b − a)) of which the robot sees the
-// part from `from(t)` to `to(t)`, distances along the wall from `a`: an end inside (0, length)
-// is cut by the frustum, an end at 0 or length is the wall's real end.
-struct ClippedWall {
-  Eigen::Vector2d a, b;
-  std::function<double(int)> from, to;
+using test::ClippedWall;
+using test::constant;
+using test::moving;
+using Noise = test::ClipNoise;
 
-  double length() const { return (b - a).norm(); }
-  // The world segment from s0 to s1 along the wall.
-  PlaneObject part(double s0, double s1) const {
-    const Eigen::Vector2d u = (b - a).normalized();
-    return {a + s0 * u, a + s1 * u};
-  }
-};
-
-// Per-observation noise of the plane sensor (spec §3.6): the whole wall moved by a Gaussian
-// translation and turned about its midpoint before it is clipped, and each frustum-cut end
-// jittered along the wall (the frustum meets the moved wall elsewhere) — so the sizes are noisy.
-struct Noise {
-  double position = 0;      // units, per axis
-  double rotation_rad = 0;  // about the wall's midpoint
-  double cut = 0;           // units, along the wall, cut ends only
-};
-
-// The robot drives and turns (so Rule 3 has something to undo): pose at iteration t.
-PlanarPose robot_at(int t) { return PlanarPose::from(0.05 * t, 0.02 * t, 0.01 * t); }
-
-// What the robot reports of `wall` at iterations 0..n−1, in its own frame.
-std::vector<PlaneObject> observe(const ClippedWall& wall, int n, const Noise& noise, test::SeededRandom& random) {
-  std::vector<PlaneObject> seen;
-  for (int t = 0; t < n; ++t) {
-    double s0 = wall.from(t), s1 = wall.to(t);
-    if (s0 > 0) s0 += noise.cut * random.gaussian();
-    if (s1 < wall.length()) s1 += noise.cut * random.gaussian();
-    PlaneObject part = wall.part(s0, s1);
-    const PlanarPose moved =
-        PlanarPose{wall.part(0, wall.length()).midpoint() +
-                       Eigen::Vector2d(noise.position * random.gaussian(), noise.position * random.gaussian()),
-                   0.0} *
-        PlanarPose{{0, 0}, noise.rotation_rad * random.gaussian()} *
-        PlanarPose{-wall.part(0, wall.length()).midpoint(), 0.0};
-    part = part.transformed(moved).transformed(robot_at(t).inverse());
-    part.iteration = t;
-    seen.push_back(part);
-  }
-  return seen;
-}
-
-// The truth for pair (k1, k2): the second wall's part of length L2 from its end k2 in the frame
-// of the first wall's part of length L1 from its end k1 (spec §5.6.3).
 PlanarPose true_delta(const ClippedWall& w1, double l1, KeyPoint k1, const ClippedWall& w2, double l2, KeyPoint k2) {
-  const auto anchored = [](const ClippedWall& w, double l, KeyPoint k) {
-    return k == KeyPoint::Left ? w.part(0, l) : w.part(w.length() - l, w.length());
-  };
-  return anchored(w1, l1, k1).pose().inverse() * anchored(w2, l2, k2).pose();
+  return test::anchored_delta(w1, l1, k1, w2, l2, k2);
 }
 
 struct Outcome {
@@ -75,8 +27,9 @@ struct Outcome {
 };
 
 Outcome compare(const ClippedWall& w1, const ClippedWall& w2, int n, const Noise& noise = {}, std::uint64_t seed = 1) {
-  test::SeededRandom random(seed);
-  const std::vector<PlaneObject> first = observe(w1, n, noise, random), second = observe(w2, n, noise, random);
+  relslam::test::SeededRandom random(seed);
+  const std::vector<PlaneObject> first = test::observe_clipped(w1, 0, n, noise, random),
+                                 second = test::observe_clipped(w2, 0, n, noise, random);
   Outcome o;
   o.pairs = key_point_pairs(first, second);
   o.choice = choose_key_points(o.pairs, KeyPointTies{});
@@ -87,13 +40,6 @@ void expect_pose_near(const PlanarPose& actual, const PlanarPose& expected, doub
   EXPECT_LT((actual.translation - expected.translation).norm(), tolerance)
       << "got (" << actual.translation.transpose() << "), expected (" << expected.translation.transpose() << ")";
   EXPECT_NEAR(wrap_angle(actual.heading - expected.heading), 0, tolerance);
-}
-
-std::function<double(int)> constant(double s) {
-  return [s](int) { return s; };
-}
-std::function<double(int)> moving(double s0, double per_iteration) {
-  return [=](int t) { return s0 + per_iteration * t; };
 }
 
 constexpr int kIterations = 40;
