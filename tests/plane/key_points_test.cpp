@@ -77,6 +77,18 @@ TEST(KeyPointPairs, AllFourOffsetsAreTheMidpointOffsetForFullSizePlanes) {
     }
 }
 
+// Rule 3 off: the raw midpoint differences turn with the robot (Fig 66), so even two full-size
+// planes seen from a turning robot spread — by |m₂ − m₁| times the 0.39 rad turn, roughly.
+TEST(KeyPointPairs, WithoutRule3TheOffsetsTurnWithTheRobot) {
+  const ClippedWall w1 = across(constant(0), constant(8)), w2 = along_right(constant(0), constant(8));
+  relslam::test::SeededRandom random(1);
+  const std::vector<PlaneObject> first = test::observe_clipped(w1, 0, kIterations, {}, random),
+                                 second = test::observe_clipped(w2, 0, kIterations, {}, random);
+  const KeyPointPairs raw = key_point_pairs(first, second, false);
+  EXPECT_GT(raw.sigma_of(KeyPoint::Left, KeyPoint::Left), 0.3);
+  EXPECT_LT(key_point_pairs(first, second).sigma_of(KeyPoint::Left, KeyPoint::Left), kExact);
+}
+
 TEST(KeyPointPairs, SeriesOfDifferentLengthsAreRejected) {
   const std::vector<PlaneObject> one(3), two(2);
   EXPECT_THROW(key_point_pairs(one, two), std::invalid_argument);

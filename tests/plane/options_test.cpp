@@ -1,5 +1,7 @@
 #include "relslam/plane/options.hpp"
 
+#include "described_fields.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -67,6 +69,14 @@ TEST(RelativePlaneOptions, GrowthPhaseBoundsAreTheSpecValuesAndChecked) {
   EXPECT_TRUE(names(issues, "growth_phase.hysteresis"));
   EXPECT_TRUE(names(issues, "growth_phase.min_samples"));
   EXPECT_EQ(issues.size(), 3u);
+}
+
+TEST(RelativePlaneOptions, EveryFieldIsDescribed) {
+  EXPECT_EQ(relslam::test::described_count<RelativePlaneOptions>(),
+            relslam::test::member_count<RelativePlaneOptions>());
+  EXPECT_EQ(relslam::test::described_count<KeyPointTies>(), relslam::test::member_count<KeyPointTies>());
+  EXPECT_EQ(relslam::test::described_count<GrowthPhaseBounds>(), relslam::test::member_count<GrowthPhaseBounds>());
+  EXPECT_EQ(relslam::test::described_count<RuleSwitches>(), relslam::test::member_count<RuleSwitches>());
 }
 
 }  // namespace

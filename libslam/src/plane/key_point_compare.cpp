@@ -29,7 +29,7 @@ CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::s
   if (!piece) return result;  // size 0: the reference is invalid [T]
   const std::span<const PlaneObject> in1 = std::span(both1).subspan(piece->first, piece->samples);
   const std::span<const PlaneObject> in2 = std::span(both2).subspan(piece->first, piece->samples);
-  const KeyPointPairs pairs = key_point_pairs(in1, in2);
+  const KeyPointPairs pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first);
   const KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties);
   result.valid = true;
   result.delta = choice.delta;

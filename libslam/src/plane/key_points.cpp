@@ -24,7 +24,8 @@ bool KeyPointTies::close(double x, double y) const {
   return std::abs(x - y) <= std::max(absolute, relative * std::max(x, y));
 }
 
-KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second) {
+KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
+                              bool rotate_to_first) {
   if (first.size() != second.size()) throw std::invalid_argument("key_point_pairs: the two series differ in length");
   KeyPointPairs pairs;
   pairs.samples = static_cast<int>(first.size());
@@ -44,7 +45,7 @@ KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<cons
       const Eigen::Vector2d m1 = assumed_midpoint(first[t], pairs.length1, kEnds[a]);
       for (int b = 0; b < 2; ++b) {
         const Eigen::Vector2d m2 = assumed_midpoint(second[t], pairs.length2, kEnds[b]);
-        offsets[t][2 * a + b] = in_first_frame(u1, m2 - m1);
+        offsets[t][2 * a + b] = rotate_to_first ? in_first_frame(u1, m2 - m1) : Eigen::Vector2d(m2 - m1);
         pairs.mean[a][b] += offsets[t][2 * a + b];
       }
     }

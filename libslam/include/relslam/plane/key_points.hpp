@@ -51,8 +51,10 @@ struct KeyPointPairs {
 };
 
 // The four series of Rule 13 over observations `first[i]`, `second[i]` of the same iteration
-// (equal sizes; invalid_argument otherwise). Empty input gives samples = 0.
-KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second);
+// (equal sizes; invalid_argument otherwise). Empty input gives samples = 0. With
+// `rotate_to_first` false (Rule 3 off) the offsets are the raw differences m₂ − m₁ (Fig 66).
+KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
+                              bool rotate_to_first = true);
 
 // What the pair with the lowest σ says (spec §5.6.4).
 struct KeyPointChoice {
