@@ -1,5 +1,7 @@
 #include "relslam/plane/options.hpp"
 
+#include "described_fields.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,6 +40,43 @@ TEST(RelativePlaneOptions, ViolationsNameTheirField) {
   EXPECT_TRUE(names(issues, "min_common"));
   EXPECT_TRUE(names(issues, "local_match.max_normal_angle_deg"));
   EXPECT_EQ(issues.size(), 5u);
+}
+
+TEST(RelativePlaneOptions, KeyPointTiesAreTheSpecValuesAndChecked) {
+  RelativePlaneOptions o;
+  EXPECT_EQ(o.key_point_ties.relative, 0.3);  // spec §5.14 r_tie, ε_σ
+  EXPECT_EQ(o.key_point_ties.absolute, 0.002);
+  o.key_point_ties.relative = 1.5;
+  o.key_point_ties.absolute = -1;
+  const std::vector<OptionIssue> issues = check(o);
+  EXPECT_TRUE(names(issues, "key_point_ties.relative"));
+  EXPECT_TRUE(names(issues, "key_point_ties.absolute"));
+  EXPECT_EQ(issues.size(), 2u);
+}
+
+TEST(RelativePlaneOptions, GrowthPhaseBoundsAreTheSpecValuesAndChecked) {
+  RelativePlaneOptions o;
+  EXPECT_EQ(o.growth_phase.window, 5);  // spec §5.14 w_ma, h, n_min_cmp
+  EXPECT_EQ(o.growth_phase.hysteresis, 0.03);
+  EXPECT_EQ(o.growth_phase.min_samples, 3);
+  EXPECT_EQ(o.interval_choice, IntervalChoice::MostIterations);  // Rule 18
+  EXPECT_EQ(to_string(IntervalChoice::LargestSize), "largest_size");
+  o.growth_phase.window = 0;
+  o.growth_phase.hysteresis = -0.1;
+  o.growth_phase.min_samples = 0;
+  const std::vector<OptionIssue> issues = check(o);
+  EXPECT_TRUE(names(issues, "growth_phase.window"));
+  EXPECT_TRUE(names(issues, "growth_phase.hysteresis"));
+  EXPECT_TRUE(names(issues, "growth_phase.min_samples"));
+  EXPECT_EQ(issues.size(), 3u);
+}
+
+TEST(RelativePlaneOptions, EveryFieldIsDescribed) {
+  EXPECT_EQ(relslam::test::described_count<RelativePlaneOptions>(),
+            relslam::test::member_count<RelativePlaneOptions>());
+  EXPECT_EQ(relslam::test::described_count<KeyPointTies>(), relslam::test::member_count<KeyPointTies>());
+  EXPECT_EQ(relslam::test::described_count<GrowthPhaseBounds>(), relslam::test::member_count<GrowthPhaseBounds>());
+  EXPECT_EQ(relslam::test::described_count<RuleSwitches>(), relslam::test::member_count<RuleSwitches>());
 }
 
 }  // namespace

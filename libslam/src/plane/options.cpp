@@ -10,6 +10,10 @@ std::string_view to_string(IntervalMode mode) {
   return "?";
 }
 
+std::string_view to_string(IntervalChoice choice) {
+  return choice == IntervalChoice::MostIterations ? "most_iterations" : "largest_size";
+}
+
 std::string_view to_string(ChainOrder order) { return order == ChainOrder::Creation ? "creation" : "reversed"; }
 
 std::vector<OptionIssue> check(const RelativePlaneOptions& o) { return check_fields(o); }

@@ -5,6 +5,8 @@
 // here. Part 1 of the algorithm: Rules 1–12, planes reported at full size.
 
 #include "relslam/core/option_fields.hpp"
+#include "relslam/plane/growth_phase.hpp"
+#include "relslam/plane/key_points.hpp"
 #include "relslam/plane/plane_object.hpp"
 
 #include <string_view>
@@ -81,8 +83,17 @@ struct RelativePlaneOptions {
   // Two lengths within this are the same size (full-size observations; Rule 16 grows the
   // others in part 2) [R, τ_len].
   double same_length = 0.02;
+  // Rules 13/15: when two of the four key-point pairs' standard deviations count as equal
+  // (static planes, the diagonal tie of Rule 15) [R, spec §5.14 r_tie, ε_σ].
+  KeyPointTies key_point_ties;
+  // Rule 18: the comparison interval split where either plane switches between growing and
+  // shrinking (GetMaxSize) [R, spec §5.14 w_ma, h, n_min_cmp].
+  GrowthPhaseBounds growth_phase;
   // Iterations a pair is compared over (Figs 74/75) [T: Pair].
   IntervalMode interval_mode = IntervalMode::Pair;
+  // Which growth-phase piece a pair is compared over: Rule 18's most iterations, or the
+  // walkthrough's largest total size (spec A13) [T: most_iterations].
+  IntervalChoice interval_choice = IntervalChoice::MostIterations;
   // Order of each new group's chain; only E31 changes it [T: creation].
   ChainOrder chain_order = ChainOrder::Creation;
   RuleSwitches rules;
@@ -90,6 +101,8 @@ struct RelativePlaneOptions {
 
 constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Group};
 std::string_view to_string(IntervalMode mode);  // "pair", "group"
+constexpr IntervalChoice kIntervalChoices[] = {IntervalChoice::MostIterations, IntervalChoice::LargestSize};
+std::string_view to_string(IntervalChoice choice);  // "most_iterations", "largest_size"
 constexpr ChainOrder kChainOrders[] = {ChainOrder::Creation, ChainOrder::Reversed};
 std::string_view to_string(ChainOrder order);  // "creation", "reversed"
 
@@ -124,6 +137,22 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
   f.field("traverse_to_link", r.traverse_to_link, "Rule 12: link a new group through a traversal of the group graph");
 }
 
+// The scenario keys of KeyPointTies (relative_plane.key_point_ties.*).
+void describe(OptionsOf<KeyPointTies> auto& t, auto& f) {
+  // Beyond 1 every pair of spreads would tie: no key point could ever be found.
+  f.field("relative", t.relative, "Rules 13/15: two key-point sigmas within this share of the larger are equal",
+          at_least(0.0), at_most(1.0));
+  f.field("absolute", t.absolute, "... or within this, units (the noise-free tie)", at_least(0.0));
+}
+
+// The scenario keys of GrowthPhaseBounds (relative_plane.growth_phase.*).
+void describe(OptionsOf<GrowthPhaseBounds> auto& g, auto& f) {
+  f.field("window", g.window, "Rule 18: moving average of the lengths over this many iterations", at_least(1));
+  f.field("hysteresis", g.hysteresis, "... which must turn back this far to switch growing/shrinking, units",
+          at_least(0.0));
+  f.field("min_samples", g.min_samples, "growth-phase pieces with fewer iterations are dropped", at_least(1));
+}
+
 // The scenario keys of RelativePlaneOptions (relative_plane.*), with their checks.
 void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.nested("local_match", o.local_match, true);
@@ -131,8 +160,7 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.field("plane_capacity", o.plane_capacity, "observations kept per RltPlane (thesis 4.4.3.4: 1200)", at_least(1));
   f.field("min_readings", o.min_readings, "an unassigned RltPlane is grouped once it has this many observations",
           at_least(1));
-  f.field("unseen_drop", o.unseen_drop, "an unassigned plane unseen this many iterations leaves the list",
-          at_least(0));
+  f.field("unseen_drop", o.unseen_drop, "an unassigned plane unseen this many iterations leaves the list", at_least(0));
   f.field("unassigned_drop", o.unassigned_drop,
           "... or still below min_readings this many iterations after it was created", at_least(o.min_readings));
   // A plane joins or links with min_common shared iterations, which it must be able to have.
@@ -140,8 +168,12 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
           at_most(o.min_readings, "min_readings"));
   f.field("link_window", o.link_window, "Rules 8, 9: linking planes seen within this many iterations", at_least(0));
   f.field("same_length", o.same_length, "two lengths within this are the same size, units", at_least(0.0));
+  f.nested("key_point_ties", o.key_point_ties);
+  f.nested("growth_phase", o.growth_phase);
   f.choice("interval_mode", o.interval_mode, "iterations a pair is compared over (Figs 74/75): pair or group",
            kIntervalModes);
+  f.choice("interval_choice", o.interval_choice,
+           "growth-phase piece compared over: most_iterations (Rule 18) or largest_size", kIntervalChoices);
   f.choice("chain_order", o.chain_order, "order of a new group's chain: creation, or reversed (E31, Rule 2)",
            kChainOrders);
   f.nested("rules", o.rules);

@@ -28,8 +28,11 @@ struct CompareResult {
   double length2 = 0;
   KeyPoint key_point1 = KeyPoint::None;  // part 2 (Rules 13–15)
   KeyPoint key_point2 = KeyPoint::None;
-  RltInterval interval;  // first and last iteration used
-  int samples = 0;       // iterations averaged
+  bool static1 = false;  // part 2: the plane kept its size in the interval (spec §5.6.4)
+  bool static2 = false;
+  bool ambiguous = false;  // part 2: Rule 15's diagonal tie
+  RltInterval interval;    // first and last iteration used
+  int samples = 0;         // iterations averaged
   double height1 = 0;
   double height2 = 0;
 };

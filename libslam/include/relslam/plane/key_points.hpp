@@ -1,0 +1,83 @@
+#pragma once
+// Key points (thesis 4.3.4, Rules 13–15; spec relative_plane_em.md §2.3, §5.6.3, §5.6.4): which
+// end of each of two clipped planes stayed put while they were compared. A plane cut by the
+// frustum grows or shrinks at its cut end only, so of the four offsets between the planes'
+// assumed midpoints (one from each top corner, at the plane's maximum length) the one between
+// the two real ends stays constant: the pair with the lowest standard deviation names the key
+// points. Part of relslam/plane: Eigen only.
+
+#include "relslam/core/planar_pose.hpp"
+#include "relslam/core/plane_object.hpp"
+#include "relslam/plane/plane_object.hpp"
+
+#include <Eigen/Core>
+
+#include <span>
+
+namespace relslam::plane {
+
+// When two standard deviations count as equal (spec §5.6.4): close(x, y) ⇔
+// |x − y| ≤ max(absolute, relative·max(x, y)). Noise makes two static pairs differ a little; the
+// relative part covers that, the absolute part the noise-free case where both are ~1e-16.
+struct KeyPointTies {
+  double relative = 0.3;    // [R, spec §5.14 r_tie]
+  double absolute = 0.002;  // units [R, ε_σ]
+
+  bool close(double x, double y) const;
+};
+
+// Rule 13's four cross-pair offset series over one interval, reduced to their means and spreads.
+// Pair (a, b) compares the first plane's assumed midpoint from key point a with the second's from
+// key point b; index [a − 1][b − 1]. Each offset is taken in the first plane's frame turned to 0°
+// (Rule 3), and the key-point numbering is fixed by Rule 14, so one pair means the same two ends
+// at every iteration however the robot turns.
+struct KeyPointPairs {
+  int samples = 0;     // iterations compared
+  double length1 = 0;  // L1, L2: the planes' maximum lengths in the interval — the size the
+  double length2 = 0;  // assumed midpoints are built with (thesis 4.3.4 "maximum size")
+  Eigen::Vector2d mean[2][2] = {{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()},
+                                {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()}};
+  // Pooled 2-D standard deviation sqrt(mean |off − mean|²) (spec §2.6).
+  double sigma[2][2] = {{0, 0}, {0, 0}};
+  double angle = 0;  // circular mean of θ₂ − θ₁, the same for all four pairs
+
+  double sigma_of(KeyPoint a, KeyPoint b) const { return sigma[index(a)][index(b)]; }
+  // first_T_second of pair (a, b): the second plane's length-L2 reference point anchored at b, in
+  // the frame of the first's length-L1 reference point anchored at a (spec §5.6.3).
+  PlanarPose delta(KeyPoint a, KeyPoint b) const { return {mean[index(a)][index(b)], angle}; }
+
+ private:
+  static int index(KeyPoint k) { return k == KeyPoint::Right ? 1 : 0; }
+};
+
+// The four series of Rule 13 over observations `first[i]`, `second[i]` of the same iteration
+// (equal sizes; invalid_argument otherwise). Empty input gives samples = 0. With
+// `rotate_to_first` false (Rule 3 off) the offsets are the raw differences m₂ − m₁ (Fig 66).
+KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
+                              bool rotate_to_first = true);
+
+// What the pair with the lowest σ says (spec §5.6.4).
+struct KeyPointChoice {
+  // The pair whose mean is `delta`: the lowest σ. Its ends are the key points unless the plane
+  // is static (either end serves) or the pair is ambiguous.
+  KeyPoint anchor1 = KeyPoint::Left;
+  KeyPoint anchor2 = KeyPoint::Left;
+  KeyPoint key_point1 = KeyPoint::None;  // Rule 14: None when no end is known to be the static one
+  KeyPoint key_point2 = KeyPoint::None;
+  // The plane's two assumed midpoints behaved alike: it did not change size in the interval, so
+  // its length is its size there and no key point is needed (spec §5.6.4).
+  bool static1 = false;
+  bool static2 = false;
+  // Rule 15: the two diagonal pairs tie low while the mixed ones are high — two parallel planes
+  // growing or shrinking together. Both key points are None; the offset is right for symmetric
+  // planes (hallway), wrong by one diagonal for the collinear shrink + grow of Fig 97 [T].
+  bool ambiguous = false;
+  PlanarPose delta;  // pairs.delta(anchor1, anchor2), in every case (spec §5.6.4)
+};
+
+// Rules 13 and 15 on the four spreads: the lowest σ gives the offset; the diagonal tie is
+// checked first (ambiguous), then each plane on its own — a plane whose two ends give close σ
+// against the other plane's chosen end is static.
+KeyPointChoice choose_key_points(const KeyPointPairs& pairs, const KeyPointTies& ties);
+
+}  // namespace relslam::plane

@@ -1,0 +1,99 @@
+#include "relslam/plane/key_points.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace relslam::plane {
+namespace {
+
+constexpr KeyPoint kEnds[2] = {KeyPoint::Left, KeyPoint::Right};
+
+KeyPoint other(KeyPoint k) { return k == KeyPoint::Left ? KeyPoint::Right : KeyPoint::Left; }
+
+// Rot(−θ₁)·d with θ₁ the angle of tangent u₁: (u₁·d, n₁·d), n₁ = Rot(+90°)u₁ (Rule 3).
+Eigen::Vector2d in_first_frame(const Eigen::Vector2d& u1, const Eigen::Vector2d& d) {
+  return {u1.dot(d), u1.x() * d.y() - u1.y() * d.x()};
+}
+
+}  // namespace
+
+bool KeyPointTies::close(double x, double y) const {
+  return std::abs(x - y) <= std::max(absolute, relative * std::max(x, y));
+}
+
+KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
+                              bool rotate_to_first) {
+  if (first.size() != second.size()) throw std::invalid_argument("key_point_pairs: the two series differ in length");
+  KeyPointPairs pairs;
+  pairs.samples = static_cast<int>(first.size());
+  if (pairs.samples == 0) return pairs;
+  // The maximum size in the interval (thesis 4.3.4): only then is one assumed midpoint right at
+  // every iteration of a growing or shrinking plane.
+  for (std::size_t t = 0; t < first.size(); ++t) {
+    pairs.length1 = std::max(pairs.length1, first[t].length());
+    pairs.length2 = std::max(pairs.length2, second[t].length());
+  }
+  // The N × 4 array of the thesis walkthrough (4.5, ComparePlanes), kept for the two-pass σ.
+  std::vector<std::array<Eigen::Vector2d, 4>> offsets(first.size());
+  double cos_sum = 0, sin_sum = 0;
+  for (std::size_t t = 0; t < first.size(); ++t) {
+    const Eigen::Vector2d u1 = first[t].tangent(), u2 = second[t].tangent();
+    for (int a = 0; a < 2; ++a) {
+      const Eigen::Vector2d m1 = assumed_midpoint(first[t], pairs.length1, kEnds[a]);
+      for (int b = 0; b < 2; ++b) {
+        const Eigen::Vector2d m2 = assumed_midpoint(second[t], pairs.length2, kEnds[b]);
+        offsets[t][2 * a + b] = rotate_to_first ? in_first_frame(u1, m2 - m1) : Eigen::Vector2d(m2 - m1);
+        pairs.mean[a][b] += offsets[t][2 * a + b];
+      }
+    }
+    cos_sum += u1.dot(u2);
+    sin_sum += u1.x() * u2.y() - u1.y() * u2.x();
+  }
+  const double n = pairs.samples;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      pairs.mean[a][b] /= n;
+      double squares = 0;
+      for (const auto& o : offsets) squares += (o[2 * a + b] - pairs.mean[a][b]).squaredNorm();
+      pairs.sigma[a][b] = std::sqrt(squares / n);
+    }
+  pairs.angle = wrap_angle(std::atan2(sin_sum, cos_sum));
+  return pairs;
+}
+
+KeyPointChoice choose_key_points(const KeyPointPairs& pairs, const KeyPointTies& ties) {
+  KeyPointChoice choice;
+  // Rule 13: the lowest σ; ties keep the first in (1,1), (1,2), (2,1), (2,2) order.
+  for (KeyPoint a : kEnds)
+    for (KeyPoint b : kEnds)
+      if (pairs.sigma_of(a, b) < pairs.sigma_of(choice.anchor1, choice.anchor2)) {
+        choice.anchor1 = a;
+        choice.anchor2 = b;
+      }
+  choice.delta = pairs.delta(choice.anchor1, choice.anchor2);
+  const KeyPoint a = choice.anchor1, b = choice.anchor2;
+  const double lowest = pairs.sigma_of(a, b);
+  // Only the other end of the second plane against the same end of the first: is the second
+  // plane's choice of end decided? And the same for the first plane.
+  const bool second_undecided = ties.close(pairs.sigma_of(a, other(b)), lowest);
+  const bool first_undecided = ties.close(pairs.sigma_of(other(a), b), lowest);
+  // Rule 15, checked first: the opposite diagonal ties while both mixed pairs are clearly higher.
+  if (ties.close(pairs.sigma_of(other(a), other(b)), lowest) && !second_undecided && !first_undecided) {
+    choice.ambiguous = true;
+    return choice;
+  }
+  if (second_undecided)
+    choice.static2 = true;
+  else
+    choice.key_point2 = b;
+  if (first_undecided)
+    choice.static1 = true;
+  else
+    choice.key_point1 = a;
+  return choice;
+}
+
+}  // namespace relslam::plane

@@ -1,0 +1,94 @@
+#include "relslam/plane/key_point_compare.hpp"
+
+#include "clipped_wall_fixture.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace relslam::plane {
+namespace {
+
+constexpr double kExact = 1e-9;
+
+using test::ClippedWall;
+
+// A wall across the view, always seen whole.
+const ClippedWall kAcross{{4, -5}, {4, 3}, test::constant(0), test::constant(8)};
+
+// A wall of length 8 along the right that the robot passes: a 10-long window c(t) − 10 .. c(t)
+// slides along it, c = 1 + 0.15 t. It grows from its real left end until t ≈ 47, is whole until
+// t = 60, then shrinks towards its real right end (t ≤ 99: length 2.15).
+ClippedWall passed_wall() {
+  const auto c = [](int t) { return 1 + 0.15 * t; };
+  return {
+      {-1, -6}, {7, -6}, [=](int t) { return std::max(0.0, c(t) - 10); }, [=](int t) { return std::min(8.0, c(t)); }};
+}
+
+std::vector<PlaneObject> seen(const ClippedWall& wall, int first = 0, int n = 100) {
+  relslam::test::SeededRandom random(1);
+  return test::observe_clipped(wall, first, n, {}, random);
+}
+
+void expect_pose_near(const PlanarPose& actual, const PlanarPose& expected, double tolerance) {
+  EXPECT_LT((actual.translation - expected.translation).norm(), tolerance)
+      << "got (" << actual.translation.transpose() << "), expected (" << expected.translation.transpose() << ")";
+  EXPECT_NEAR(wrap_angle(actual.heading - expected.heading), 0, tolerance);
+}
+
+// Rule 18 then Rule 13: the growing piece (the longer) gives the real left end, at full size.
+TEST(CompareWithKeyPoints, PassedWallIsComparedOverItsGrowingPieceWithKeyPoint1) {
+  const ClippedWall passed = passed_wall();
+  const CompareResult r = compare_with_key_points(seen(kAcross), seen(passed), RelativePlaneOptions{});
+  ASSERT_TRUE(r.valid);
+  EXPECT_EQ(r.interval.start, 0);
+  // The split lies on the plateau (t 47..60), widened by the window.
+  EXPECT_GE(r.interval.end, 47 - 5);
+  EXPECT_LE(r.interval.end, 60 + 5);
+  EXPECT_GT(r.samples, 50);
+  EXPECT_TRUE(r.static1);
+  EXPECT_EQ(r.key_point1, KeyPoint::None);
+  EXPECT_EQ(r.key_point2, KeyPoint::Left);
+  EXPECT_FALSE(r.static2 || r.ambiguous);
+  EXPECT_NEAR(r.length2, 8, kExact);
+  expect_pose_near(r.delta, test::anchored_delta(kAcross, 8, KeyPoint::Left, passed, 8, KeyPoint::Left), kExact);
+}
+
+// Rule 19's forced interval: an iteration in the shrinking piece gives the real right end.
+TEST(CompareWithKeyPoints, ForcedIterationInTheShrinkingPieceGivesKeyPoint2) {
+  const ClippedWall passed = passed_wall();
+  const CompareResult r = compare_with_key_points(seen(kAcross), seen(passed), RelativePlaneOptions{}, 90);
+  ASSERT_TRUE(r.valid);
+  EXPECT_EQ(r.interval.end, 99);
+  EXPECT_EQ(r.key_point2, KeyPoint::Right);
+  EXPECT_NEAR(r.length2, 8, kExact);  // the piece starts on the plateau
+  expect_pose_near(r.delta, test::anchored_delta(kAcross, 8, KeyPoint::Left, passed, 8, KeyPoint::Right), kExact);
+}
+
+// Without the split (hysteresis beyond any change) each end of the passed wall moves during
+// part of the interval: no pair is constant and the offset is wrong — why Rule 18 exists.
+TEST(CompareWithKeyPoints, WithoutTheSplitTheOffsetOfAPassedWallIsWrong) {
+  RelativePlaneOptions no_split;
+  no_split.growth_phase.hysteresis = 1e9;
+  const ClippedWall passed = passed_wall();
+  const CompareResult r = compare_with_key_points(seen(kAcross), seen(passed), no_split);
+  ASSERT_TRUE(r.valid);
+  EXPECT_EQ(r.samples, 100);
+  const PlanarPose truth = test::anchored_delta(kAcross, 8, KeyPoint::Left, passed, 8, KeyPoint::Left);
+  EXPECT_GT((r.delta.translation - truth.translation).norm(), 0.5);
+}
+
+TEST(CompareWithKeyPoints, InvalidWithoutEnoughCommonIterations) {
+  const ClippedWall passed = passed_wall();
+  EXPECT_FALSE(compare_with_key_points(seen(kAcross, 0, 50), seen(passed, 50, 50), RelativePlaneOptions{}).valid);
+  EXPECT_FALSE(compare_with_key_points(seen(kAcross, 0, 52), seen(passed, 50, 50), RelativePlaneOptions{}).valid);
+  const CompareResult three =
+      compare_with_key_points(seen(kAcross, 0, 53), seen(passed, 50, 50), RelativePlaneOptions{});
+  EXPECT_TRUE(three.valid);  // n_min_cmp = 3
+  EXPECT_EQ(three.samples, 3);
+  EXPECT_FALSE(compare_with_key_points(seen(kAcross), seen(passed), RelativePlaneOptions{}, 150).valid);
+}
+
+}  // namespace
+}  // namespace relslam::plane
