@@ -40,6 +40,9 @@ CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::s
   result.static1 = choice.static1;
   result.static2 = choice.static2;
   result.ambiguous = choice.ambiguous;
+  for (KeyPoint a : {KeyPoint::Left, KeyPoint::Right})
+    for (KeyPoint b : {KeyPoint::Left, KeyPoint::Right})
+      result.pair_delta[a == KeyPoint::Right][b == KeyPoint::Right] = pairs.delta(a, b);
   result.interval = piece->interval;
   result.samples = piece->samples;
   for (std::size_t k = 0; k < in1.size(); ++k) {  // static in the simulator: the maximum [R, A44]

@@ -90,6 +90,12 @@ PlaneObject adjust_size(const PlaneObject& plane, double length, KeyPoint k) {
   return out;
 }
 
+PlanarPose reanchor(const PlanarPose& pose, double length, double new_length, KeyPoint k) {
+  if (k == KeyPoint::None) return pose;
+  const double s = k == KeyPoint::Left ? 1.0 : -1.0;
+  return pose * PlanarPose{{s * 0.5 * (new_length - length), 0.0}, 0.0};
+}
+
 PlanarPose calculate_offset(const PlaneObject& mapped, const PlaneObject& observed) {
   return mapped.pose() * observed.pose().inverse();
 }

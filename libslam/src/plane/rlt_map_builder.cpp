@@ -1,14 +1,61 @@
 #include "relslam/plane/rlt_map_builder.hpp"
 
 #include "pose_mean.hpp"
+#include "relslam/plane/calculate_missing_key_points.hpp"
 
 #include <cmath>
+#include <optional>
 
 namespace relslam::plane {
+namespace {
+
+// An RltPlane's stored observations in iteration order (the circular array unrolled).
+std::vector<PlaneObject> stored(const RltPlane& plane) {
+  std::vector<PlaneObject> out;
+  out.reserve(plane.size());
+  for (int i = 0; i < plane.size(); ++i) out.push_back(plane[i]);
+  return out;
+}
+
+// `plane`'s key point at `iteration`: a membership's, when its comparison piece holds the
+// iteration (a key point is valid only in its interval, Rule 19), else CalculateMissingKeyPoints
+// against `others` in order. None when nothing tells.
+KeyPoint key_point_at(const RltPlane& plane, int iteration, const std::vector<const RltPlane*>& others,
+                      const RelativePlaneOptions& options) {
+  for (const RltXPointRef& ref : plane.refs())
+    if (ref.valid && ref.key_point != KeyPoint::None && ref.interval.in_interval(iteration)) return ref.key_point;
+  std::vector<std::vector<PlaneObject>> unrolled;
+  unrolled.reserve(others.size());
+  std::vector<std::span<const PlaneObject>> spans;
+  for (const RltPlane* o : others)
+    if (o != &plane) spans.emplace_back(unrolled.emplace_back(stored(*o)));
+  if (spans.empty()) return KeyPoint::None;
+  const std::optional<MissingKeyPoint> missing = calculate_missing_key_points(stored(plane), spans, iteration, options);
+  return missing ? missing->key_point : KeyPoint::None;
+}
+
+}  // namespace
+
+std::optional<PlanarPose> RltMapBuilder::first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
+                                                                const std::vector<RltPlane>& planes,
+                                                                const RelativePlaneOptions& options) const {
+  const PlaneObject& first = plane.first_observation();
+  const RltXPointRef* ref = plane.ref(x0.id());
+  if (!options.key_points || std::abs(first.length() - ref->max_length) <= options.same_length) return first.pose();
+  // Rule 4's first reading smaller than the plane (spec §5.8 step 1, Fig 90): grown to the size
+  // in X0 from the key point valid in the first observation's piece, found against X0's planes.
+  std::vector<const RltPlane*> others;
+  for (PlaneId p : x0.planes()) others.push_back(&planes[p]);
+  const KeyPoint kp = key_point_at(plane, first.iteration, others, options);
+  if (kp == KeyPoint::None) return std::nullopt;  // cannot be grown: says nothing [R, spec §5.6.5]
+  return adjust_size(first, ref->max_length, kp).pose();
+}
 
 void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
-                              const std::vector<RltPlane>& planes, const PlanarPose& world_T_start, bool anchor,
-                              double same_length) {
+                              const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
+                              const RelativePlaneOptions& options) {
+  const bool anchor = options.rules.anchor_first_observation;
+  const double same_length = options.same_length;
   // Rebuilt from the links every iteration (spec §5.8): a group recomputed this iteration moves
   // every group chained after it.
   map_.assign(planes.size(), MapPlane{});
@@ -28,11 +75,18 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
         if (!any || first < earliest) earliest = first;
         any = true;
       }
-      for (PlaneId p : to.planes()) {
-        const RltXPointRef* ref = planes[p].ref(to.id());
-        if (!ref->valid || planes[p].created_iteration() != earliest) continue;
-        const PlanarPose start_T_x = planes[p].first_observation().pose() * ref->pose.inverse();
-        world_T_to.add(anchor ? world_T_start * start_T_x : PlanarPose::identity());
+      // A first observation that cannot be grown to the plane's size gives no estimate; when
+      // none can, they are used as seen [R].
+      for (bool as_seen : {false, true}) {
+        if (as_seen && world_T_to.count() > 0) break;
+        for (PlaneId p : to.planes()) {
+          const RltXPointRef* ref = planes[p].ref(to.id());
+          if (!ref->valid || planes[p].created_iteration() != earliest) continue;
+          const std::optional<PlanarPose> first =
+              as_seen ? planes[p].first_observation().pose() : first_observation_pose(to, planes[p], planes, options);
+          if (!first) continue;
+          world_T_to.add(anchor ? world_T_start * *first * ref->pose.inverse() : PlanarPose::identity());
+        }
       }
     } else if (xpoints[link.from].placed()) {
       // Rule 8: each linking plane says where `to` is from where `from` put it; averaged.
@@ -41,19 +95,32 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
         const RltXPointRef* in_from = planes[p].ref(from.id());
         const RltXPointRef* in_to = planes[p].ref(to.id());
         if (!in_from->valid || !in_to->valid) continue;
-        // Part 2 grows the smaller of the two memberships to the larger size first (Rule 17).
-        world_T_to.add(from.world_pose() * in_from->pose * in_to->pose.inverse());
+        PlanarPose from_T_plane = in_from->pose, to_T_plane = in_to->pose;
+        if (options.key_points && std::abs(in_from->max_length - in_to->max_length) > same_length) {
+          // Rule 17: the smaller membership re-anchored to the larger size on its own key point;
+          // without one it cannot be resized and the plane does not link (spec §5.6.5).
+          const bool from_smaller = in_from->max_length < in_to->max_length;
+          const RltXPointRef* smaller = from_smaller ? in_from : in_to;
+          const double larger = std::max(in_from->max_length, in_to->max_length);
+          if (smaller->key_point == KeyPoint::None) continue;
+          (from_smaller ? from_T_plane : to_T_plane) =
+              reanchor(smaller->pose, smaller->max_length, larger, smaller->key_point);
+        }
+        world_T_to.add(from.world_pose() * from_T_plane * to_T_plane.inverse());
       }
     }
     to.place(world_T_to.mean(), world_T_to.count() > 0);
-    if (to.placed()) place_planes(to, planes, same_length);
+    if (to.placed()) place_planes(to, planes, same_length, options.key_points);
   }
 }
 
-void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, double same_length) {
+void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, double same_length,
+                                 bool key_points) {
   for (PlaneId p : xpoint.planes()) {
     const RltXPointRef* ref = planes[p].ref(xpoint.id());
     MapPlane& entry = map_[p];
+    // Part 2: a plane that changed size and has no key point has no known anchor (spec §5.6.5).
+    if (key_points && ref->key_point == KeyPoint::None && !ref->size_static) continue;
     // The first group to place a plane keeps it unless a later one knows it larger [T].
     if (!ref->valid || (entry.mapped && ref->max_length <= entry.length + same_length)) continue;
     if (!entry.mapped) ++mapped_count_;
@@ -67,13 +134,40 @@ void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltP
   }
 }
 
-RltPoset RltMapBuilder::get_poset(std::span<const RegisteredObservation> observations, double same_length) const {
+RltPoset RltMapBuilder::get_poset(std::span<const RegisteredObservation> observations,
+                                  const std::vector<RltPlane>& planes, const RelativePlaneOptions& options) const {
   PoseMean mean;
+  std::vector<const RegisteredObservation*> bad;
+  std::vector<const RltPlane*> good_planes;
+  const auto add = [&](const RegisteredObservation& o, const PlaneObject& seen) {
+    mean.add(calculate_offset(map_[o.plane].plane, seen));
+    good_planes.push_back(&planes[o.plane]);
+  };
   for (const RegisteredObservation& o : observations) {
     const MapPlane& entry = map_[o.plane];
-    // Part 2 grows a partial observation from its key point (Rule 16) or finds one (Rule 19).
-    if (!entry.mapped || std::abs(entry.length - o.observation->length()) > same_length) continue;
-    mean.add(calculate_offset(entry.plane, *o.observation));
+    if (!entry.mapped) continue;
+    if (std::abs(entry.length - o.observation->length()) <= options.same_length) {
+      add(o, *o.observation);
+      continue;
+    }
+    if (!options.key_points) continue;  // part 1: full-size observations only
+    // Rule 16: grown (or shrunk) to the map's size from its key point at this iteration.
+    const KeyPoint kp = key_point_at(planes[o.plane], o.observation->iteration, {}, options);
+    if (kp == KeyPoint::None) {
+      bad.push_back(&o);
+      continue;
+    }
+    add(o, adjust_size(*o.observation, entry.length, kp));
+  }
+  // Rule 19 for the rest: key points from comparisons with the good planes of this iteration,
+  // then with the other bad ones (spec §5.9).
+  for (const RegisteredObservation* o : bad) {
+    std::vector<const RltPlane*> others = good_planes;
+    for (const RegisteredObservation* b : bad)
+      if (b != o) others.push_back(&planes[b->plane]);
+    const KeyPoint kp = key_point_at(planes[o->plane], o->observation->iteration, others, options);
+    if (kp != KeyPoint::None)
+      mean.add(calculate_offset(map_[o->plane].plane, adjust_size(*o->observation, map_[o->plane].length, kp)));
   }
   return {mean.mean(), mean.count() > 0, mean.count()};
 }

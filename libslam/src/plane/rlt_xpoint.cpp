@@ -1,11 +1,51 @@
 #include "relslam/plane/rlt_xpoint.hpp"
 
+#include "relslam/plane/calculate_missing_key_points.hpp"
+#include "relslam/plane/key_point_compare.hpp"
+
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 namespace relslam::plane {
+namespace {
+
+// The stored observations of `plane` in iteration order (the circular array unrolled), only
+// those inside `within` when it is given (IntervalMode::Group).
+void stored_observations(const RltPlane& plane, const RltPlaneInterval* within, std::vector<PlaneObject>& out) {
+  out.clear();
+  for (int i = 0; i < plane.size(); ++i)
+    if (within == nullptr || within->in_interval(plane[i].iteration)) out.push_back(plane[i]);
+}
+
+// A plane's canonical size in the group (spec §5.7.2, A18): the largest length any of its chain
+// edges saw it at, and the key point of that edge.
+struct Canonical {
+  bool valid = false;
+  double length = 0;
+  KeyPoint key_point = KeyPoint::None;
+  bool is_static = false;  // static in the edge that gave `length`
+  RltInterval interval;
+  int samples = 0;
+  double height = 0;
+};
+
+// One side of one edge: the plane's length, key point and static flag as that edge saw it.
+struct EdgeSide {
+  double length;
+  KeyPoint key_point;
+  bool is_static;
+  double height;
+};
+
+EdgeSide side(const CompareResult& edge, bool first) {
+  return first ? EdgeSide{edge.length1, edge.key_point1, edge.static1, edge.height1}
+               : EdgeSide{edge.length2, edge.key_point2, edge.static2, edge.height2};
+}
+
+}  // namespace
 
 RltXPoint::RltXPoint(XPointId id, int created_iteration, std::vector<PlaneId> chain)
     : id_(id), created_iteration_(created_iteration), chain_(std::move(chain)) {}
@@ -51,6 +91,10 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
     within = &scratch_common_;
   }
   edges_.resize(chain_.size() - 1);
+  if (options.key_points) {
+    compute_with_key_points(planes, options, within);
+    return;
+  }
   // The base plane's reference point is the group's origin (spec §5.7.1).
   RltXPointRef* parent = planes[chain_.front()].ref(id_);
   parent->valid = true;
@@ -79,6 +123,107 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
     // (spec §5.7.2 [D]; the thesis's "add the running offset"). Part 2 re-anchors planes whose
     // two edges saw them at different sizes here (Rule 28).
     if (child->valid) child->pose = parent->pose * edge.delta;
+    parent = child;
+  }
+}
+
+void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                                        const RltPlaneInterval* within) {
+  const std::size_t n = chain_.size();
+  scratch_observations_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) stored_observations(planes[chain_[k]], within, scratch_observations_[k]);
+  // Each edge by ComparePlanes with key points: one growth phase (Rule 18), the pair of assumed
+  // midpoints with the lowest σ (Rules 13–15).
+  for (std::size_t k = 1; k < n; ++k)
+    edges_[k - 1] = compare_with_key_points(scratch_observations_[k - 1], scratch_observations_[k], options);
+
+  // Canonical size and key point of each plane (spec §5.7.2, A18): the largest length among
+  // the edges touching it, with that edge's key point; the other edge's key point when that
+  // one could not tell, and Rule 19 when neither could.
+  // Plane k's key point in the growth phase holding `iteration`, from the group's other planes
+  // (Rule 19: a key point is valid only in the interval it was computed on).
+  const auto key_point_in = [&](std::size_t k, int iteration) {
+    std::vector<std::span<const PlaneObject>> others;
+    for (std::size_t o = 0; o < n; ++o)
+      if (o != k) others.emplace_back(scratch_observations_[o]);
+    const auto missing = calculate_missing_key_points(scratch_observations_[k], others, iteration, options);
+    return missing ? missing->key_point : KeyPoint::None;
+  };
+  std::vector<Canonical> canonical(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    Canonical& c = canonical[k];
+    KeyPoint fallback = KeyPoint::None;
+    for (int e : {static_cast<int>(k) - 1, static_cast<int>(k)}) {
+      if (e < 0 || e >= static_cast<int>(n) - 1 || !edges_[e].valid) continue;
+      const EdgeSide s = side(edges_[e], e == static_cast<int>(k));
+      if (s.key_point != KeyPoint::None && fallback == KeyPoint::None) fallback = s.key_point;
+      if (c.valid && s.length <= c.length) continue;
+      c = {true, s.length, s.key_point, s.is_static, edges_[e].interval, edges_[e].samples, s.height};
+    }
+    if (c.valid && c.key_point == KeyPoint::None) c.key_point = fallback;
+    // Rule 19 (CalculateMissingKeyPoints, spec §5.7.4): against every other plane of the group,
+    // forced into the plane's own interval.
+    if (c.valid && c.key_point == KeyPoint::None && !c.is_static) c.key_point = key_point_in(k, c.interval.end);
+  }
+
+  // Chaining with size correction (Rules 2, 6, 28; spec §5.7.2): each edge's offset joins the
+  // two planes' reference points at the sizes that edge saw; the parent's canonical point is
+  // moved to its edge size first and the child's edge point to its canonical size after, each
+  // on the key point the edge anchored it at (the canonical one when the edge had none: the
+  // plane was static there, or the pair was ambiguous).
+  RltXPointRef* parent = planes[chain_.front()].ref(id_);
+  const auto fill = [&](RltXPointRef* ref, const Canonical& c) {
+    ref->interval = c.interval;
+    ref->samples = c.samples;
+    ref->max_length = c.length;
+    ref->height = c.height;
+    ref->key_point = c.key_point;
+    ref->size_static = c.is_static;
+  };
+  parent->valid = n == 1 || canonical.front().valid;
+  parent->pose = PlanarPose::identity();
+  fill(parent, canonical.front());
+  for (std::size_t k = 1; k < n; ++k) {
+    const CompareResult& edge = edges_[k - 1];
+    RltXPointRef* child = planes[chain_[k]].ref(id_);
+    fill(child, canonical[k]);
+    child->valid = parent->valid && edge.valid;
+    if (child->valid) {
+      const Canonical& cp = canonical[k - 1];
+      const Canonical& cc = canonical[k];
+      KeyPoint kp_parent = edge.key_point1 != KeyPoint::None ? edge.key_point1 : cp.key_point;
+      KeyPoint kp_child = edge.key_point2 != KeyPoint::None ? edge.key_point2 : cc.key_point;
+      PlanarPose delta = edge.delta;
+      if (edge.ambiguous) {
+        // Rule 15: two planes growing or shrinking together tie on both diagonals. When the two
+        // diagonals say the same (the symmetric hallway) the offset is right [T]; otherwise
+        // (the collinear shrink + grow of Fig 97) the planes' key points in this edge's growth
+        // phase, from the group's other planes (Rule 19), pick the right one; without them the
+        // edge is not used.
+        const PlanarPose& d11 = edge.pair_delta[0][0];
+        const PlanarPose& d22 = edge.pair_delta[1][1];
+        const bool diagonals_agree = (d11.translation - d22.translation).norm() <= options.same_length &&
+                                     std::abs(wrap_angle(d11.heading - d22.heading)) <= options.same_length;
+        const KeyPoint kp1 = key_point_in(k - 1, edge.interval.end), kp2 = key_point_in(k, edge.interval.end);
+        if (kp1 != KeyPoint::None && kp2 != KeyPoint::None) {
+          kp_parent = kp1;
+          kp_child = kp2;
+          delta = edge.pair_delta[kp1 == KeyPoint::Right][kp2 == KeyPoint::Right];
+        } else if (!diagonals_agree) {
+          child->valid = false;
+        }
+      }
+      // A size change needs a key point to anchor it (spec §5.6.5): without one the plane's
+      // place is unknown.
+      const bool parent_resized = std::abs(cp.length - edge.length1) > options.same_length;
+      const bool child_resized = std::abs(cc.length - edge.length2) > options.same_length;
+      if ((parent_resized && kp_parent == KeyPoint::None) || (child_resized && kp_child == KeyPoint::None))
+        child->valid = false;
+      if (child->valid) {
+        const PlanarPose parent_in_edge = reanchor(parent->pose, cp.length, edge.length1, kp_parent);
+        child->pose = reanchor(parent_in_edge * delta, edge.length2, cc.length, kp_child);
+      }
+    }
     parent = child;
   }
 }

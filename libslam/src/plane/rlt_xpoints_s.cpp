@@ -42,8 +42,7 @@ RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
   result.timings.manage_ms = lap(t);
   compute_xpoints(result);
   result.timings.compute_ms = lap(t);
-  builder_.build_map(links_, xpoints_, planes_, world_T_start_, options_.rules.anchor_first_observation,
-                     options_.same_length);
+  builder_.build_map(links_, xpoints_, planes_, world_T_start_, options_);
   result.timings.build_ms = lap(t);
   get_poset();
   result.timings.pose_ms = lap(t);
@@ -319,7 +318,7 @@ void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
 void RltXPointsS::get_poset() {
   registered_.clear();
   for (std::size_t i = 0; i < stamped_.size(); ++i) registered_.push_back({&stamped_[i], assignment_[i]});
-  pose_ = builder_.get_poset(registered_, options_.same_length);
+  pose_ = builder_.get_poset(registered_, planes_, options_);
   if (pose_.valid) last_valid_pose_ = pose_;
 }
 

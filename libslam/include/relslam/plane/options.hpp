@@ -96,6 +96,12 @@ struct RelativePlaneOptions {
   IntervalChoice interval_choice = IntervalChoice::MostIterations;
   // Order of each new group's chain; only E31 changes it [T: creation].
   ChainOrder chain_order = ChainOrder::Creation;
+  // Part 2 (thesis 4.3.3–4.3.5): compare planes by their key points (Rules 13–15, 18, 19),
+  // chain with size correction (Rules 2, 6, 28), place each plane at its largest size from its
+  // key point (Rule 17, A47) and take the pose from partially seen planes (Rule 16). Off: part 1,
+  // full-size midpoints only, which stays reproducible [T: on in the thesis; C: off by default
+  // until part 2 is complete].
+  bool key_points = false;
   RuleSwitches rules;
 };
 
@@ -176,6 +182,8 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
            "growth-phase piece compared over: most_iterations (Rule 18) or largest_size", kIntervalChoices);
   f.choice("chain_order", o.chain_order, "order of a new group's chain: creation, or reversed (E31, Rule 2)",
            kChainOrders);
+  f.field("key_points", o.key_points,
+          "part 2: key points, size correction, partial planes in the pose (Rules 13-19, 28) [C: off]");
   f.nested("rules", o.rules);
 }
 

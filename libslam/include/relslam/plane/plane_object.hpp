@@ -59,6 +59,12 @@ Eigen::Vector2d assumed_midpoint(const PlaneObject& plane, double length, KeyPoi
 // logic_error for None (without a static end the size change has no anchor, spec §5.6.5).
 PlaneObject adjust_size(const PlaneObject& plane, double length, KeyPoint k);
 
+// Re-anchoring (spec §2.3; Rules 16, 17, 28): `pose` is a plane's reference point at `length`,
+// anchored on key point k; the result is the reference point at `new_length` on the same
+// static end: pose ∘ Trans(s_k·(new_length − length)/2, 0), s_Left = +1, s_Right = −1. With k
+// None the point cannot move (spec §5.6.5): `pose` is returned unchanged.
+PlanarPose reanchor(const PlanarPose& pose, double length, double new_length, KeyPoint k);
+
 // CalculateOffset (spec §2.5, Rule 5): the robot pose that puts `observed` (robot frame) onto
 // `mapped` (world frame): world_T_robot = P_mapped ∘ P_observed⁻¹. Both must have the same size
 // (grow the observation first, Rule 16).

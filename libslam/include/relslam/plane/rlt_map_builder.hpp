@@ -6,11 +6,13 @@
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"
 #include "relslam/plane/ids.hpp"
+#include "relslam/plane/options.hpp"
 #include "relslam/plane/plane_object.hpp"
 #include "relslam/plane/rlt_plane.hpp"
 #include "relslam/plane/rlt_xpoint.hpp"
 #include "relslam/plane/rlt_xpoint_link.hpp"
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -50,16 +52,24 @@ class RltMapBuilder {
  public:
   // BuildMap (Rules 4, 6, 8): places every group by walking the links in creation order and
   // writes each plane of a placed group onto the map — the first group to place it wins, a
-  // later one only with a larger size [T]. X0 is put where its planes' first observations,
-  // seen from world_T_start, say (Rule 4; `anchor` false leaves it at the identity); every
-  // other group where its linking planes' two memberships agree, averaged (Rule 8).
+  // later one only with a larger size [T, A47]. X0 is put where its planes' first observations,
+  // seen from world_T_start, say (Rule 4; options.rules.anchor_first_observation false leaves
+  // it at the identity); every other group where its linking planes' two memberships agree,
+  // averaged (Rule 8). With options.key_points a first observation smaller than the plane's
+  // size in X0 is grown from its key point first (Rule 4's first-reading resize, spec §5.8
+  // step 1), and a linking plane's smaller membership is re-anchored to the larger (Rule 17).
   void build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
-                 const std::vector<RltPlane>& planes, const PlanarPose& world_T_start, bool anchor, double same_length);
+                 const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
+                 const RelativePlaneOptions& options);
 
   // GetPoset (Rule 5): the mean of CalculateOffset over the observations whose RltPlane is on
   // the map at the same size; recomputed from scratch each iteration, never carried forward.
-  // Part 2 grows partial observations first (Rules 16, 19).
-  RltPoset get_poset(std::span<const RegisteredObservation> observations, double same_length) const;
+  // With options.key_points a partial observation is grown to the map's size from its key point
+  // at this iteration (Rule 16) — a membership's key point computed on a piece holding this
+  // iteration, else one found by Rule 19 against the other observations of the iteration; an
+  // observation with no static end gives no pose (spec §5.9).
+  RltPoset get_poset(std::span<const RegisteredObservation> observations, const std::vector<RltPlane>& planes,
+                     const RelativePlaneOptions& options) const;
 
   // MatchPlanetoMap (Rule 11): every mapped plane not in `taken`, seen from world_T_robot,
   // scored against `observation` (robot frame); candidates go to `out` (the caller keeps the
@@ -72,7 +82,10 @@ class RltMapBuilder {
   int mapped_count() const { return mapped_count_; }
 
  private:
-  void place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, double same_length);
+  void place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, double same_length, bool key_points);
+  std::optional<PlanarPose> first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
+                                                   const std::vector<RltPlane>& planes,
+                                                   const RelativePlaneOptions& options) const;
 
   std::vector<MapPlane> map_;
   int mapped_count_ = 0;

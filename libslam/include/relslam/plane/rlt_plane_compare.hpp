@@ -31,8 +31,11 @@ struct CompareResult {
   bool static1 = false;  // part 2: the plane kept its size in the interval (spec §5.6.4)
   bool static2 = false;
   bool ambiguous = false;  // part 2: Rule 15's diagonal tie
-  RltInterval interval;    // first and last iteration used
-  int samples = 0;         // iterations averaged
+  // Part 2: first_T_second of each key-point pair (a, b), index [a − 1][b − 1] (Rule 13): an
+  // ambiguous edge is resolved with the planes' key points from elsewhere (Rule 19).
+  PlanarPose pair_delta[2][2];
+  RltInterval interval;  // first and last iteration used
+  int samples = 0;       // iterations averaged
   double height1 = 0;
   double height2 = 0;
 };

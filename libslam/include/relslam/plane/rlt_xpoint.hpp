@@ -45,7 +45,9 @@ class RltXPoint {
 
   // ComputeXPoint (spec §5.7): compares each chain edge and composes the results into every
   // plane's pose in the group frame (SE(2) composition: the thesis's "add the running offset",
-  // Rules 2, 6). A plane after an edge with no common iteration is marked invalid.
+  // Rules 2, 6). A plane after an edge with no common iteration is marked invalid. With
+  // options.key_points (part 2) each edge is compared by key points (Rules 13–15, 18) and the
+  // chain is composed with size correction (Rule 28, spec §5.7.2).
   void compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
 
   // Set when one of the planes got an observation or the chain changed: the group is then
@@ -70,7 +72,11 @@ class RltXPoint {
   bool needs_compute_ = true;
   PlanarPose world_pose_;
   bool placed_ = false;
-  RltPlaneInterval scratch_common_;  // reused by compute() in IntervalMode::Group
+  void compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                               const RltPlaneInterval* within);
+
+  RltPlaneInterval scratch_common_;                             // reused by compute() in IntervalMode::Group
+  std::vector<std::vector<PlaneObject>> scratch_observations_;  // per chain plane, part 2
 };
 
 }  // namespace relslam::plane

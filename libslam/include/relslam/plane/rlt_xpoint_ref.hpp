@@ -21,6 +21,9 @@ struct RltXPointRef {
   RltInterval interval;  // first and last iteration of the comparison that placed it
   int samples = 0;       // iterations that comparison averaged
   KeyPoint key_point = KeyPoint::None;
+  // Part 2: the plane kept its size in the comparison that gave max_length (spec §5.6.4), so it
+  // needs no key point to be placed at that size.
+  bool size_static = false;
   double max_length = 0;
   double height = 0;
   int join_iteration = 0;  // when the plane joined the group [R: roll-back, Rule 33]
