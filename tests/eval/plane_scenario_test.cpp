@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <vector>
@@ -49,6 +50,8 @@ struct SimRun {
   int rlt_planes = 0;
   int mixed_faces = 0;  // RltPlanes given observations of both faces of their wall (what Rule 10 forbids)
   int global_matches = 0;
+  std::map<int, PlaneError> final_error;  // RltPlane on the final map -> its error against its wall
+  std::map<int, int> final_wall;          // ... and that wall
 };
 
 // e_ends of `mapped` against `wall`, or against the wall seen from behind (ends swapped) when the
@@ -97,6 +100,11 @@ SimRun run_map(const sim::PlanarMap& map, std::uint64_t seed, const RelativePlan
     out.mapped_of_wall[votes.wall_of(p)] += slam.map()[p].mapped;
   }
   for (const auto& [p, seen] : faces) out.mixed_faces += seen.size() > 1;
+  for (int p = 0; p < out.rlt_planes; ++p) {
+    if (!slam.map()[p].mapped || votes.wall_of(p) < 0) continue;
+    out.final_wall[p] = votes.wall_of(p);
+    out.final_error[p] = plane_error(slam.map()[p].plane, walls.at(votes.wall_of(p)));
+  }
   return out;
 }
 
@@ -249,6 +257,52 @@ TEST(PlaneScenario, MapCEdgeOnWallBreaksThePoseOnlyWithoutRule10) {
     expect_one_plane_per_wall(c, shipped);
     EXPECT_EQ(c.iterations[turn_end].rlt_planes, c.rlt_planes) << "seed " << seed;
   }
+}
+
+// Map D (thesis Figs 67, 73–82; spec E08) without noise, part 2 on (options.key_points): the
+// small frustum cuts the walls, so they are compared by their key points (Rules 13–15, 18, 19),
+// chained with size correction (Rule 28), placed at their largest size from their key point
+// (Rule 17, A47) and grown to that size for the pose (Rule 16). Noise-free, the growth phases are
+// split without a moving average (window 1, hysteresis 1e-6): the thesis's Fig 105 shows the
+// averaging lag putting a few samples of the next phase into a piece, which with the default
+// window 5 moves the pose by 0.016 at iteration 19. Measured: the pose is exact (1e-14) at all
+// 227 iterations it is valid; 6 RltPlanes are mapped, the 4 walls seen whole (4, 5, 6, 24) exact
+// at full length (7e-15), walls 3 and 23 — seen only in part in the first corridor — with their
+// key-point end exact and the other end short by the part never seen. Part 1 on the same run:
+// pose off by up to 3.8. Not yet reached (issue 13): after the first corner (iteration ~235) no
+// new group can be linked — the frustum shows too few planes while turning (the motion model of
+// Rules 23–27, and Rules 21/22 for the loop) — so the pose stays invalid and 30 of the 36 walls
+// stay off the map.
+TEST(PlaneScenario, MapDNoiseFreeFirstCorridorIsExactWithKeyPoints) {
+  const sim::PlanarMap map = noise_free(map_file("d_office_loop.json"));
+  ASSERT_EQ(map.sensor.mode, sim::PlaneVisibility::Frustum);
+  RelativePlaneOptions options;
+  options.key_points = true;
+  options.growth_phase.window = 1;
+  options.growth_phase.hysteresis = 1e-6;
+  const SimRun run = run_map(map, 1, options);
+  const Worst w = worst_of(run);
+  EXPECT_GE(w.valid, 220);  // of 2501: the first corridor
+  EXPECT_LT(w.position, kNoiseFree);
+  EXPECT_LT(w.heading, kNoiseFree);
+
+  EXPECT_GE(run.final_error.size(), 6u);
+  int whole = 0;
+  for (const auto& [p, e] : run.final_error) {
+    const sim::Wall& wall = map.world.walls.at(run.final_wall.at(p));
+    const double wall_length = (wall.b - wall.a).norm();
+    EXPECT_LT(e.angle_rad, kNoiseFree) << "plane " << p;
+    EXPECT_LT(e.perpendicular, kNoiseFree) << "plane " << p;
+    EXPECT_LE(e.length_ratio, 1 + kNoiseFree) << "plane " << p;
+    // One end — the key point — exact; e_ends is then half the part of the wall never seen.
+    EXPECT_NEAR(e.ends, 0.5 * (1 - e.length_ratio) * wall_length, kNoiseFree) << "plane " << p;
+    whole += std::abs(e.length_ratio - 1) < kNoiseFree;
+  }
+  EXPECT_GE(whole, 4);
+
+  RelativePlaneOptions part1 = options;
+  part1.key_points = false;
+  EXPECT_GT(worst_of(run_map(map, 1, part1)).position, 0.1);  // clipped midpoints are not the wall's
 }
 
 }  // namespace
