@@ -163,7 +163,7 @@ void check_json_nesting(const std::string& text, const std::string& file, const 
       in_string = true;
     } else if (c == '[' || c == '{') {
       if (++depth > kMaxJsonDepth)
-        throw InputError(file, line, field,
+        throw InputError(file, field.empty() ? line : 0, field,  // a --set value names its key, not a line
                          "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels of [ and {");
     } else if (c == ']' || c == '}') {
       --depth;

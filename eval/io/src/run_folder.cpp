@@ -75,7 +75,7 @@ void write_manifest(const fs::path& dir, const Scenario& scenario, const Invocat
       {"engine", engine_info()},
       {"created_utc", utc_now()},
   };
-  manifest.update(extra);
+  if (extra.is_object()) manifest.update(extra);  // {} (null) is "nothing extra"
   manifest["status"] = status;
   // Written beside and renamed over: a kill mid-write leaves the previous manifest whole.
   const fs::path temporary = dir / "manifest.json.partial";
