@@ -53,8 +53,10 @@ std::vector<OptionIssue> check(const SimOptions& o) {
   std::vector<OptionIssue> size_issues;
   if (!o.iterations && static_cast<double>(o.loops) * o.scale * o.iterations_per_loop > kMaxIterations)
     size_issues.push_back({"loops", "asks for more than " + std::to_string(kMaxIterations) + " iterations"});
-  else if (landmark_count(o) > kMaxLandmarks)
-    size_issues.push_back({"density", "would create " + std::to_string(landmark_count(o)) +
+  else if (const double wanted = o.density * field_length(o) / 100.0; !(wanted <= kMaxLandmarks))
+    // Compared as a double: rounding 1e308 points to a long long overflows (to a negative count
+    // that passed this guard and simulated an empty world).
+    size_issues.push_back({"density", "would create " + format_number(std::round(wanted)) +
                                           " landmarks; the limit is " + std::to_string(kMaxLandmarks)});
   issues.insert(issues.begin(), size_issues.begin(), size_issues.end());
   return issues;

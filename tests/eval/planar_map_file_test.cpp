@@ -175,7 +175,7 @@ TEST(PlanarMapFile, NumberBeyondADoubleIsRejectedAtItsLine) {
   // JSON has no NaN or infinity; a wall end that overflows is the nearest thing (the sim's
   // check() rejects non-finite ends of walls built in code: PlanarWorld.CheckNamesTheWallAndTheProblem).
   EXPECT_EQ(error_of(map_text(R"({"a": [1e400, -1], "b": [5, 1], "facing": "-x"})")),
-            "m.json:3: malformed JSON: number overflow parsing '1e400'");
+            "m.json:3: walls[0].a[0]: number too large for a double: 1e400");
 }
 
 TEST(PlanarMapFile, WallWithoutFacingSideIsRejected) {

@@ -208,7 +208,7 @@ TEST(ScenarioKeys, FixedKeyNamesExist) {
 
 TEST(ScenarioKeys, HarnessOptionsAreCheckedByTheirDescriptions) {
   EXPECT_EQ(error_of("{\"ekf6d\": {\"std_yaw_deg\": -2}}"),
-            "scenarios/t.json:1: ekf6d.std_yaw_deg: must be > 0, got -2");
+            "scenarios/t.json:1: ekf6d.std_yaw_deg: must be >= 1e-09, got -2");
   EXPECT_EQ(error_of("{\"ekf2d\": {\"stds_q_no_odometry\": [1, 1]}}"),
             "scenarios/t.json:1: ekf2d.stds_q_no_odometry: needs 3 values (x, y, heading), got 2");
   EXPECT_EQ(error_of("{\"victoria_park\": {\"window\": \"9:1\"}}"),

@@ -41,6 +41,13 @@ class LineRecorder : public nlohmann::json_sax<nlohmann::json> {
   LineRecorder(const int* line, std::string file, std::map<std::string, int>* lines)
       : line_(line), file_(std::move(file)), lines_(lines) {}
 
+  // Where a number too large for a double ("1e400") was met: its key and byte, if any. The
+  // parser calls parse_error for it with the number's position, and only this pass knows
+  // which key it was read for.
+  std::string overflow_path;
+  std::size_t overflow_byte = 0;
+  std::string overflow_token;
+
   bool null() override { return value(); }
   bool boolean(bool) override { return value(); }
   bool number_integer(number_integer_t) override { return value(); }
@@ -75,7 +82,15 @@ class LineRecorder : public nlohmann::json_sax<nlohmann::json> {
     frames_.pop_back();
     return true;
   }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+  bool parse_error(std::size_t position, const std::string& last_token,
+                   const nlohmann::detail::exception& error) override {
+    if (error.id == 406) {  // out_of_range.406: number overflow
+      overflow_byte = position;
+      overflow_token = last_token;
+      overflow_path = next_value_path();
+    }
+    return false;
+  }
 
  private:
   struct Frame {
@@ -87,6 +102,14 @@ class LineRecorder : public nlohmann::json_sax<nlohmann::json> {
   std::string join(const std::string& k) const {
     const std::string parent = frames_.size() >= 2 ? frames_[frames_.size() - 2].current_key : "";
     return parent.empty() ? k : parent + "." + k;
+  }
+  // The path the value being read belongs to: the current key, or the next array element.
+  std::string next_value_path() const {
+    if (frames_.empty()) return "";
+    const Frame& f = frames_.back();
+    if (!f.array) return f.current_key;
+    const std::string own = frames_.size() >= 2 ? frames_[frames_.size() - 2].current_key : "";
+    return own + "[" + std::to_string(f.index + 1) + "]";
   }
   // Called for every value: inside an array it names the element "path[i]".
   bool value() {
@@ -122,9 +145,45 @@ std::string strip_prefix(const std::string& message) {
 
 }  // namespace
 
+void check_json_nesting(const std::string& text, const std::string& file, const std::string& field) {
+  int depth = 0;
+  int line = 1;
+  bool in_string = false;
+  bool escaped = false;
+  for (const char c : text) {
+    if (c == '\n') ++line;
+    if (in_string) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw InputError(file, field.empty() ? line : 0, field,  // a --set value names its key, not a line
+                         "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels of [ and {");
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
 JsonDocument parse_json(const std::string& text, const std::string& file) {
   JsonDocument doc;
   doc.file = file;
+  check_json_nesting(text, file, "");
+  // The line pass first: it alone can name the key of a number too large for a double.
+  int line = 1;
+  LineRecorder recorder(&line, file, &doc.lines);
+  const char* begin = text.data();
+  if (!nlohmann::json::sax_parse(LineCountingIterator(begin, &line), LineCountingIterator(begin + text.size(), &line),
+                                 &recorder) &&
+      !recorder.overflow_token.empty())
+    throw InputError(file, line_at_byte(text, recorder.overflow_byte > 0 ? recorder.overflow_byte - 1 : 0),
+                     recorder.overflow_path, "number too large for a double: " + recorder.overflow_token);
   try {
     doc.value = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
@@ -139,11 +198,6 @@ JsonDocument parse_json(const std::string& text, const std::string& file) {
     const std::size_t at = open < close ? text.find(message.substr(open + 1, close - open - 1)) : std::string::npos;
     throw InputError(file, at == std::string::npos ? 0 : line_at_byte(text, at), "", "malformed JSON: " + message);
   }
-  int line = 1;
-  LineRecorder recorder(&line, file, &doc.lines);
-  const char* begin = text.data();
-  nlohmann::json::sax_parse(LineCountingIterator(begin, &line), LineCountingIterator(begin + text.size(), &line),
-                            &recorder);
   return doc;
 }
 

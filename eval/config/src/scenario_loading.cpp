@@ -145,10 +145,13 @@ class Loader {
       }
       if (raw.empty() || (raw.front() != '"' && raw.front() != '[')) return raw;
     }
+    check_json_nesting(raw, "--set", key.key);
     try {
       return json::parse(raw);
     } catch (const json::parse_error&) {
       return raw;  // not JSON: the key's own check says what it expected
+    } catch (const json::out_of_range&) {  // 1e400: JSON, but no double holds it
+      throw InputError("--set", 0, key.key, "number too large for a double: " + raw);
     }
   }
 

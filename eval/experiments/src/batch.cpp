@@ -2,6 +2,7 @@
 
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
+#include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 
@@ -81,13 +82,26 @@ std::vector<BatchResult> run_batch(const std::string& scenario_file, const std::
         std::vector<std::string> set = base_overrides;
         set.insert(set.end(), jobs[i].overrides.begin(), jobs[i].overrides.end());
         const LoadedScenario loaded = load_with_overrides(scenario_file, set);
+        if (interrupt_requested()) {  // a signal: start no further cell
+          r.error = kRunStatusInterrupted;
+          break;
+        }
         prepare_run_folder(jobs[i].folder, true);
-        const ExperimentResult e = simulate_and_run(loaded, jobs[i].folder, false);
-        r.rows = e.rows;
-        if (e.ratio) r.rows.push_back(*e.ratio);
-        nlohmann::json extra = e.source;
-        extra["wall_time_s"] = e.seconds;
-        write_manifest(jobs[i].folder, loaded.scenario, {"sweep", command_line, scenario_file, set}, extra);
+        const Invocation invocation{"sweep", command_line, scenario_file, set};
+        write_manifest(jobs[i].folder, loaded.scenario, invocation, {}, kRunStatusRunning);
+        try {
+          const ExperimentResult e = simulate_and_run(loaded, jobs[i].folder, false);
+          r.rows = e.rows;
+          if (e.ratio) r.rows.push_back(*e.ratio);
+          nlohmann::json extra = e.source;
+          extra["wall_time_s"] = e.seconds;
+          write_manifest(jobs[i].folder, loaded.scenario, invocation, extra,
+                         e.interrupted ? kRunStatusInterrupted : kRunStatusOk);
+          if (e.interrupted) r.error = kRunStatusInterrupted;
+        } catch (const std::exception& e) {
+          write_manifest(jobs[i].folder, loaded.scenario, invocation, {}, failed_status(e.what()));
+          throw;
+        }
       } catch (const std::exception& e) {  // one bad combination does not end the batch
         r.error = e.what();
       }

@@ -1,6 +1,7 @@
 #include "relslam/eval/experiments/planar_experiment.hpp"
 
 #include "relslam/eval/algorithms/registry.hpp"
+#include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/sources/planar_simulation_source.hpp"
 
@@ -21,11 +22,18 @@ PlanarExperiment::PlanarExperiment(const LoadedScenario& loaded, PlaneFrameSourc
 ExperimentResult PlanarExperiment::run(bool progress) {
   const auto start = std::chrono::steady_clock::now();
   Progress bar(source_.label(), source_.frames(), progress);
-  source_.stream([&](const PlaneFrame& observation, const PlaneTruthFrame& truth) {
-    for (auto& recorder : recorders_) recorder->step(observation, truth);
-    bar.update(observation.iteration + 1);
-  });
   ExperimentResult result;
+  try {
+    source_.stream([&](const PlaneFrame& observation, const PlaneTruthFrame& truth) {
+      stop_if_interrupted();
+      for (auto& recorder : recorders_) recorder->step(observation, truth);
+      bar.update(observation.iteration + 1);
+    });
+  } catch (const RunInterrupted&) {
+    // Finish with the frames processed so far: summaries and files cover them, and the
+    // command marks the manifest "interrupted".
+    result.interrupted = true;
+  }
   for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
   write_summary(out_ / "summary.csv", result.rows);
   bar.finish();

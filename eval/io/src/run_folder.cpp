@@ -13,6 +13,19 @@
 namespace relslam::eval {
 namespace fs = std::filesystem;
 
+namespace {
+
+// A manifest.json any relslam run wrote, whatever its status: a JSON object naming the
+// relslam_version. Anything else (another tool's manifest, garbage) keeps the folder safe.
+bool is_relslam_manifest(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) return false;
+  const nlohmann::json manifest = nlohmann::json::parse(in, nullptr, false);
+  return manifest.is_object() && manifest.contains("relslam_version");
+}
+
+}  // namespace
+
 void prepare_run_folder(const fs::path& dir, bool force) {
   std::error_code ec;
   if (fs::exists(dir, ec)) {
@@ -21,11 +34,11 @@ void prepare_run_folder(const fs::path& dir, bool force) {
       if (!force)
         throw InputError("", 0, "--out",
                          dir.string() + " is not empty; choose a new folder or pass --force to replace an earlier run");
-      if (!fs::exists(dir / "manifest.json"))
-        throw InputError(
-            "", 0, "--out",
-            dir.string() +
-                " is not empty and holds no manifest.json, so it is not a relslam run folder; refusing to delete it");
+      if (!is_relslam_manifest(dir / "manifest.json"))
+        throw InputError("", 0, "--out",
+                         dir.string() +
+                             " is not empty and holds no relslam manifest.json, so it is not a relslam run folder; "
+                             "refusing to delete it");
       for (const auto& entry : fs::directory_iterator(dir)) fs::remove_all(entry.path());
     }
   }
@@ -47,7 +60,7 @@ std::string utc_now() {
 }  // namespace
 
 void write_manifest(const fs::path& dir, const Scenario& scenario, const Invocation& invocation,
-                    const nlohmann::json& extra) {
+                    const nlohmann::json& extra, const std::string& status) {
   nlohmann::json manifest = {
       {"relslam_version", relslam_version()},
       {"command", invocation.command},
@@ -62,10 +75,30 @@ void write_manifest(const fs::path& dir, const Scenario& scenario, const Invocat
       {"engine", engine_info()},
       {"created_utc", utc_now()},
   };
-  manifest.update(extra);
-  std::ofstream out(dir / "manifest.json");
-  out << manifest.dump(2) << '\n';
-  if (!out) throw std::runtime_error((dir / "manifest.json").string() + ": write failed");
+  if (extra.is_object()) manifest.update(extra);  // {} (null) is "nothing extra"
+  manifest["status"] = status;
+  // Written beside and renamed over: a kill mid-write leaves the previous manifest whole.
+  const fs::path temporary = dir / "manifest.json.partial";
+  {
+    std::ofstream out(temporary);
+    out << manifest.dump(2) << '\n';
+    out.flush();
+    if (!out) throw std::runtime_error(temporary.string() + ": write failed");
+  }
+  std::error_code ec;
+  fs::rename(temporary, dir / "manifest.json", ec);
+  if (ec) throw std::runtime_error((dir / "manifest.json").string() + ": " + ec.message());
+}
+
+std::string failed_status(const std::string& why) { return "failed: " + why; }
+
+std::string manifest_status(const fs::path& dir) {
+  std::ifstream in(dir / "manifest.json");
+  if (!in) return "";
+  const nlohmann::json manifest = nlohmann::json::parse(in, nullptr, false);
+  if (!manifest.is_object()) return "";
+  if (!manifest.contains("status")) return kRunStatusOk;
+  return manifest["status"].is_string() ? manifest["status"].get<std::string>() : "";
 }
 
 }  // namespace relslam::eval

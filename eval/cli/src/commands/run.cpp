@@ -3,6 +3,7 @@
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
+#include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 
 #include <cstdio>
@@ -38,15 +39,23 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
   const LoadedScenario loaded =
       args.scenario.empty() ? parse_checked("{}", "(defaults)", set) : load_checked(args.scenario, set);
   prepare_run_folder(args.out, args.force);
+  const Invocation invocation{"run", command_line, args.scenario, set};
+  catch_interrupts();  // before the manifest says running: a signal from then on is seen
+  write_manifest(args.out, loaded.scenario, invocation, {}, kRunStatusRunning);
 
   ExperimentResult result;
-  if (args.rawlog.empty()) {
-    result = simulate_and_run(loaded, args.out, !args.quiet);
-  } else {
-    RawlogFiles files{args.rawlog, std::nullopt, std::nullopt};
-    if (!args.truth_path.empty()) files.truth_path = args.truth_path;
-    if (!args.truth_landmarks.empty()) files.truth_landmarks = args.truth_landmarks;
-    result = run_on_rawlog(loaded, files, args.out, !args.quiet);
+  try {
+    if (args.rawlog.empty()) {
+      result = simulate_and_run(loaded, args.out, !args.quiet);
+    } else {
+      RawlogFiles files{args.rawlog, std::nullopt, std::nullopt};
+      if (!args.truth_path.empty()) files.truth_path = args.truth_path;
+      if (!args.truth_landmarks.empty()) files.truth_landmarks = args.truth_landmarks;
+      result = run_on_rawlog(loaded, files, args.out, !args.quiet);
+    }
+  } catch (const std::exception& e) {
+    write_manifest(args.out, loaded.scenario, invocation, {}, failed_status(e.what()));
+    throw;
   }
   nlohmann::json results = nlohmann::json::array();
   for (const SummaryRow& r : result.rows)
@@ -58,7 +67,12 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
   nlohmann::json extra = result.source;
   extra["results"] = results;
   extra["wall_time_s"] = result.seconds;
-  write_manifest(args.out, loaded.scenario, {"run", command_line, args.scenario, set}, extra);
+  write_manifest(args.out, loaded.scenario, invocation, extra,
+                 result.interrupted ? kRunStatusInterrupted : kRunStatusOk);
+  if (result.interrupted) {
+    std::fprintf(stderr, "relslam: interrupted; %s holds the iterations processed\n", args.out.c_str());
+    return kInterruptedExit;
+  }
   if (!args.quiet) {
     print_results(result, args.rawlog.empty() ? loaded.scenario.name : args.rawlog);
     std::printf("wrote %s in %.1f s\n", args.out.c_str(), result.seconds);

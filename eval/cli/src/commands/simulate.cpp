@@ -1,6 +1,7 @@
 #include "relslam/eval/cli/commands/simulate.hpp"
 
 #include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/sources/planar_simulation_source.hpp"
@@ -24,29 +25,52 @@ void add_simulate(CLI::App& app, SimulateArgs& args) {
 
 namespace {
 
+// Runs `stream` (the frame loop); true when a signal stopped it. Any other error finishes the
+// manifest as failed before it reaches main.
+template <class Stream>
+bool stream_until_interrupted(const SimulateArgs& args, const Scenario& scenario, const Invocation& invocation,
+                              const Stream& stream) {
+  try {
+    stream();
+    return false;
+  } catch (const RunInterrupted&) {
+    std::fprintf(stderr, "relslam: interrupted; %s holds the iterations simulated\n", args.out.c_str());
+    return true;
+  } catch (const std::exception& e) {
+    write_manifest(args.out, scenario, invocation, {}, failed_status(e.what()));
+    throw;
+  }
+}
+
 // The planar world (kind "planar"): walls, path and plane observations.
 int simulate_planar(const SimulateArgs& args, const LoadedScenario& loaded,
                     const std::vector<std::string>& command_line) {
   const Scenario& scenario = loaded.scenario;
   PlanarSimulationSource source(loaded);  // built and checked before the folder is touched
   prepare_run_folder(args.out, args.force);
+  const Invocation invocation{"simulate", command_line, args.scenario, args.set};
+  catch_interrupts();  // before the manifest says running: a signal from then on is seen
+  write_manifest(args.out, scenario, invocation, {}, kRunStatusRunning);
   source.record_into(args.out);
   const auto start = std::chrono::steady_clock::now();
   Progress progress("simulate " + scenario.name, source.frames(), !args.quiet);
-  source.stream([&](const PlaneFrame& observation, const PlaneTruthFrame&) {
-    progress.update(observation.iteration + 1);
+  const bool interrupted = stream_until_interrupted(args, scenario, invocation, [&] {
+    source.stream([&](const PlaneFrame& observation, const PlaneTruthFrame&) {
+      stop_if_interrupted();
+      progress.update(observation.iteration + 1);
+    });
   });
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   nlohmann::json extra = source.describe();
   extra["wall_time_s"] = seconds;
-  write_manifest(args.out, scenario, {"simulate", command_line, args.scenario, args.set}, extra);
+  write_manifest(args.out, scenario, invocation, extra, interrupted ? kRunStatusInterrupted : kRunStatusOk);
+  if (interrupted) return kInterruptedExit;
   if (!args.quiet) {
     const PlanarSimulationSummary& s = source.summary();
     std::printf("simulated %s (%s): %d iterations, %d walls, %.1f units travelled\n", scenario.name.c_str(),
                 source.map().name.c_str(), s.iterations, s.walls, s.distance_travelled);
-    std::printf("planes seen per iteration: mean %.2f, min %d, max %d\n", s.visible_mean, s.visible_min,
-                s.visible_max);
+    std::printf("planes seen per iteration: mean %.2f, min %d, max %d\n", s.visible_mean, s.visible_min, s.visible_max);
     std::printf("wrote %s in %.2f s\n", args.out.c_str(), seconds);
   }
   return 0;
@@ -61,12 +85,19 @@ int run_simulate(const SimulateArgs& args, const std::vector<std::string>& comma
   // The world is built (and checked) before the folder is touched.
   SimulationSource source(loaded);
   prepare_run_folder(args.out, args.force);
+  const Invocation invocation{"simulate", command_line, args.scenario, args.set};
+  catch_interrupts();  // before the manifest says running: a signal from then on is seen
+  write_manifest(args.out, scenario, invocation, {}, kRunStatusRunning);
   source.record_into(args.out);
 
   const auto start = std::chrono::steady_clock::now();
   Progress progress("simulate " + scenario.name, source.frames(), !args.quiet);
-  source.stream(
-      [&](const ObservationFrame& observation, const TruthFrame&) { progress.update(observation.iteration + 1); });
+  const bool interrupted = stream_until_interrupted(args, scenario, invocation, [&] {
+    source.stream([&](const ObservationFrame& observation, const TruthFrame&) {
+      stop_if_interrupted();
+      progress.update(observation.iteration + 1);
+    });
+  });
   const SimulationSummary& summary = source.summary();
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -82,8 +113,9 @@ int run_simulate(const SimulateArgs& args, const std::vector<std::string>& comma
       {"distance_travelled", summary.distance_travelled},
       {"wall_time_s", seconds},
   };
-  write_manifest(args.out, scenario, {"simulate", command_line, args.scenario, args.set},
-                 {{"simulation_summary", summary_json}});
+  write_manifest(args.out, scenario, invocation, {{"simulation_summary", summary_json}},
+                 interrupted ? kRunStatusInterrupted : kRunStatusOk);
+  if (interrupted) return kInterruptedExit;
   if (!args.quiet) {
     std::printf("simulated %s: %d iterations, %d landmarks (%d dynamic), %.1f units travelled\n", scenario.name.c_str(),
                 summary.iterations, summary.landmarks, summary.dynamic_landmarks, summary.distance_travelled);

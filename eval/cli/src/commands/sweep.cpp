@@ -4,6 +4,7 @@
 #include "relslam/eval/config/scenario_keys.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/batch.hpp"
+#include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/sweep_launchers.hpp"
 #include "relslam/eval/experiments/sweep_plan.hpp"
 #include "relslam/eval/experiments/sweep_tables.hpp"
@@ -99,7 +100,10 @@ int aggregate_sweep(const SweepArgs& args) {
     if (!std::filesystem::exists(cell))
       r.error = "not run (no folder)";
     else if (!std::filesystem::exists(cell / "manifest.json") || !std::filesystem::exists(cell / "summary.csv"))
-      r.error = "failed or unfinished (no manifest.json or summary.csv; delete the folder before running it again)";
+      r.error = "failed or unfinished (no manifest.json or summary.csv; rerun it with --force)";
+    else if (const std::string status = manifest_status(cell); status != kRunStatusOk)
+      // An interrupted run has a summary of the frames it processed: not a finished cell.
+      r.error = "not finished (manifest status \"" + status + "\"; rerun it with --force)";
     else
       r.rows = read_summary(cell / "summary.csv");
     if (!r.error.empty()) incomplete.push_back(i);
@@ -172,7 +176,10 @@ int run_sweep(const SweepArgs& args, const std::vector<std::string>& command_lin
     for (const AxisValue& v : axis.values) grid[axis.name].push_back(v.label);
   nlohmann::json sweep = {{"grid", grid}, {"seeds", seeds}, {"runs", jobs.size()}};
   if (args.emit.empty()) sweep["jobs"] = args.jobs;
-  write_manifest(out, loaded.scenario, {"sweep", command_line, args.scenario, args.set}, {{"sweep", sweep}});
+  const Invocation invocation{"sweep", command_line, args.scenario, args.set};
+  // An emitted plan is complete once written; a sweep run here is running until its cells end.
+  write_manifest(out, loaded.scenario, invocation, {{"sweep", sweep}},
+                 args.emit.empty() ? kRunStatusRunning : kRunStatusOk);
   // Every sweep folder has its plan, so --aggregate can remake the tables of any of them.
   const SweepPlan plan{std::filesystem::absolute(args.scenario).lexically_normal().string(), args.set, axes, seeds,
                        jobs};
@@ -195,13 +202,17 @@ int run_sweep(const SweepArgs& args, const std::vector<std::string>& command_lin
   if (!args.quiet)
     std::printf("sweep %s: %zu combinations x %d seeds = %zu runs, %d at a time\n", loaded.scenario.name.c_str(),
                 jobs.size() / seeds.size(), args.seeds, jobs.size(), args.jobs);
+  catch_interrupts();
   const std::vector<BatchResult> results =
       run_batch(args.scenario, args.set, jobs, args.jobs, !args.quiet, command_line);
   write_tables(args, out, axes, results);
+  const bool interrupted = interrupt_requested();
+  write_manifest(out, loaded.scenario, invocation, {{"sweep", sweep}},
+                 interrupted ? kRunStatusInterrupted : kRunStatusOk);
   if (!args.quiet)
     for (const BatchResult& r : results)
       if (!r.error.empty()) std::printf("run %s failed: %s\n", r.job.folder.c_str(), r.error.c_str());
-  return 0;
+  return interrupted ? kInterruptedExit : 0;
 }
 
 }  // namespace relslam::eval

@@ -2,6 +2,7 @@
 
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/victoria_park_experiment.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
 #include "relslam/eval/io/rawlog.hpp"
@@ -51,11 +52,25 @@ int run_victoria_park_command(const VictoriaParkArgs& args, const std::vector<st
   const LoadedScenario loaded = load_checked(args.scenario, set);
   const VictoriaParkLog log = read_log(args.data);
   prepare_run_folder(args.out, args.force);
-  const VictoriaParkResult result = run_victoria_park(loaded, log, args.out, !args.quiet);
+  const Invocation invocation{"victoria-park", command_line, args.scenario, set};
+  catch_interrupts();  // before the manifest says running: a signal from then on is seen
+  write_manifest(args.out, loaded.scenario, invocation, {}, kRunStatusRunning);
+  VictoriaParkResult result;
+  try {
+    result = run_victoria_park(loaded, log, args.out, !args.quiet);
+  } catch (const std::exception& e) {
+    write_manifest(args.out, loaded.scenario, invocation, {}, failed_status(e.what()));
+    throw;
+  }
   nlohmann::json extra = result.experiment.source;
   extra["data"] = victoria_park_dir(args.data).string();
   extra["wall_time_s"] = result.experiment.seconds;
-  write_manifest(args.out, loaded.scenario, {"victoria-park", command_line, args.scenario, set}, extra);
+  write_manifest(args.out, loaded.scenario, invocation, extra,
+                 result.experiment.interrupted ? kRunStatusInterrupted : kRunStatusOk);
+  if (result.experiment.interrupted) {
+    std::fprintf(stderr, "relslam: interrupted; %s holds the scans processed\n", args.out.c_str());
+    return kInterruptedExit;
+  }
   if (!args.quiet) {
     print_victoria_park(result, "victoria park " + loaded.scenario.victoria_park.window);
     std::printf("wrote %s in %.1f s\n", args.out.c_str(), result.experiment.seconds);

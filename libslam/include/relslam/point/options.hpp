@@ -185,6 +185,10 @@ struct PointSlamOptions {
   int charting_capacity = 512;
 };
 
+// RltPointCharting allocates a slot per iteration up front: a million slots (tens of MB) is far
+// beyond level 3's 2048, while 1e9 passed the checks and then died of std::bad_alloc.
+inline constexpr int kMaxChartingCapacity = 1'000'000;
+
 // Iterations of history the final and temporary levels look at, plus local matching's
 // look-back and the two iterations around them: what the observation rings and the charting
 // must keep.
@@ -242,7 +246,7 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
   f.field("merge_bound", o.merge_bound, "merging bound, units", above(0.0));
   f.field("ring_capacity", o.ring_capacity, "observations kept per RltPoint", at_least(history_window(o)));
   f.field("charting_capacity", o.charting_capacity, "iterations kept by RltPointCharting (2048 with level 3)",
-          at_least(history_window(o)));
+          at_least(history_window(o)), at_most(kMaxChartingCapacity));
 }
 
 // Every violated constraint, fields named as in the struct ("final_group.prev_min"): the

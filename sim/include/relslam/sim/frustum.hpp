@@ -11,6 +11,12 @@
 
 namespace relslam::sim {
 
+// Largest length a sim key may give (frustum and world options alike), units: far beyond the
+// thesis's world (a loop of 1145 units, a band of 15 either side), yet small enough that
+// positions, their differences and squares stay finite and precise in doubles. 1e308 gave NaN
+// ground truth and observations.
+inline constexpr double kMaxLength = 1e6;
+
 // How the frustum is closed at the far end.
 enum class FarCap {
   Plane,  // z <= far: the flat far plane of the thesis's Chapter 4 trapezoid frusta
@@ -63,10 +69,12 @@ struct Frustum {
 
 // The scenario keys of the frustum (sim.frustum.*): help and checks per field.
 void describe(OptionsOf<Frustum> auto& f, auto& fields) {
-  fields.field("near", f.near, "nearest visible depth, units", at_least(0.0));
-  fields.field("far", f.far, "farthest visible depth, units", above(f.near, "near"));
+  fields.field("near", f.near, "nearest visible depth, units", at_least(0.0), at_most(kMaxLength));
+  fields.field("far", f.far, "farthest visible depth, units", above(f.near, "near"),
+               at_most(kMaxLength));
   fields.degrees("half_angle_deg", f.half_angle_rad, "half the horizontal field of view", above(0.0), at_most(89.0));
-  fields.field("half_height", f.half_height, "visible height band |y| <= this, units", above(0.0));
+  fields.field("half_height", f.half_height, "visible height band |y| <= this, units", above(0.0),
+               at_most(kMaxLength));
   fields.choice("far_cap", f.far_cap, "far end: flat plane z <= far, or range |p| <= far",
                 {FarCap::Plane, FarCap::Range});
 }

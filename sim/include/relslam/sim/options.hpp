@@ -47,8 +47,10 @@ void describe(OptionsOf<DynamicOptions> auto& d, auto& f) {
           "counted movers are seen at iteration 0 and this many iterations later", at_least(0));
   f.field("fraction", d.fraction, "share of all points made dynamic (S-DYN3: 0.03)", at_least(0.0), at_most(1.0),
           holds(!(d.count > 0 && d.fraction > 0), "set either dynamic.count or dynamic.fraction, not both"));
-  f.field("amplitude", d.amplitude, "dynamic wander amplitude, units", at_least(0.0));
-  f.field("vertical_ratio", d.vertical_ratio, "vertical amplitude as a share of the horizontal one", at_least(0.0));
+  f.field("amplitude", d.amplitude, "dynamic wander amplitude, units", at_least(0.0),
+          at_most(kMaxLength));
+  f.field("vertical_ratio", d.vertical_ratio, "vertical amplitude as a share of the horizontal one", at_least(0.0),
+          at_most(1000.0));
   f.field("period_min", d.period_min, "shortest wander period, iterations", above(0.0));
   f.field("period_max", d.period_max, "longest wander period, iterations", at_least(d.period_min));
 }
@@ -104,15 +106,21 @@ void describe(OptionsOf<SimOptions> auto& o, auto& f) {
   f.field("scale", o.scale, "multiplies path lengths; 2 = the double-size eight (Fig 136)", above(0.0),
           at_most(1000.0));
   f.field("density", o.density, "points per 100 units of path (thesis 6.6.2)", at_least(0.0));
-  f.field("noise_sigma", o.noise_sigma, "std. deviation of white Gaussian noise per axis, units", at_least(0.0));
+  f.field("noise_sigma", o.noise_sigma, "std. deviation of white Gaussian noise per axis, units", at_least(0.0),
+          at_most(kMaxLength));
   f.field("range_noise", o.range_noise, "noise grows with range: sigma·(1 + range/far)");
-  f.field("loop_length", o.loop_length, "figure-eight loop length at scale 1, units", above(0.0));
+  f.field("loop_length", o.loop_length, "figure-eight loop length at scale 1, units", above(0.0),
+          at_most(kMaxLength));
   f.field("iterations_per_loop", o.iterations_per_loop, "iterations per loop at scale 1; sets the speed", at_least(1));
-  f.field("incline_height", o.incline_height, "height of the crossing above the start, units", at_least(0.0));
+  f.field("incline_height", o.incline_height, "height of the crossing above the start, units", at_least(0.0),
+          at_most(kMaxLength));
   f.field("wobble", o.wobble, "add small roll and pitch oscillations (all 6 DOF move)");
-  f.field("band_half_width", o.band_half_width, "point band extends this far left and right, units", at_least(0.0));
-  f.field("band_half_height", o.band_half_height, "point band extends this far up and down, units", at_least(0.0));
-  f.field("line_margin", o.line_margin, "line field runs this far past the end, units", at_least(0.0));
+  f.field("band_half_width", o.band_half_width, "point band extends this far left and right, units", at_least(0.0),
+          at_most(kMaxLength));
+  f.field("band_half_height", o.band_half_height, "point band extends this far up and down, units", at_least(0.0),
+          at_most(kMaxLength));
+  f.field("line_margin", o.line_margin, "line field runs this far past the end, units", at_least(0.0),
+          at_most(kMaxLength));
   f.nested("frustum", o.frustum);
   f.nested("dynamic", o.dynamic);
 }

@@ -45,8 +45,8 @@ void describe(OptionsOf<Ekf2dOptions> auto& o, auto& f) {
   f.choice("association", o.association, "jcbb or nn (Victoria Park has no ids), or known", kEkfAssociations);
   f.choice("association_no_odometry", o.association_no_odometry,
            "ekf2d_no_odometry's association: nn (bounded time per scan), jcbb or known", kEkfAssociations);
-  f.field("std_range", o.std_range, "planar EKF: range std. deviation, m", above(0.0));
-  f.degrees("std_yaw_deg", o.std_yaw_rad, "planar EKF: bearing std. deviation", above(0.0));
+  f.field("std_range", o.std_range, "planar EKF: range std. deviation, m", at_least(kMinSensorStd));
+  f.degrees("std_yaw_deg", o.std_yaw_rad, "planar EKF: bearing std. deviation", at_least(kMinSensorStd));
   f.field("stds_q_no_odometry", o.stds_q_no_odometry,
           "planar EKF without odometry: motion noise per scan x, y (m), heading (rad)", length(3, "x, y, heading"),
           above(0.0));

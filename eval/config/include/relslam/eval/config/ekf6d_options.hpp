@@ -13,6 +13,10 @@
 
 namespace relslam::eval {
 
+// Smallest sensor standard deviation the EKFs accept (units, m or degrees): the filters invert
+// its square, and a subnormal such as 1e-320 squared is 0, so the run went on with infinities.
+inline constexpr double kMinSensorStd = 1e-9;
+
 enum class EkfMethod {
   Davison,  // "EKF à la Davison": faster and, in the thesis's tests, more accurate [T]
   Full,     // the full EKF update
@@ -56,9 +60,9 @@ void describe(OptionsOf<Ekf6dOptions> auto& o, auto& f) {
   f.choice("method", o.method, "EKF update: davison (thesis 6.7) or full", kEkfMethods);
   f.choice("association", o.association, "known (true ids, as the thesis), or ids withheld: jcbb or nn",
            kEkfAssociations);
-  f.field("std_range", o.std_range, "sensor model range std. deviation, units", above(0.0));
-  f.degrees("std_yaw_deg", o.std_yaw_rad, "sensor model yaw std. deviation", above(0.0));
-  f.degrees("std_pitch_deg", o.std_pitch_rad, "sensor model pitch std. deviation", above(0.0));
+  f.field("std_range", o.std_range, "sensor model range std. deviation, units", at_least(kMinSensorStd));
+  f.degrees("std_yaw_deg", o.std_yaw_rad, "sensor model yaw std. deviation", at_least(kMinSensorStd));
+  f.degrees("std_pitch_deg", o.std_pitch_rad, "sensor model pitch std. deviation", at_least(kMinSensorStd));
   f.field("stds_q", o.stds_q, "motion noise without odometry: x, y, z, qr, qx, qy, qz",
           length(7, "x, y, z, qr, qx, qy, qz"), above(0.0));
   f.field("chi2_threshold", o.chi2_threshold, "data association individual compatibility (jcbb, nn)", above(0.0),

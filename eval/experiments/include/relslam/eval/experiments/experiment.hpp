@@ -24,6 +24,8 @@ struct ExperimentResult {
   int iterations = 0;
   double seconds = 0;
   nlohmann::json source;  // what the observations were: manifest material
+  // SIGINT or SIGTERM stopped the frames early: the rows cover the frames processed.
+  bool interrupted = false;
 };
 
 // InputError at "algorithms" when the scenario lists none or one the registry does not have.

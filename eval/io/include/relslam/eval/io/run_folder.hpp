@@ -11,9 +11,10 @@
 
 namespace relslam::eval {
 
-// Creates `dir` (and parents). An existing non-empty folder is refused, unless `force` and it
-// holds a manifest.json (it is an earlier run): then its contents are deleted. A folder
-// without a manifest is never deleted, so a mistyped --out cannot wipe a home directory.
+// Creates `dir` (and parents). An existing non-empty folder is refused, unless `force` and its
+// manifest.json says it is a relslam run (it names a relslam_version), in any state: running
+// (killed), interrupted, failed or ok; then its contents are deleted. A folder without such a
+// manifest is never deleted, so a mistyped --out cannot wipe a home directory.
 // Throws InputError(field "--out").
 void prepare_run_folder(const std::filesystem::path& dir, bool force);
 
@@ -27,8 +28,20 @@ struct Invocation {
 
 // manifest.json: the resolved scenario, seed, invocation, git revision, library versions,
 // host, the engine that ran it (engine_info) and UTC time — enough to rerun (style.md 2.8).
-// `extra` entries are merged in at the top.
+// `extra` entries are merged in at the top. "status" tells a finished run from a killed one:
+// a run writes the manifest first as kRunStatusRunning and again at its end as kRunStatusOk,
+// kRunStatusInterrupted (SIGINT/SIGTERM) or "failed: <why>"; one left "running" was killed
+// (SIGKILL, power loss). The file is replaced by rename, so it is never seen half written.
 void write_manifest(const std::filesystem::path& dir, const Scenario& scenario, const Invocation& invocation,
-                    const nlohmann::json& extra = nlohmann::json::object());
+                    const nlohmann::json& extra = nlohmann::json::object(), const std::string& status = "ok");
+
+inline constexpr const char* kRunStatusRunning = "running";
+inline constexpr const char* kRunStatusOk = "ok";
+inline constexpr const char* kRunStatusInterrupted = "interrupted";
+// "failed: <why>" for an error that ended the run.
+std::string failed_status(const std::string& why);
+// The status in dir/manifest.json: kRunStatusOk for a manifest from before statuses existed
+// (it was written only at the end), "" when there is no readable manifest.
+std::string manifest_status(const std::filesystem::path& dir);
 
 }  // namespace relslam::eval
