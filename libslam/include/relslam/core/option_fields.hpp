@@ -95,11 +95,18 @@ class OptionChecker {
   template <class T, class... Checks>
   void field(std::string_view name, const T& value, std::string_view, const Checks&... checks) {
     const std::string path = prefix_ + std::string(name);
-    (check_whole(path, value, checks), ...);
+    // One problem per value (the field, or each element of a list): a NaN breaks every bound,
+    // and the first check says so.
+    std::size_t before = issues_.size();
+    const auto fresh = [&] { return issues_.size() == before; };
+    ((fresh() ? check_whole(path, value, checks) : void()), ...);
     if constexpr (is_optional<T>) {
-      if (value) (check_part<T>(path, *value, checks), ...);
+      if (value) ((fresh() ? check_part<T>(path, *value, checks) : void()), ...);
     } else if constexpr (std::ranges::range<T> && !std::same_as<T, std::string>) {
-      for (const auto& element : value) (check_part<T>(path, element, checks), ...);
+      for (const auto& element : value) {
+        before = issues_.size();
+        ((fresh() ? check_part<T>(path, element, checks) : void()), ...);
+      }
     } else {
       static_assert((takes<Checks, T> && ...), "every check of a single value must take that value");
     }
