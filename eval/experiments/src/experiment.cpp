@@ -1,5 +1,7 @@
 #include "relslam/eval/experiments/experiment.hpp"
 
+#include "stream_to_recorders.hpp"
+
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
@@ -32,17 +34,9 @@ ExperimentResult Experiment::run(bool progress) {
   const auto start = std::chrono::steady_clock::now();
   Progress bar(source_.label(), source_.frames(), progress);
   ExperimentResult result;
-  try {
-    source_.stream([&](const ObservationFrame& observation, const TruthFrame& truth) {
-      stop_if_interrupted();
-      for (auto& recorder : recorders_) recorder->step(observation, truth);
-      bar.update(observation.iteration + 1);
-    });
-  } catch (const RunInterrupted&) {
-    // Finish with the frames processed so far: summaries and files cover them, and the
-    // command marks the manifest "interrupted".
-    result.interrupted = true;
-  }
+  // Interrupted, the run finishes with the frames processed so far and the command marks the
+  // manifest "interrupted".
+  result.interrupted = stream_to_recorders(source_, recorders_, bar);
   for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
   // The Relative Point / EKF ratios, over the iterations both processed: against the 6D EKF,
   // or else the planar one with odometry.

@@ -1,5 +1,7 @@
 #include "relslam/eval/experiments/planar_experiment.hpp"
 
+#include "stream_to_recorders.hpp"
+
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/io/progress.hpp"
@@ -23,17 +25,9 @@ ExperimentResult PlanarExperiment::run(bool progress) {
   const auto start = std::chrono::steady_clock::now();
   Progress bar(source_.label(), source_.frames(), progress);
   ExperimentResult result;
-  try {
-    source_.stream([&](const PlaneFrame& observation, const PlaneTruthFrame& truth) {
-      stop_if_interrupted();
-      for (auto& recorder : recorders_) recorder->step(observation, truth);
-      bar.update(observation.iteration + 1);
-    });
-  } catch (const RunInterrupted&) {
-    // Finish with the frames processed so far: summaries and files cover them, and the
-    // command marks the manifest "interrupted".
-    result.interrupted = true;
-  }
+  // Interrupted, the run finishes with the frames processed so far and the command marks the
+  // manifest "interrupted".
+  result.interrupted = stream_to_recorders(source_, recorders_, bar);
   for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
   write_summary(out_ / "summary.csv", result.rows);
   bar.finish();

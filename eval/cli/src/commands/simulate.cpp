@@ -42,11 +42,13 @@ bool stream_until_interrupted(const SimulateArgs& args, const Scenario& scenario
   }
 }
 
-// The planar world (kind "planar"): walls, path and plane observations.
-int simulate_planar(const SimulateArgs& args, const LoadedScenario& loaded,
-                    const std::vector<std::string>& command_line) {
+// What both worlds do: the folder, the manifest as "running", the frames recorded into the
+// folder as they pass, then the manifest finished. `extra(seconds)` gives the manifest's entries
+// and `report(seconds)` prints the summary. Returns the exit status.
+template <class Source, class Extra, class Report>
+int simulate_into(const SimulateArgs& args, const LoadedScenario& loaded, const std::vector<std::string>& command_line,
+                  Source& source, const Extra& extra, const Report& report) {
   const Scenario& scenario = loaded.scenario;
-  PlanarSimulationSource source(loaded);  // built and checked before the folder is touched
   prepare_run_folder(args.out, args.force);
   const Invocation invocation{"simulate", command_line, args.scenario, args.set};
   catch_interrupts();  // before the manifest says running: a signal from then on is seen
@@ -55,24 +57,16 @@ int simulate_planar(const SimulateArgs& args, const LoadedScenario& loaded,
   const auto start = std::chrono::steady_clock::now();
   Progress progress("simulate " + scenario.name, source.frames(), !args.quiet);
   const bool interrupted = stream_until_interrupted(args, scenario, invocation, [&] {
-    source.stream([&](const PlaneFrame& observation, const PlaneTruthFrame&) {
+    source.stream([&](const auto& observation, const auto&) {
       stop_if_interrupted();
       progress.update(observation.iteration + 1);
     });
   });
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  nlohmann::json extra = source.describe();
-  extra["wall_time_s"] = seconds;
-  write_manifest(args.out, scenario, invocation, extra, interrupted ? kRunStatusInterrupted : kRunStatusOk);
+  write_manifest(args.out, scenario, invocation, extra(seconds), interrupted ? kRunStatusInterrupted : kRunStatusOk);
   if (interrupted) return kInterruptedExit;
-  if (!args.quiet) {
-    const PlanarSimulationSummary& s = source.summary();
-    std::printf("simulated %s (%s): %d iterations, %d walls, %.1f units travelled\n", scenario.name.c_str(),
-                source.map().name.c_str(), s.iterations, s.walls, s.distance_travelled);
-    std::printf("planes seen per iteration: mean %.2f, min %d, max %d\n", s.visible_mean, s.visible_min, s.visible_max);
-    std::printf("wrote %s in %.2f s\n", args.out.c_str(), seconds);
-  }
+  if (!args.quiet) report(seconds);
   return 0;
 }
 
@@ -80,50 +74,51 @@ int simulate_planar(const SimulateArgs& args, const LoadedScenario& loaded,
 
 int run_simulate(const SimulateArgs& args, const std::vector<std::string>& command_line) {
   const LoadedScenario loaded = load_checked(args.scenario, args.set);
-  if (loaded.scenario.kind == ScenarioKind::Planar) return simulate_planar(args, loaded, command_line);
   const Scenario& scenario = loaded.scenario;
-  // The world is built (and checked) before the folder is touched.
-  SimulationSource source(loaded);
-  prepare_run_folder(args.out, args.force);
-  const Invocation invocation{"simulate", command_line, args.scenario, args.set};
-  catch_interrupts();  // before the manifest says running: a signal from then on is seen
-  write_manifest(args.out, scenario, invocation, {}, kRunStatusRunning);
-  source.record_into(args.out);
-
-  const auto start = std::chrono::steady_clock::now();
-  Progress progress("simulate " + scenario.name, source.frames(), !args.quiet);
-  const bool interrupted = stream_until_interrupted(args, scenario, invocation, [&] {
-    source.stream([&](const ObservationFrame& observation, const TruthFrame&) {
-      stop_if_interrupted();
-      progress.update(observation.iteration + 1);
-    });
-  });
-  const SimulationSummary& summary = source.summary();
-  progress.finish();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  const nlohmann::json summary_json = {
-      {"iterations", summary.iterations},
-      {"landmarks", summary.landmarks},
-      {"dynamic_landmarks", summary.dynamic_landmarks},
-      {"detections", summary.detections},
-      {"visible_mean", summary.visible_mean},
-      {"visible_min", summary.visible_min},
-      {"visible_max", summary.visible_max},
-      {"distance_travelled", summary.distance_travelled},
-      {"wall_time_s", seconds},
-  };
-  write_manifest(args.out, scenario, invocation, {{"simulation_summary", summary_json}},
-                 interrupted ? kRunStatusInterrupted : kRunStatusOk);
-  if (interrupted) return kInterruptedExit;
-  if (!args.quiet) {
-    std::printf("simulated %s: %d iterations, %d landmarks (%d dynamic), %.1f units travelled\n", scenario.name.c_str(),
-                summary.iterations, summary.landmarks, summary.dynamic_landmarks, summary.distance_travelled);
-    std::printf("visible per iteration: mean %.1f, min %d, max %d (density %g)\n", summary.visible_mean,
-                summary.visible_min, summary.visible_max, scenario.sim.density);
-    std::printf("wrote %s in %.2f s\n", args.out.c_str(), seconds);
+  // Each world is built (and checked) before the folder is touched.
+  if (scenario.kind == ScenarioKind::Planar) {  // walls, path and plane observations
+    PlanarSimulationSource source(loaded);
+    return simulate_into(
+        args, loaded, command_line, source,
+        [&](double seconds) {
+          nlohmann::json extra = source.describe();
+          extra["wall_time_s"] = seconds;
+          return extra;
+        },
+        [&](double seconds) {
+          const PlanarSimulationSummary& s = source.summary();
+          std::printf("simulated %s (%s): %d iterations, %d walls, %.1f units travelled\n", scenario.name.c_str(),
+                      source.map().name.c_str(), s.iterations, s.walls, s.distance_travelled);
+          std::printf("planes seen per iteration: mean %.2f, min %d, max %d\n", s.visible_mean, s.visible_min,
+                      s.visible_max);
+          std::printf("wrote %s in %.2f s\n", args.out.c_str(), seconds);
+        });
   }
-  return 0;
+  SimulationSource source(loaded);
+  return simulate_into(
+      args, loaded, command_line, source,
+      [&](double seconds) {
+        const SimulationSummary& summary = source.summary();
+        return nlohmann::json{{"simulation_summary",
+                               {{"iterations", summary.iterations},
+                                {"landmarks", summary.landmarks},
+                                {"dynamic_landmarks", summary.dynamic_landmarks},
+                                {"detections", summary.detections},
+                                {"visible_mean", summary.visible_mean},
+                                {"visible_min", summary.visible_min},
+                                {"visible_max", summary.visible_max},
+                                {"distance_travelled", summary.distance_travelled},
+                                {"wall_time_s", seconds}}}};
+      },
+      [&](double seconds) {
+        const SimulationSummary& summary = source.summary();
+        std::printf("simulated %s: %d iterations, %d landmarks (%d dynamic), %.1f units travelled\n",
+                    scenario.name.c_str(), summary.iterations, summary.landmarks, summary.dynamic_landmarks,
+                    summary.distance_travelled);
+        std::printf("visible per iteration: mean %.1f, min %d, max %d (density %g)\n", summary.visible_mean,
+                    summary.visible_min, summary.visible_max, scenario.sim.density);
+        std::printf("wrote %s in %.2f s\n", args.out.c_str(), seconds);
+      });
 }
 
 }  // namespace relslam::eval
