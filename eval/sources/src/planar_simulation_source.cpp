@@ -45,11 +45,10 @@ fs::path resolve_planar_map(const LoadedScenario& loaded) {
                                        known_map_names({beside / "maps", kRepositoryMaps}) + ")");
 }
 
-sim::PlanarMap build_planar_map(const LoadedScenario& loaded) {
+sim::PlanarMap build_planar_map(const LoadedScenario& loaded, const fs::path& file) {
   if (loaded.scenario.kind != ScenarioKind::Planar)
     throw loaded.error("kind", "this scenario is not a planar world (kind \"planar\")");
   const PlanarOptions& o = loaded.scenario.planar;
-  const fs::path file = resolve_planar_map(loaded);
   sim::PlanarMap map = read_planar_map(file);
 
   if (o.loops > 0) map.path.loops = o.loops;
@@ -95,7 +94,7 @@ struct PlanarSimulationSource::Recorder {
 PlanarSimulationSource::PlanarSimulationSource(const LoadedScenario& loaded)
     : name_(loaded.scenario.name),
       map_file_(resolve_planar_map(loaded)),
-      map_(build_planar_map(loaded)),
+      map_(build_planar_map(loaded, map_file_)),
       simulator_(map_, loaded.scenario.seed) {
   const int limit = loaded.scenario.planar.iterations;
   frames_ = limit > 0 ? std::min(limit, simulator_.iterations()) : simulator_.iterations();

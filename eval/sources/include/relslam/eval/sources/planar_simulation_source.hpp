@@ -19,10 +19,10 @@ namespace relslam::eval {
 // InputError at planar.map, listing the known names, when there is none.
 std::filesystem::path resolve_planar_map(const LoadedScenario& loaded);
 
-// The scenario's map with its planar.* settings applied (loops, frustum, visibility, culling,
+// The scenario's map, read from `file` (resolve_planar_map), with its planar.* settings applied (loops, frustum, visibility, culling,
 // noise). Throws InputError naming the map file or the key at fault, also when the robot would
 // never see two walls at once (the algorithm would have nothing to relate, Rule 7).
-sim::PlanarMap build_planar_map(const LoadedScenario& loaded);
+sim::PlanarMap build_planar_map(const LoadedScenario& loaded, const std::filesystem::path& file);
 
 // What the planar simulation produced (after stream()).
 struct PlanarSimulationSummary {
