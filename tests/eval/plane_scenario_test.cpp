@@ -52,6 +52,7 @@ struct SimRun {
   int global_matches = 0;
   std::map<int, PlaneError> final_error;  // RltPlane on the final map -> its error against its wall
   std::map<int, int> final_wall;          // ... and that wall
+  std::map<int, int> motion_models_by;    // iteration -> motion models started so far
 };
 
 // e_ends of `mapped` against `wall`, or against the wall seen from behind (ends swapped) when the
@@ -93,6 +94,7 @@ SimRun run_map(const sim::PlanarMap& map, std::uint64_t seed, const RelativePlan
     score.map = plane_map_error(mapped, votes, walls);
     score.rlt_planes = static_cast<int>(slam.planes().size());
     out.iterations.push_back(score);
+    out.motion_models_by[k] = static_cast<int>(slam.motion_models().size());
   }
   out.rlt_planes = static_cast<int>(slam.planes().size());
   for (int p = 0; p < out.rlt_planes; ++p) {
@@ -259,50 +261,82 @@ TEST(PlaneScenario, MapCEdgeOnWallBreaksThePoseOnlyWithoutRule10) {
   }
 }
 
-// Map D (thesis Figs 67, 73–82; spec E08) without noise, part 2 on (options.key_points): the
-// small frustum cuts the walls, so they are compared by their key points (Rules 13–15, 18, 19),
-// chained with size correction (Rule 28), placed at their largest size from their key point
-// (Rule 17, A47) and grown to that size for the pose (Rule 16). Noise-free, the growth phases are
-// split without a moving average (window 1, hysteresis 1e-6): the thesis's Fig 105 shows the
-// averaging lag putting a few samples of the next phase into a piece, which with the default
-// window 5 moves the pose by 0.016 at iteration 19. Measured: the pose is exact (1e-14) at all
-// 227 iterations it is valid; 6 RltPlanes are mapped, the 4 walls seen whole (4, 5, 6, 24) exact
-// at full length (7e-15), walls 3 and 23 — seen only in part in the first corridor — with their
-// key-point end exact and the other end short by the part never seen. Part 1 on the same run:
-// pose off by up to 3.8. Not yet reached (issue 13): after the first corner (iteration ~235) no
-// new group can be linked — the frustum shows too few planes while turning (the motion model of
-// Rules 23–27, and Rules 21/22 for the loop) — so the pose stays invalid and 30 of the 36 walls
-// stay off the map.
-TEST(PlaneScenario, MapDNoiseFreeFirstCorridorIsExactWithKeyPoints) {
-  const sim::PlanarMap map = noise_free(map_file("d_office_loop.json"));
-  ASSERT_EQ(map.sensor.mode, sim::PlaneVisibility::Frustum);
+// Map D (thesis Figs 67, 73–82) without noise, parts 2 and 3's motion model on: walls cut by
+// the frustum are compared by their key points (Rules 13–15, 18, 19), chained with size
+// correction (Rule 28), placed at their largest size from their key point (Rule 17, A47) and
+// grown to that size for the pose (Rule 16); at a corner, where one partial wall is in view
+// (spec §3.7), the motion model (Rules 23–27) carries the pose. Noise-free the growth phases
+// are split without a moving average (window 1: Fig 105's lag puts samples of the next phase
+// into a piece) and "the same size" is exact (τ_len 1e-9: an end cut by less than τ_len would
+// otherwise be taken for the whole plane).
+RelativePlaneOptions noise_free_key_points() {
   RelativePlaneOptions options;
   options.key_points = true;
   options.growth_phase.window = 1;
-  options.growth_phase.hysteresis = 1e-6;
-  const SimRun run = run_map(map, 1, options);
-  const Worst w = worst_of(run);
-  EXPECT_GE(w.valid, 220);  // of 2501: the first corridor
-  EXPECT_LT(w.position, kNoiseFree);
-  EXPECT_LT(w.heading, kNoiseFree);
+  options.same_length = 1e-9;
+  return options;
+}
 
-  EXPECT_GE(run.final_error.size(), 6u);
-  int whole = 0;
+// e_ends of a plane mapped at its largest size seen: the key-point end exact, the other short by
+// the part never seen, no angle or offset error, never longer than the wall.
+void expect_one_end_exact(const SimRun& run, const sim::PlanarMap& map) {
   for (const auto& [p, e] : run.final_error) {
     const sim::Wall& wall = map.world.walls.at(run.final_wall.at(p));
     const double wall_length = (wall.b - wall.a).norm();
     EXPECT_LT(e.angle_rad, kNoiseFree) << "plane " << p;
     EXPECT_LT(e.perpendicular, kNoiseFree) << "plane " << p;
     EXPECT_LE(e.length_ratio, 1 + kNoiseFree) << "plane " << p;
-    // One end — the key point — exact; e_ends is then half the part of the wall never seen.
     EXPECT_NEAR(e.ends, 0.5 * (1 - e.length_ratio) * wall_length, kNoiseFree) << "plane " << p;
-    whole += std::abs(e.length_ratio - 1) < kNoiseFree;
   }
-  EXPECT_GE(whole, 4);
+}
 
-  RelativePlaneOptions part1 = options;
-  part1.key_points = false;
-  EXPECT_GT(worst_of(run_map(map, 1, part1)).position, 0.1);  // clipped midpoints are not the wall's
+// The small frustum through the first two corners (iterations 0–700, two motion models):
+// measured, the pose is exact (1e-14) at the 591 iterations it is valid; it is invalid for a few
+// iterations after each corner and while only planes without a key point in the current piece
+// are in view (438–490). Not yet reached (issue 13, part 3): at iteration 722 a plane seen for
+// three iterations gets a wrong key point for one iteration (the thesis's Figs 76–79); at 831 a
+// plane chained on the other end than its canonical size is anchored at, never seen whole, is
+// off by the part never seen (spec §5.7.2 "mixed_anchor", 0.207); from 838 the collinear inner
+// top pieces shrink and grow together (Fig 97: Rule 15 ties both diagonals, Rule 30 reorders).
+TEST(PlaneScenario, MapDSmallFrustumPassesTheFirstCornersExactlyWithTheMotionModel) {
+  const sim::PlanarMap map = noise_free(map_file("d_office_loop.json"));
+  ASSERT_EQ(map.sensor.mode, sim::PlaneVisibility::Frustum);
+  const SimRun run = run_map(map, 1, noise_free_key_points());
+  const Worst w = worst_of(run, 0, 700);
+  EXPECT_GE(w.valid, 580);
+  EXPECT_LT(w.position, kNoiseFree);
+  EXPECT_LT(w.heading, kNoiseFree);
+  EXPECT_GE(run.motion_models_by.at(700), 2);
+
+  RelativePlaneOptions without = noise_free_key_points();
+  without.rules.motion_model = false;  // the pose is lost at the first corner for good
+  EXPECT_LT(worst_of(run_map(map, 1, without), 0, 700).valid, 300);
+}
+
+// The large frustum (spec §3.8: half-angle 35°, 30 deep) keeps walls in view longer, and still
+// shows one partial wall at each corner: the whole run (one loop and the partial second that
+// closes it) is exact wherever the pose is valid (measured: 2477 of 2501 iterations, 1e-14),
+// every one of the 36 walls is mapped with its key-point end exact, and a motion model carried
+// each of the five corners. One wall has a second RltPlane: wall 3, seen only in part from the
+// start, is seen again on the return beyond the part mapped and cannot be matched to it — the
+// duplicate the thesis keeps on purpose (Fig 90, plane 9 ≡ plane 2, E15).
+TEST(PlaneScenario, MapDLargeFrustumLoopIsExactAndMapsEveryWall) {
+  sim::PlanarMap map = noise_free(map_file("d_office_loop.json"));
+  map.sensor.frustum = sim::ViewingFrustum::large();
+  const SimRun run = run_map(map, 1, noise_free_key_points());
+  const Worst w = worst_of(run);
+  EXPECT_GE(w.valid, 2450);
+  EXPECT_LT(w.position, kNoiseFree);
+  EXPECT_LT(w.heading, kNoiseFree);
+  EXPECT_EQ(run.motion_models_by.rbegin()->second, 5);
+  EXPECT_EQ(run.mapped_of_wall.size(), map.world.walls.size());
+  int duplicated = 0;
+  for (const auto& [wall, mapped] : run.mapped_of_wall) {
+    EXPECT_GE(mapped, 1) << "wall " << wall;
+    duplicated += mapped > 1;
+  }
+  EXPECT_LE(duplicated, 1);
+  expect_one_end_exact(run, map);
 }
 
 }  // namespace

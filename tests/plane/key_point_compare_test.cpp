@@ -71,12 +71,41 @@ TEST(CompareWithKeyPoints, ForcedIterationInTheShrinkingPieceGivesKeyPoint2) {
 TEST(CompareWithKeyPoints, WithoutTheSplitTheOffsetOfAPassedWallIsWrong) {
   RelativePlaneOptions no_split;
   no_split.growth_phase.hysteresis = 1e9;
+  no_split.trim_piece_ends = false;  // the thesis's plain split
   const ClippedWall passed = passed_wall();
   const CompareResult r = compare_with_key_points(seen(kAcross), seen(passed), no_split);
   ASSERT_TRUE(r.valid);
   EXPECT_EQ(r.samples, 100);
   const PlanarPose truth = test::anchored_delta(kAcross, 8, KeyPoint::Left, passed, 8, KeyPoint::Left);
   EXPECT_GT((r.delta.translation - truth.translation).norm(), 0.5);
+}
+
+// A wall first seen as a middle piece (cut at both ends by the frustum's far corner, Fig 105),
+// then with its real right end while it shrinks from the left: its length falls throughout, so
+// Rule 18 does not split, and the first sample's cut right end would sit in the average. Its
+// offset stands off the series of the real ends: the piece is trimmed and the offset is exact.
+TEST(CompareWithKeyPoints, AFirstSampleCutAtTheRealEndIsTrimmedFromThePiece) {
+  const ClippedWall leaving{{-1, -6},
+                            {7, -6},
+                            [](int t) { return t == 0 ? 2.5 : 3 + 0.1 * t; },
+                            [](int t) { return t == 0 ? 7.9 : 8.0; }};
+  const std::vector<PlaneObject> first = seen(kAcross, 0, 12), second = seen(leaving, 0, 12);
+  ASSERT_GT(second[0].length(), second[1].length());  // shrinking from the first sample on
+  const CompareResult r = compare_with_key_points(first, second, RelativePlaneOptions{});
+  ASSERT_TRUE(r.valid);
+  EXPECT_EQ(r.interval.start, 1);
+  EXPECT_EQ(r.samples, 11);
+  EXPECT_EQ(r.key_point2, KeyPoint::Right);
+  expect_pose_near(r.delta, test::anchored_delta(kAcross, 8, KeyPoint::Left, leaving, r.length2, KeyPoint::Right),
+                   kExact);
+
+  RelativePlaneOptions plain;
+  plain.trim_piece_ends = false;
+  const CompareResult untrimmed = compare_with_key_points(first, second, plain);
+  EXPECT_EQ(untrimmed.samples, 12);
+  const PlanarPose truth =
+      test::anchored_delta(kAcross, 8, KeyPoint::Left, leaving, untrimmed.length2, KeyPoint::Right);
+  EXPECT_GT((untrimmed.delta.translation - truth.translation).norm(), 0.005);
 }
 
 TEST(CompareWithKeyPoints, InvalidWithoutEnoughCommonIterations) {

@@ -4,9 +4,66 @@
 #include "relslam/plane/key_points.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 namespace relslam::plane {
+namespace {
+
+// Component-wise median of 2-D offsets (sorts a copy).
+Eigen::Vector2d median_of(std::vector<Eigen::Vector2d> v) {
+  Eigen::Vector2d m;
+  for (int c = 0; c < 2; ++c) {
+    std::ranges::nth_element(v, v.begin() + v.size() / 2, {}, [c](const Eigen::Vector2d& x) { return x[c]; });
+    m[c] = v[v.size() / 2][c];
+  }
+  return m;
+}
+
+// Rule 18's split points are known only to within the moving average (spec §5.6.2: ± w_ma), and a
+// plane first seen cut at both ends (the frustum's far corner, Fig 105) or whose real end leaves
+// the view at the piece's end opens or closes the piece with samples in which its real end was
+// not in view: the series of the pair of real ends then jumps there and is constant elsewhere,
+// and a pair of slowly drifting cut ends can beat it on σ (thesis Figs 76–79, 105: wrong key
+// points from observations left in the wrong sub-interval). [C] Each pair's series is judged on
+// its consistent part: samples at the two ends of the piece standing off the series — beyond
+// four robust σ (1.4826·MAD about the median) and the noise-free tie ε_σ — are left out while at
+// least `min_samples` stay. A drifting series has no such outliers (its ends sit within 2 MAD).
+struct ConsistentRange {
+  std::size_t first = 0, last = 0;  // [first, last)
+  double sigma = 0;                 // the pair's σ over it
+};
+
+ConsistentRange consistent_range(std::span<const PlaneObject> in1, std::span<const PlaneObject> in2,
+                                 const KeyPointPairs& pairs, KeyPoint a, KeyPoint b,
+                                 const RelativePlaneOptions& options) {
+  const std::size_t n = in1.size();
+  std::vector<Eigen::Vector2d> series(n);
+  for (std::size_t t = 0; t < n; ++t)
+    series[t] = key_point_offset(in1[t], in2[t], pairs.length1, pairs.length2, a, b, options.rules.rotate_to_first);
+  const Eigen::Vector2d median = median_of(series);
+  std::vector<double> deviation(n);
+  for (std::size_t t = 0; t < n; ++t) deviation[t] = (series[t] - median).norm();
+  std::vector<double> sorted = deviation;
+  std::ranges::nth_element(sorted, sorted.begin() + n / 2);
+  const double limit = std::max(options.key_point_ties.absolute, 4 * 1.4826 * sorted[n / 2]);
+  ConsistentRange range{0, n, 0};
+  const std::size_t keep = static_cast<std::size_t>(std::max(1, options.growth_phase.min_samples));
+  while (range.last - range.first > keep && deviation[range.first] > limit) ++range.first;
+  while (range.last - range.first > keep && deviation[range.last - 1] > limit) --range.last;
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (std::size_t t = range.first; t < range.last; ++t) mean += series[t];
+  mean /= static_cast<double>(range.last - range.first);
+  double squares = 0;
+  for (std::size_t t = range.first; t < range.last; ++t) squares += (series[t] - mean).squaredNorm();
+  range.sigma = std::sqrt(squares / static_cast<double>(range.last - range.first));
+  return range;
+}
+
+}  // namespace
 
 CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
                                       const RelativePlaneOptions& options, std::optional<int> forced_iteration) {
@@ -27,10 +84,42 @@ CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::s
   const std::optional<SizeInterval> piece =
       get_max_size(sizes, options.growth_phase, options.interval_choice, forced_iteration);
   if (!piece) return result;  // size 0: the reference is invalid [T]
-  const std::span<const PlaneObject> in1 = std::span(both1).subspan(piece->first, piece->samples);
-  const std::span<const PlaneObject> in2 = std::span(both2).subspan(piece->first, piece->samples);
-  const KeyPointPairs pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first);
-  const KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties);
+  std::span<const PlaneObject> in1 = std::span(both1).subspan(piece->first, piece->samples);
+  std::span<const PlaneObject> in2 = std::span(both2).subspan(piece->first, piece->samples);
+  KeyPointPairs pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first);
+  KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties);
+  RltInterval interval = piece->interval;
+  if (options.trim_piece_ends && in1.size() > static_cast<std::size_t>(options.growth_phase.min_samples)) {
+    // The pair with the lowest σ over its consistent part; when that part is not the whole
+    // piece, and its σ is clearly below the whole piece's lowest, the comparison is made again
+    // over it.
+    ConsistentRange best;
+    bool any = false;
+    for (KeyPoint a : {KeyPoint::Left, KeyPoint::Right})
+      for (KeyPoint b : {KeyPoint::Left, KeyPoint::Right}) {
+        const ConsistentRange r = consistent_range(in1, in2, pairs, a, b, options);
+        if (!any || r.sigma < best.sigma) best = r;
+        any = true;
+      }
+    if (best.last - best.first < in1.size() && std::getenv("KPDBG") && in1.back().iteration == std::atoi(std::getenv("KPDBG"))) {
+      fprintf(stderr, "trim [%d..%d] -> [%zu,%zu) sigma %g; original sigmas %g %g %g %g\n", in1.front().iteration, in1.back().iteration, best.first, best.last, best.sigma, pairs.sigma[0][0], pairs.sigma[0][1], pairs.sigma[1][0], pairs.sigma[1][1]);
+      for (KeyPoint a : {KeyPoint::Left, KeyPoint::Right})
+        for (KeyPoint b : {KeyPoint::Left, KeyPoint::Right}) {
+          const ConsistentRange r = consistent_range(in1, in2, pairs, a, b, options);
+          fprintf(stderr, "   pair %d%d range [%zu,%zu) sigma %g\n", (int)a, (int)b, r.first, r.last, r.sigma);
+        }
+      for (std::size_t t = 0; t < in1.size(); ++t) fprintf(stderr, "   t %d len %.4f %.4f\n", in1[t].iteration, in1[t].length(), in2[t].length());
+    }
+    // Only a clearly better pair counts: a tie with the whole piece's lowest σ keeps the piece.
+    const double lowest = pairs.sigma_of(choice.anchor1, choice.anchor2);
+    if (best.last - best.first < in1.size() && !options.key_point_ties.close(best.sigma, lowest)) {
+      in1 = in1.subspan(best.first, best.last - best.first);
+      in2 = in2.subspan(best.first, best.last - best.first);
+      pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first);
+      choice = choose_key_points(pairs, options.key_point_ties);
+      interval = {in1.front().iteration, in1.back().iteration};
+    }
+  }
   result.valid = true;
   result.delta = choice.delta;
   result.length1 = pairs.length1;
@@ -43,8 +132,8 @@ CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::s
   for (KeyPoint a : {KeyPoint::Left, KeyPoint::Right})
     for (KeyPoint b : {KeyPoint::Left, KeyPoint::Right})
       result.pair_delta[a == KeyPoint::Right][b == KeyPoint::Right] = pairs.delta(a, b);
-  result.interval = piece->interval;
-  result.samples = piece->samples;
+  result.interval = interval;
+  result.samples = static_cast<int>(in1.size());
   for (std::size_t k = 0; k < in1.size(); ++k) {  // static in the simulator: the maximum [R, A44]
     result.height1 = std::max(result.height1, in1[k].height());
     result.height2 = std::max(result.height2, in2[k].height());

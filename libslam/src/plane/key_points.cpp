@@ -20,6 +20,12 @@ Eigen::Vector2d in_first_frame(const Eigen::Vector2d& u1, const Eigen::Vector2d&
 
 }  // namespace
 
+Eigen::Vector2d key_point_offset(const PlaneObject& first, const PlaneObject& second, double length1, double length2,
+                                 KeyPoint a, KeyPoint b, bool rotate_to_first) {
+  const Eigen::Vector2d d = assumed_midpoint(second, length2, b) - assumed_midpoint(first, length1, a);
+  return rotate_to_first ? in_first_frame(first.tangent(), d) : d;
+}
+
 bool KeyPointTies::close(double x, double y) const {
   return std::abs(x - y) <= std::max(absolute, relative * std::max(x, y));
 }
@@ -41,14 +47,12 @@ KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<cons
   double cos_sum = 0, sin_sum = 0;
   for (std::size_t t = 0; t < first.size(); ++t) {
     const Eigen::Vector2d u1 = first[t].tangent(), u2 = second[t].tangent();
-    for (int a = 0; a < 2; ++a) {
-      const Eigen::Vector2d m1 = assumed_midpoint(first[t], pairs.length1, kEnds[a]);
+    for (int a = 0; a < 2; ++a)
       for (int b = 0; b < 2; ++b) {
-        const Eigen::Vector2d m2 = assumed_midpoint(second[t], pairs.length2, kEnds[b]);
-        offsets[t][2 * a + b] = rotate_to_first ? in_first_frame(u1, m2 - m1) : Eigen::Vector2d(m2 - m1);
+        offsets[t][2 * a + b] =
+            key_point_offset(first[t], second[t], pairs.length1, pairs.length2, kEnds[a], kEnds[b], rotate_to_first);
         pairs.mean[a][b] += offsets[t][2 * a + b];
       }
-    }
     cos_sum += u1.dot(u2);
     sin_sum += u1.x() * u2.y() - u1.y() * u2.x();
   }

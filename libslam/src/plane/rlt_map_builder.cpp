@@ -19,11 +19,18 @@ std::vector<PlaneObject> stored(const RltPlane& plane) {
 
 // `plane`'s key point at `iteration`: a membership's, when its comparison piece holds the
 // iteration (a key point is valid only in its interval, Rule 19), else CalculateMissingKeyPoints
-// against `others` in order. None when nothing tells.
-KeyPoint key_point_at(const RltPlane& plane, int iteration, const std::vector<const RltPlane*>& others,
-                      const RelativePlaneOptions& options) {
+// against `others` in order. None when nothing tells. (A plane's own lengths cannot extend a
+// piece: an end that leaves the view while the plane keeps shrinking shows no growth switch.)
+// A membership's key point whose comparison piece holds `iteration`; None if there is none.
+KeyPoint membership_key_point_at(const RltPlane& plane, int iteration) {
   for (const RltXPointRef& ref : plane.refs())
     if (ref.valid && ref.key_point != KeyPoint::None && ref.interval.in_interval(iteration)) return ref.key_point;
+  return KeyPoint::None;
+}
+
+KeyPoint key_point_at(const RltPlane& plane, int iteration, const std::vector<const RltPlane*>& others,
+                      const RelativePlaneOptions& options) {
+  if (const KeyPoint kp = membership_key_point_at(plane, iteration); kp != KeyPoint::None) return kp;
   std::vector<std::vector<PlaneObject>> unrolled;
   unrolled.reserve(others.size());
   std::vector<std::span<const PlaneObject>> spans;
@@ -63,7 +70,10 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
   for (const RltXPointLink& link : links) {
     RltXPoint& to = xpoints[link.to];
     PoseMean world_T_to;
-    if (link.first) {
+    if (to.motion_model()) {
+      // Rule 27: a motion-model group stays where the last valid pose put it (spec §5.8 step 2).
+      world_T_to.add(*to.anchor());
+    } else if (link.first) {
       // Rule 4: X0's planes first seen in the earliest iteration were seen from the start pose,
       // so world_T_x0 = world_T_start ∘ P(first observation) ∘ (x0_T_plane)⁻¹, averaged over them.
       int earliest = 0;
@@ -147,7 +157,11 @@ RltPoset RltMapBuilder::get_poset(std::span<const RegisteredObservation> observa
     const MapPlane& entry = map_[o.plane];
     if (!entry.mapped) continue;
     if (std::abs(entry.length - o.observation->length()) <= options.same_length) {
-      add(o, *o.observation);
+      // The same size within τ_len; a known key point still grows it the last bit exactly (an
+      // end cut by less than τ_len would otherwise move the midpoint by half the cut).
+      const KeyPoint kp = options.key_points ? membership_key_point_at(planes[o.plane], o.observation->iteration)
+                                             : KeyPoint::None;
+      add(o, kp == KeyPoint::None ? *o.observation : adjust_size(*o.observation, entry.length, kp));
       continue;
     }
     if (!options.key_points) continue;  // part 1: full-size observations only

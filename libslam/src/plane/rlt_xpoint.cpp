@@ -84,7 +84,7 @@ void RltXPoint::set_chain(std::vector<PlaneId> order) {
 
 void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options) {
   needs_compute_ = false;
-  if (chain_.empty()) return;
+  if (chain_.empty() || motion_model()) return;  // a motion model's RltXMMPoint computes it
   const RltPlaneInterval* within = nullptr;
   if (options.interval_mode == IntervalMode::Group) {
     common_interval(planes, scratch_common_);
@@ -219,6 +219,7 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
       const bool child_resized = std::abs(cc.length - edge.length2) > options.same_length;
       if ((parent_resized && kp_parent == KeyPoint::None) || (child_resized && kp_child == KeyPoint::None))
         child->valid = false;
+
       if (child->valid) {
         const PlanarPose parent_in_edge = reanchor(parent->pose, cp.length, edge.length1, kp_parent);
         child->pose = reanchor(parent_in_edge * delta, edge.length2, cc.length, kp_child);

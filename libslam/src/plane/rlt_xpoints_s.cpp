@@ -55,6 +55,7 @@ RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
   result.groups = xpoints_;
   result.links = links_;
   result.current_group = current_;
+  result.motion_model = active_motion_model();
   return result;
 }
 
@@ -96,13 +97,14 @@ void RltXPointsS::add_planes(const PlaneFrame& frame, RelativePlaneStep& result)
     }
   register_matches(result.local_matches);
 
-  // Rule 11: what no recent RltPlane took is placed with the last pose and matched to the map.
-  if (rules.global_matching && last_valid_pose_.valid) {
+  // Rule 11: what no recent RltPlane took is placed with a pose and matched to the map.
+  if (rules.global_matching && last_valid_pose_.valid && std::ranges::count(assignment_, kNone) > 0) {
+    const PlanarPose world_T_robot = pose_for_global_matching();
     matches_.clear();
     for (int i = 0; i < static_cast<int>(stamped_.size()); ++i)
       if (assignment_[i] == kNone)
-        builder_.match_plane_to_map(i, stamped_[i], last_valid_pose_.world_T_robot, options_.global_match,
-                                    rules.normal_direction, taken_, matches_);
+        builder_.match_plane_to_map(i, stamped_[i], world_T_robot, options_.global_match, rules.normal_direction,
+                                    taken_, matches_);
     register_matches(result.global_matches);
     // Part 2: the re-acquired planes go to the global-match list for ManageXPoints (Rule 21).
   }
@@ -113,6 +115,25 @@ void RltXPointsS::add_planes(const PlaneFrame& frame, RelativePlaneStep& result)
       assignment_[i] = create_plane(stamped_[i]);
       ++result.new_planes;
     }
+}
+
+PlanarPose RltXPointsS::pose_for_global_matching() {
+  // The thesis places them with the previous iteration's pose (4.2.2). Deviation [C]: this
+  // iteration's, from what Rule 1 registered, when that gives one — still computed from this
+  // iteration's observations against the map, never carried forward. While turning the previous
+  // pose lags by a whole step: 1.5° at 28 units moves a wall by 0.7, past the matching bounds,
+  // and the re-seen wall would become a duplicate.
+  if (motion_model_active_) {
+    RltXMMPoint& mm = motion_models_.back();
+    mm.compute(planes_, options_.motion_model);
+    if (const std::optional<PlanarPose> tracked = mm.world_T_robot(iteration_)) return *tracked;
+    return last_valid_pose_.world_T_robot;
+  }
+  registered_.clear();
+  for (std::size_t i = 0; i < stamped_.size(); ++i)
+    if (assignment_[i] != kNone) registered_.push_back({&stamped_[i], assignment_[i]});
+  const RltPoset now = builder_.get_poset(registered_, planes_, options_);
+  return now.valid ? now.world_T_robot : last_valid_pose_.world_T_robot;
 }
 
 void RltXPointsS::register_matches(int& counter) {
@@ -153,6 +174,9 @@ PlaneId RltXPointsS::create_plane(const PlaneObject& observation) {
 }
 
 void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
+  // Rule 29 (spec §5.10.4): leaving a motion model where a group already holds every plane in
+  // view goes back to that group instead of starting a new one.
+  if (motion_model_active_ && options_.rules.return_to_visited_group) switch_to_group_holding_all();
   // Spec §5.5.1 step A, with the bootstrap of A23: the first group waits for two planes.
   if (xpoints_.empty()) bootstrap(result);
   if (!xpoints_.empty()) {
@@ -199,7 +223,9 @@ bool RltXPointsS::bootstrap(RelativePlaneStep& result) {
 bool RltXPointsS::join_group(PlaneId plane) {
   if (current_ == kNone) return false;
   // Rule 7 in the working group, then in its neighbours (spec §5.5.1 A).
+  // A motion-model group never takes a plane (spec §5.5.2).
   const auto fits = [&](XPointId x) {
+    if (xpoints_[x].motion_model()) return false;
     return !options_.rules.common_interval || xpoints_[x].can_add(planes_, planes_[plane], options_.min_common);
   };
   XPointId target = fits(current_) ? current_ : kNone;
@@ -225,7 +251,7 @@ bool RltXPointsS::make_new_xpoint(PlaneId plane, RelativePlaneStep& result) {
       std::vector<PlaneId> chain = linking;
       chain.push_back(plane);
       std::ranges::sort(chain);  // creation order (spec §5.5.3)
-      current_ = create_xpoint(std::move(chain), x, std::move(linking));
+      set_current(create_xpoint(std::move(chain), x, std::move(linking)));
       ++result.groups_created;
       return true;
     }
@@ -255,7 +281,8 @@ bool RltXPointsS::link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<P
   });
   linking.clear();
   if (candidates_.empty()) return false;
-  if (!options_.rules.two_linking_planes) {
+  // A motion-model group links through its one plane (spec §5.5.3, special case) [T].
+  if (!options_.rules.two_linking_planes || xpoints_[from].motion_model()) {
     linking.push_back(candidates_.front());
     return true;
   }
@@ -307,19 +334,99 @@ void RltXPointsS::upkeep_unassigned() {
   });
 }
 
+void RltXPointsS::set_current(XPointId x) {
+  // A motion model lasts while its group is the current one (spec §5.10.4).
+  if (motion_model_active_ && x != motion_models_.back().xpoint()) {
+    motion_model_active_ = false;
+    motion_models_.back().end(iteration_);
+  }
+  current_ = x;
+}
+
+bool RltXPointsS::switch_to_group_holding_all() {
+  // Rule 29 (CheckForLoopClosing, own memberships): with two or more planes in view, a group
+  // that holds every one of them becomes current; the lowest id wins a tie [R].
+  if (stamped_.size() < 2) return false;
+  for (const RltXPoint& x : xpoints_) {
+    if (x.motion_model()) continue;
+    const bool holds_all =
+        std::ranges::all_of(assignment_, [&](PlaneId p) { return planes_[p].ref(x.id()) != nullptr; });
+    if (holds_all) {
+      set_current(x.id());
+      return true;
+    }
+  }
+  return false;
+}
+
 void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
   for (RltXPoint& x : xpoints_)
-    if (x.needs_compute()) {
+    if (x.needs_compute() && !x.motion_model()) {
       x.compute(planes_, options_);
       ++result.groups_computed;
     }
+  // A motion model re-runs its track over its plane's observations (spec §5.10.3).
+  for (RltXMMPoint& mm : motion_models_) {
+    RltXPoint& x = xpoints_[mm.xpoint()];
+    if (!x.needs_compute()) continue;
+    if (!mm.ended()) mm.compute(planes_, options_.motion_model);  // an ended track is frozen
+    x.compute(planes_, options_);  // only clears the flag
+    ++result.groups_computed;
+  }
 }
 
 void RltXPointsS::get_poset() {
   registered_.clear();
   for (std::size_t i = 0; i < stamped_.size(); ++i) registered_.push_back({&stamped_[i], assignment_[i]});
   pose_ = builder_.get_poset(registered_, planes_, options_);
-  if (pose_.valid) last_valid_pose_ = pose_;
+  if (!pose_.valid && !motion_model_active_) check_for_motion_model();
+  // While a motion model is active its track is the pose (spec §5.10.3), also for Rule 11.
+  if (motion_model_active_) {
+    const std::optional<PlanarPose> tracked = motion_models_.back().world_T_robot(iteration_);
+    pose_ = {tracked.value_or(PlanarPose{}), tracked.has_value(), tracked ? 1 : 0};
+  }
+  if (pose_.valid) {
+    last_valid_pose_ = pose_;
+    last_valid_iteration_ = iteration_;
+    no_pose_count_ = 0;
+  }
+}
+
+void RltXPointsS::check_for_motion_model() {
+  // Rule 26 (CheckForMotionModel): a few iterations without a pose within a short window.
+  if (no_pose_count_ == 0 || iteration_ - no_pose_start_ > options_.motion_model.start_window) {
+    no_pose_count_ = 0;
+    no_pose_start_ = iteration_;
+  }
+  ++no_pose_count_;
+  if (!options_.key_points || !options_.rules.motion_model || !last_valid_pose_.valid) return;
+  if (no_pose_count_ < options_.motion_model.start_after) return;
+  // [R, spec §5.10.2] exactly one plane in view, and it is on the map; blind or lost otherwise.
+  if (assignment_.size() != 1 || !builder_.map()[assignment_.front()].mapped) return;
+  create_motion_model(assignment_.front());
+}
+
+void RltXPointsS::create_motion_model(PlaneId plane) {
+  // CreateMotionModelXPoint (Rule 27): a new group holding the one plane, linked from the
+  // current group through it and fixed at the last valid pose. Entering a motion model always
+  // makes a new one [T].
+  const XPointId id = static_cast<XPointId>(xpoints_.size());
+  planes_[plane].join(id, iteration_);
+  RltXPoint& x = xpoints_.emplace_back(id, iteration_, std::vector<PlaneId>{plane});
+  x.set_anchor(last_valid_pose_.world_T_robot);
+  links_.push_back({current_, id, {plane}, false, iteration_});
+  if (current_ != kNone) {
+    xpoints_[current_].add_adjacent(id);
+    xpoints_[id].add_adjacent(current_);
+  }
+  motion_models_.emplace_back(id, plane, last_valid_pose_.world_T_robot, last_valid_iteration_,
+                              builder_.map()[plane].plane);
+  motion_model_active_ = true;
+  current_ = id;
+  // Computed and placed at once, so this iteration already has its pose.
+  motion_models_.back().compute(planes_, options_.motion_model);
+  xpoints_[id].compute(planes_, options_);
+  builder_.build_map(links_, xpoints_, planes_, world_T_start_, options_);
 }
 
 }  // namespace relslam::plane

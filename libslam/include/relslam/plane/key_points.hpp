@@ -50,6 +50,12 @@ struct KeyPointPairs {
   static int index(KeyPoint k) { return k == KeyPoint::Right ? 1 : 0; }
 };
 
+// One sample of pair (a, b)'s series (Rule 13): the offset from the first plane's assumed midpoint
+// at length1 from key point a to the second's at length2 from key point b, in the first plane's
+// frame turned to 0° (raw with `rotate_to_first` false).
+Eigen::Vector2d key_point_offset(const PlaneObject& first, const PlaneObject& second, double length1, double length2,
+                                 KeyPoint a, KeyPoint b, bool rotate_to_first = true);
+
 // The four series of Rule 13 over observations `first[i]`, `second[i]` of the same iteration
 // (equal sizes; invalid_argument otherwise). Empty input gives samples = 0. With
 // `rotate_to_first` false (Rule 3 off) the offsets are the raw differences m₂ − m₁ (Fig 66).

@@ -9,6 +9,7 @@
 #include "relslam/plane/key_points.hpp"
 #include "relslam/plane/plane_object.hpp"
 
+#include <numbers>
 #include <string_view>
 #include <vector>
 
@@ -57,6 +58,26 @@ struct RuleSwitches {
   // Rule 12: a new group links to the first suitable group of a traversal of the whole group
   // graph from the working group. Off: only the working group is tried.
   bool traverse_to_link = true;
+  // Rules 23–27: with one partial plane in view, a motion-model group carries the pose and grows
+  // the plane (needs key_points). Off: the pose is lost until a second plane is seen.
+  bool motion_model = true;
+  // Rule 29: when two or more planes are in view during a motion model and a group holds them
+  // all, that group becomes current again. Off: the motion model ends only by a new group.
+  bool return_to_visited_group = true;
+};
+
+// The motion model (Rules 23–27, thesis 4.3.6; spec §5.10, §5.14).
+struct MotionModelOptions {
+  // Rule 26: it starts after this many iterations without a pose [R, N_mm_on] ...
+  int start_after = 3;
+  // ... counted within a window of this many iterations, else the count starts again [R, W_mm].
+  int start_window = 10;
+  // Rule 25: when the robot's heading is within this angle of the plane's direction the
+  // along-plane motion is dropped (x motion only) [R, α_par = 60°].
+  double parallel_angle_rad = 60.0 * std::numbers::pi / 180.0;
+  // Rule 23: an end grows the plane only when it comes into view this far beyond the known
+  // extent, units. 0 is the thesis (no filter: noise may over-grow a plane, Fig 88) [R: 0.02].
+  double grow_threshold = 0.02;
 };
 
 struct RelativePlaneOptions {
@@ -89,6 +110,10 @@ struct RelativePlaneOptions {
   // Rule 18: the comparison interval split where either plane switches between growing and
   // shrinking (GetMaxSize) [R, spec §5.14 w_ma, h, n_min_cmp].
   GrowthPhaseBounds growth_phase;
+  // Rule 18 refined: samples at either end of a growth-phase piece whose key-point offsets stand
+  // off the rest of the series (a cut end taken for a static one) are left out of the average
+  // [C: on; off is the thesis's plain split].
+  bool trim_piece_ends = true;
   // Iterations a pair is compared over (Figs 74/75) [T: Pair].
   IntervalMode interval_mode = IntervalMode::Pair;
   // Which growth-phase piece a pair is compared over: Rule 18's most iterations, or the
@@ -102,6 +127,9 @@ struct RelativePlaneOptions {
   // full-size midpoints only, which stays reproducible [T: on in the thesis; C: off by default
   // until part 2 is complete].
   bool key_points = false;
+  // Part 3 (thesis 4.3.6): the motion model that carries the pose through one partial plane.
+  // Runs with key_points only [C]: it grows planes from their static end.
+  MotionModelOptions motion_model;
   RuleSwitches rules;
 };
 
@@ -141,6 +169,21 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
   f.field("normal_direction", r.normal_direction, "Rule 10: a plane matches only with its normal the same way");
   f.field("global_matching", r.global_matching, "Rule 11: unmatched observations are matched against the map");
   f.field("traverse_to_link", r.traverse_to_link, "Rule 12: link a new group through a traversal of the group graph");
+  f.field("motion_model", r.motion_model, "Rules 23-27: a motion model carries the pose through one partial plane");
+  f.field("return_to_visited_group", r.return_to_visited_group,
+          "Rule 29: leaving a motion model where a group holds every plane in view returns to it");
+}
+
+// The scenario keys of MotionModelOptions (relative_plane.motion_model.*).
+void describe(OptionsOf<MotionModelOptions> auto& m, auto& f) {
+  f.field("start_after", m.start_after, "Rule 26: starts after this many iterations without a pose", at_least(1));
+  f.field("start_window", m.start_window, "... counted within this many iterations",
+          at_least(m.start_after, "start_after"));
+  f.degrees("parallel_angle_deg", m.parallel_angle_rad,
+            "Rule 25: heading within this of the plane's direction: motion towards it only, degrees", at_least(0.0),
+            at_most(90.0));
+  f.field("grow_threshold", m.grow_threshold, "Rule 23: an end grows the plane past this margin, units (0: thesis)",
+          at_least(0.0));
 }
 
 // The scenario keys of KeyPointTies (relative_plane.key_point_ties.*).
@@ -176,6 +219,8 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.field("same_length", o.same_length, "two lengths within this are the same size, units", at_least(0.0));
   f.nested("key_point_ties", o.key_point_ties);
   f.nested("growth_phase", o.growth_phase);
+  f.field("trim_piece_ends", o.trim_piece_ends,
+          "Rule 18 refined: drop samples at a piece's ends whose key-point offset stands off the rest [C]");
   f.choice("interval_mode", o.interval_mode, "iterations a pair is compared over (Figs 74/75): pair or group",
            kIntervalModes);
   f.choice("interval_choice", o.interval_choice,
@@ -184,6 +229,7 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
            kChainOrders);
   f.field("key_points", o.key_points,
           "part 2: key points, size correction, partial planes in the pose (Rules 13-19, 28) [C: off]");
+  f.nested("motion_model", o.motion_model);
   f.nested("rules", o.rules);
 }
 

@@ -9,6 +9,7 @@
 #include "relslam/plane/rlt_plane_compare.hpp"
 #include "relslam/plane/rlt_plane_interval.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace relslam::plane {
@@ -55,6 +56,12 @@ class RltXPoint {
   bool needs_compute() const { return needs_compute_; }
   void mark_changed() { needs_compute_ = true; }
 
+  // A motion-model group (RltXMMPoint, thesis 4.3.6): its frame is fixed at the last valid pose
+  // (Rule 27), it never takes a plane (spec §5.5.2) and its RltXMMPoint computes it.
+  bool motion_model() const { return anchor_.has_value(); }
+  const std::optional<PlanarPose>& anchor() const { return anchor_; }
+  void set_anchor(const PlanarPose& world_T_xpoint) { anchor_ = world_T_xpoint; }
+
   // Placed by RltMapBuilder::build_map: world_T_xpoint.
   const PlanarPose& world_pose() const { return world_pose_; }
   bool placed() const { return placed_; }
@@ -72,6 +79,7 @@ class RltXPoint {
   bool needs_compute_ = true;
   PlanarPose world_pose_;
   bool placed_ = false;
+  std::optional<PlanarPose> anchor_;
   void compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
                                const RltPlaneInterval* within);
 

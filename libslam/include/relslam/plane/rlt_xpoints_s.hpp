@@ -12,6 +12,7 @@
 #include "relslam/plane/rlt_plane_interval.hpp"
 #include "relslam/plane/rlt_xpoint.hpp"
 #include "relslam/plane/rlt_xpoint_link.hpp"
+#include "relslam/plane/rlt_xmm_point.hpp"
 
 #include <span>
 #include <vector>
@@ -46,6 +47,8 @@ struct RelativePlaneStep {
   int groups_created = 0;
   int planes_grouped = 0;  // unassigned planes that joined or started a group
   int groups_computed = 0;
+  // The motion model carrying the pose this iteration (Rules 23–27), or nullptr.
+  const RltXMMPoint* motion_model = nullptr;
   PlaneStepTimings timings;
 };
 
@@ -68,11 +71,17 @@ class RltXPointsS {
   const std::vector<PlaneId>& unassigned() const { return unassigned_; }
   const RltPoset& pose() const { return pose_; }
   XPointId current_xpoint() const { return current_; }
+  // Every motion model ever started, in order; the active one, if any, is last.
+  const std::vector<RltXMMPoint>& motion_models() const { return motion_models_; }
+  const RltXMMPoint* active_motion_model() const {
+    return motion_model_active_ ? &motion_models_.back() : nullptr;
+  }
   const RelativePlaneOptions& options() const { return options_; }
 
  private:
   void start_iteration(int iteration);
   void add_planes(const PlaneFrame& frame, RelativePlaneStep& result);
+  PlanarPose pose_for_global_matching();
   void register_matches(int& counter);
   void add_to_plane(PlaneId plane, const PlaneObject& observation);
   PlaneId create_plane(const PlaneObject& observation);
@@ -83,6 +92,10 @@ class RltXPointsS {
   bool link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<PlaneId>& linking);
   XPointId create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking);
   void upkeep_unassigned();
+  void set_current(XPointId x);
+  bool switch_to_group_holding_all();
+  void check_for_motion_model();
+  void create_motion_model(PlaneId plane);
   void compute_xpoints(RelativePlaneStep& result);
   void get_poset();
 
@@ -97,6 +110,11 @@ class RltXPointsS {
   RltMapBuilder builder_;
   RltPoset pose_;
   RltPoset last_valid_pose_;  // Rule 11 places observations with it [R, spec §5.9]
+  int last_valid_iteration_ = 0;
+  std::vector<RltXMMPoint> motion_models_;
+  bool motion_model_active_ = false;  // the last of motion_models_ carries the pose
+  int no_pose_count_ = 0;             // Rule 26: iterations without a pose ...
+  int no_pose_start_ = 0;             // ... since this one
   XPointId current_ = kNone;  // the current group; the working group while managing
   int iteration_ = 0;
   bool started_ = false;
