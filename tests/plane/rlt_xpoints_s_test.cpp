@@ -308,10 +308,9 @@ TEST(RltXPointsS, Rule12LinkPlacesTheNewPlaneExactly) {
   EXPECT_TRUE(slam.map()[kQ].mapped);
 }
 
-// Spec §5.5.6 wants Rule 22's GetBestXPoint (the group with most planes charted this iteration);
-// that charting is part 2 (thesis 4.3.5 ff.). Until it is built the current group is the one
-// last created (spec §5.5.1 [R]: a new group becomes the working group), and it stays current
-// when the robot is back among an older group's planes only.
+// Part 1 (options.key_points off) has no Rule 22 charting (thesis 4.3.5 ff.): the current group
+// is the one last created (spec §5.5.1 [R]: a new group becomes the working group), and it stays
+// current when the robot is back among an older group's planes only.
 TEST(RltXPointsS, CurrentGroupIsTheGroupLastCreated) {
   const std::vector<PlaneFrame> frames = scripted_frames(kShortLivedGroup, 71);
   RltXPointsS slam;
@@ -344,6 +343,50 @@ TEST(RltXPointsS, HallwayReturnLegKeepsTheLastGroupCurrent) {
   EXPECT_EQ(slam.current_xpoint(), at_turn);
   EXPECT_EQ(slam.current_xpoint(), static_cast<XPointId>(slam.xpoints().size()) - 1);
   EXPECT_NE(slam.current_xpoint(), 0);
+}
+
+// Rule 22 (parts 2 and 3, options.key_points): the current group is the one holding most of the
+// planes in view (RltXPointChart). Back among X0's planes at the end of the return leg it is X0,
+// not the group last started; with the rule off the last one stays current.
+TEST(RltXPointsS, Rule22MakesTheGroupHoldingThePlanesInViewCurrent) {
+  const test::PlaneRun world = hallway_there_and_back();
+  RelativePlaneOptions options;
+  options.key_points = true;
+  RltXPointsS slam(options, world.world_T_robot.front());
+  RelativePlaneStep last;
+  for (const PlaneFrame& frame : world.frames) last = slam.step(frame);
+  std::vector<int> held(slam.xpoints().size(), 0);
+  for (PlaneId p : last.assignment)
+    for (const RltXPointRef& ref : slam.planes()[p].refs()) ++held[ref.xpoint];
+  EXPECT_EQ(held[slam.current_xpoint()], *std::ranges::max_element(held));
+  EXPECT_NE(slam.current_xpoint(), static_cast<XPointId>(slam.xpoints().size()) - 1);
+
+  options.rules.current_group_chart = false;
+  RltXPointsS off(options, world.world_T_robot.front());
+  for (const PlaneFrame& frame : world.frames) off.step(frame);
+  EXPECT_EQ(off.current_xpoint(), static_cast<XPointId>(off.xpoints().size()) - 1);
+}
+
+// Rule 21 (options.key_points): the walls global matching re-acquires on the return leg start
+// groups of their own — more groups — and the noise-free map stays exact; the cap of
+// memberships (K_xrefs) limits how many.
+TEST(RltXPointsS, Rule21GivesReacquiredPlanesGroupsOfTheirOwn) {
+  const test::PlaneRun world = hallway_there_and_back();
+  RelativePlaneOptions options;
+  options.key_points = true;
+  RelativePlaneOptions off = options;
+  off.rules.regroup_reacquired = false;
+  RelativePlaneOptions capped = options;
+  capped.regroup_memberships = 1;  // every re-acquired plane already has one group
+  const RunSummary with = run(test::hallway_walls(), world, options);
+  const RunSummary without = run(test::hallway_walls(), world, off);
+  const RunSummary none = run(test::hallway_walls(), world, capped);
+  EXPECT_GT(with.global_matches, 0);
+  EXPECT_GT(with.groups, without.groups);
+  EXPECT_EQ(none.groups, without.groups);
+  EXPECT_LT(with.worst_pose, 1e-9);
+  EXPECT_LT(with.worst_map, 1e-9);
+  EXPECT_EQ(with.rlt_planes, with.walls_seen);
 }
 
 TEST(RltXPointsS, SameInputGivesTheSameRun) {

@@ -14,6 +14,10 @@ std::string_view to_string(IntervalChoice choice) {
   return choice == IntervalChoice::MostIterations ? "most_iterations" : "largest_size";
 }
 
+std::string_view to_string(Rule21Order order) {
+  return order == Rule21Order::Walkthrough ? "walkthrough" : "new_group_first";
+}
+
 std::string_view to_string(ChainOrder order) { return order == ChainOrder::Creation ? "creation" : "reversed"; }
 
 std::vector<OptionIssue> check(const RelativePlaneOptions& o) { return check_fields(o); }

@@ -71,7 +71,7 @@ void RltXPointsS::start_iteration(int iteration) {
     return stale;
   });
   taken_.assign(planes_.size(), 0);
-  // Part 2: clear RltXPointChart and the global-match list here (Rules 21, 22).
+  reacquired_now_.clear();
 }
 
 void RltXPointsS::add_planes(const PlaneFrame& frame, RelativePlaneStep& result) {
@@ -105,8 +105,7 @@ void RltXPointsS::add_planes(const PlaneFrame& frame, RelativePlaneStep& result)
       if (assignment_[i] == kNone)
         builder_.match_plane_to_map(i, stamped_[i], world_T_robot, options_.global_match, rules.normal_direction,
                                     taken_, matches_);
-    register_matches(result.global_matches);
-    // Part 2: the re-acquired planes go to the global-match list for ManageXPoints (Rule 21).
+    register_matches(result.global_matches, &reacquired_now_);
   }
 
   // Anything left is a plane not seen before: a new RltPlane in the unassigned list.
@@ -136,7 +135,7 @@ PlanarPose RltXPointsS::pose_for_global_matching() {
   return now.valid ? now.world_T_robot : last_valid_pose_.world_T_robot;
 }
 
-void RltXPointsS::register_matches(int& counter) {
+void RltXPointsS::register_matches(int& counter, std::vector<PlaneId>* registered) {
   // Best score first across all pairs (spec §5.4.1: at most one observation per RltPlane per
   // iteration); ties in input order, then creation order, so runs are deterministic.
   std::ranges::sort(matches_, [](const PlaneMatch& x, const PlaneMatch& y) {
@@ -148,6 +147,7 @@ void RltXPointsS::register_matches(int& counter) {
     assignment_[m.observation] = m.plane;
     add_to_plane(m.plane, stamped_[m.observation]);
     ++counter;
+    if (registered != nullptr) registered->push_back(m.plane);
   }
 }
 
@@ -160,7 +160,6 @@ void RltXPointsS::add_to_plane(PlaneId plane, const PlaneObject& observation) {
     in_recent_[plane] = 1;
     recent_.push_back(plane);
   }
-  // Part 2: RltXPointChart::ChartXPoints(plane) (Rule 22).
 }
 
 PlaneId RltXPointsS::create_plane(const PlaneObject& observation) {
@@ -191,10 +190,53 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
     }
     unassigned_.resize(kept);
   }
-  // Part 2: step B, the globally matched planes (Rules 21, 29, 37).
+  // Step B: the planes global matching re-acquired (Rule 21).
+  if (options_.key_points && options_.rules.regroup_reacquired && !xpoints_.empty()) regroup_reacquired(result);
   upkeep_unassigned();
-  // Part 2: step D picks the current group by charting (Rule 22). Until then the working
-  // group stays current — the group last started — as before Rule 22 in the thesis (4.3.5).
+  // Step D: the current group by charting (Rule 22); off, the group last started stays current,
+  // as before Rule 22 in the thesis (4.3.5).
+  if (options_.key_points && options_.rules.current_group_chart) chart_current_group();
+}
+
+void RltXPointsS::regroup_reacquired(RelativePlaneStep& result) {
+  // Rule 21 (spec §5.5.4). A re-acquired plane shares no recent iterations with any group yet,
+  // so it waits, like an unassigned plane, until Rule 7 or linking can take it [R]: it leaves
+  // the list when grouped, unseen for unseen_drop iterations, or after unassigned_drop.
+  for (PlaneId g : reacquired_now_)
+    if (std::ranges::none_of(reacquired_, [&](const auto& r) { return r.first == g; }))
+      reacquired_.emplace_back(g, iteration_);
+  std::erase_if(reacquired_, [&](const std::pair<PlaneId, int>& r) {
+    const auto [g, since] = r;
+    const RltPlane& plane = planes_[g];
+    if (iteration_ - plane.last_iteration() > options_.unseen_drop || iteration_ - since > options_.unassigned_drop)
+      return true;
+    if (current_ != kNone && plane.ref(current_) != nullptr) return true;  // already where it is seen
+    const bool may_start = static_cast<int>(plane.refs().size()) < options_.regroup_memberships;
+    const bool grouped = options_.rule21_order == Rule21Order::Walkthrough
+                             ? join_group(g) || (may_start && make_new_xpoint(g, result))
+                             : (may_start && make_new_xpoint(g, result)) || join_group(g);
+    if (grouped) ++result.planes_grouped;
+    return grouped || !may_start;
+  });
+}
+
+void RltXPointsS::chart_current_group() {
+  // RltXPointChart::GetBestXPoint (Rule 22, spec §5.5.6): the group holding most of the planes
+  // seen this iteration; a tie keeps the current group, other ties the lowest id [R]. A motion
+  // model stays current until it ends (Rules 26, 29).
+  if (motion_model_active_ || xpoints_.empty()) return;
+  chart_.assign(xpoints_.size(), 0);
+  for (PlaneId p : assignment_)
+    for (const RltXPointRef& ref : planes_[p].refs())
+      if (!xpoints_[ref.xpoint].motion_model()) ++chart_[ref.xpoint];
+  XPointId best = current_;
+  int best_count = current_ != kNone ? chart_[current_] : 0;
+  for (XPointId x = 0; x < static_cast<XPointId>(xpoints_.size()); ++x)
+    if (chart_[x] > best_count) {
+      best = x;
+      best_count = chart_[x];
+    }
+  if (best != current_) set_current(best);
 }
 
 bool RltXPointsS::bootstrap(RelativePlaneStep& result) {
@@ -225,7 +267,7 @@ bool RltXPointsS::join_group(PlaneId plane) {
   // Rule 7 in the working group, then in its neighbours (spec §5.5.1 A).
   // A motion-model group never takes a plane (spec §5.5.2).
   const auto fits = [&](XPointId x) {
-    if (xpoints_[x].motion_model()) return false;
+    if (xpoints_[x].motion_model() || planes_[plane].ref(x) != nullptr) return false;
     return !options_.rules.common_interval || xpoints_[x].can_add(planes_, planes_[plane], options_.min_common);
   };
   XPointId target = fits(current_) ? current_ : kNone;

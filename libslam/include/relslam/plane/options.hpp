@@ -21,6 +21,12 @@ enum class IntervalMode : unsigned char {
   Group,  // ... and inside the group's common interval: less map noise, but can be very short
 };
 
+// Rule 21's order of attempts for a re-acquired plane (spec §5.5.4, A25).
+enum class Rule21Order : unsigned char {
+  Walkthrough,    // the current group, its neighbours, then a new group (thesis 4.5) [T]
+  NewGroupFirst,  // a new group first, as the rule was first stated (4.3.5) [T]
+};
+
 // The order of a new group's comparison chain (Rule 2: a noise-free map does not depend on it;
 // spec E31 checks that by running both).
 enum class ChainOrder : unsigned char {
@@ -61,6 +67,14 @@ struct RuleSwitches {
   // Rules 23–27: with one partial plane in view, a motion-model group carries the pose and grows
   // the plane (needs key_points). Off: the pose is lost until a second plane is seen.
   bool motion_model = true;
+  // Rule 21: a plane re-acquired by global matching (Rule 11) joins the current group or a
+  // neighbour if Rule 7 lets it, else starts a new group of its own — a fresh interval to be
+  // compared over, so a plane re-seen whole is computed whole ("plane 5", Figs 80/81). Off:
+  // it stays in the groups it had.
+  bool regroup_reacquired = true;
+  // Rule 22: the current group is the one holding most of the planes seen this iteration
+  // (RltXPointChart). Off: the group last started stays current.
+  bool current_group_chart = true;
   // Rule 29: when two or more planes are in view during a motion model and a group holds them
   // all, that group becomes current again. Off: the motion model ends only by a new group.
   bool return_to_visited_group = true;
@@ -127,8 +141,13 @@ struct RelativePlaneOptions {
   // full-size midpoints only, which stays reproducible [T: on in the thesis; C: off by default
   // until part 2 is complete].
   bool key_points = false;
+  // Rule 21: a re-acquired plane starts a new group only while it belongs to fewer groups than
+  // this [R, K_xrefs: the thesis's "a few"]; the order of the attempts is rule21_order.
+  int regroup_memberships = 2;
+  Rule21Order rule21_order = Rule21Order::Walkthrough;
   // Part 3 (thesis 4.3.6): the motion model that carries the pose through one partial plane.
-  // Runs with key_points only [C]: it grows planes from their static end.
+  // Runs with key_points only [C]: it grows planes from their static end. So do Rules 21 and 22
+  // (part 2): key_points switches the algorithm from part 1 to parts 2 and 3.
   MotionModelOptions motion_model;
   RuleSwitches rules;
 };
@@ -137,6 +156,8 @@ constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Gro
 std::string_view to_string(IntervalMode mode);  // "pair", "group"
 constexpr IntervalChoice kIntervalChoices[] = {IntervalChoice::MostIterations, IntervalChoice::LargestSize};
 std::string_view to_string(IntervalChoice choice);  // "most_iterations", "largest_size"
+constexpr Rule21Order kRule21Orders[] = {Rule21Order::Walkthrough, Rule21Order::NewGroupFirst};
+std::string_view to_string(Rule21Order order);  // "walkthrough", "new_group_first"
 constexpr ChainOrder kChainOrders[] = {ChainOrder::Creation, ChainOrder::Reversed};
 std::string_view to_string(ChainOrder order);  // "creation", "reversed"
 
@@ -169,6 +190,10 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
   f.field("normal_direction", r.normal_direction, "Rule 10: a plane matches only with its normal the same way");
   f.field("global_matching", r.global_matching, "Rule 11: unmatched observations are matched against the map");
   f.field("traverse_to_link", r.traverse_to_link, "Rule 12: link a new group through a traversal of the group graph");
+  f.field("regroup_reacquired", r.regroup_reacquired,
+          "Rule 21: a plane re-acquired by global matching joins or starts a group of its own");
+  f.field("current_group_chart", r.current_group_chart,
+          "Rule 22: the current group is the one holding most planes in view");
   f.field("motion_model", r.motion_model, "Rules 23-27: a motion model carries the pose through one partial plane");
   f.field("return_to_visited_group", r.return_to_visited_group,
           "Rule 29: leaving a motion model where a group holds every plane in view returns to it");
@@ -229,6 +254,10 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
            kChainOrders);
   f.field("key_points", o.key_points,
           "part 2: key points, size correction, partial planes in the pose (Rules 13-19, 28) [C: off]");
+  f.field("regroup_memberships", o.regroup_memberships,
+          "Rule 21: a re-acquired plane starts a new group only with fewer memberships than this", at_least(1));
+  f.choice("rule21_order", o.rule21_order,
+           "Rule 21: walkthrough (current, neighbours, new group) or new_group_first", kRule21Orders);
   f.nested("motion_model", o.motion_model);
   f.nested("rules", o.rules);
 }

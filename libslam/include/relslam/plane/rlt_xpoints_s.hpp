@@ -15,6 +15,7 @@
 #include "relslam/plane/rlt_xmm_point.hpp"
 
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace relslam::plane {
@@ -82,7 +83,7 @@ class RltXPointsS {
   void start_iteration(int iteration);
   void add_planes(const PlaneFrame& frame, RelativePlaneStep& result);
   PlanarPose pose_for_global_matching();
-  void register_matches(int& counter);
+  void register_matches(int& counter, std::vector<PlaneId>* registered = nullptr);
   void add_to_plane(PlaneId plane, const PlaneObject& observation);
   PlaneId create_plane(const PlaneObject& observation);
   void manage_xpoints(RelativePlaneStep& result);
@@ -92,6 +93,8 @@ class RltXPointsS {
   bool link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<PlaneId>& linking);
   XPointId create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking);
   void upkeep_unassigned();
+  void regroup_reacquired(RelativePlaneStep& result);
+  void chart_current_group();
   void set_current(XPointId x);
   bool switch_to_group_holding_all();
   void check_for_motion_model();
@@ -105,6 +108,8 @@ class RltXPointsS {
   std::vector<RltXPoint> xpoints_;
   std::vector<RltXPointLink> links_;
   std::vector<PlaneId> unassigned_;  // RltPlaneList, creation order
+  // Rule 21: planes global matching re-acquired, with the iteration, until they are grouped.
+  std::vector<std::pair<PlaneId, int>> reacquired_;
   std::vector<PlaneId> recent_;      // RltPlanes seen within local_match.max_iteration_gap
   std::vector<char> in_recent_;      // per RltPlane: in recent_
   RltMapBuilder builder_;
@@ -124,6 +129,8 @@ class RltXPointsS {
   std::vector<PlaneId> assignment_;
   std::vector<char> taken_;  // per RltPlane: registered this iteration
   std::vector<PlaneMatch> matches_;
+  std::vector<PlaneId> reacquired_now_;  // Rule 11 this iteration
+  std::vector<int> chart_;               // Rule 22: planes in view per group
   std::vector<RegisteredObservation> registered_;
   std::vector<char> visited_;
   std::vector<XPointId> stack_;
