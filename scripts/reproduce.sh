@@ -67,7 +67,7 @@ set_each() { local a=(); for kv in "$@"; do a+=(--set "$kv"); done; echo "${a[@]
 
 echo "reproduce: thesis Chapters 4 and 6 into $out ($([ $quick -eq 1 ] && echo quick || echo full) mode); log in $log"
 
-# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01, E03-E06, E21).
+# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01, E03-E06, E10, E21, E31).
 # Seconds each, so quick mode runs them in full; the variant files go through sweep.
 step p-e01-invariance    run p-e01-invariance p-e01-invariance
 step p-four-planes       run p-four-planes p-four-planes
@@ -77,6 +77,8 @@ step p-e05-edge-on       sweep p-e05-edge-on
 step p-e06-rule12        sweep p-e06-rule12
 step p-e31-chain-order   sweep p-e31-chain-order
 step p-office            run p-office p-office
+step p-e21-completed-map run p-e21-completed-map p-e21-completed-map
+step p-e10-rule21-22     sweep p-e10-rule21-22
 step p-room              run p-room p-room
 
 # 6.5 - 6.6: the figure eight, its variants and the run-time experiments.

@@ -250,6 +250,31 @@ def e06(run):
     return " — ".join(cells)
 
 
+def e21(run):
+    """A completed map: walls mapped, pose exactness and the key points claimed, noise-free."""
+    s = plane_summary(run)
+    kp = run.summary(["key_point_accuracy", "wrong_key_point_iterations"])[fg.PLANE]
+    return (f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, {s['duplicates']:.0f} duplicate(s) "
+            f"(a wall first seen in part, kept apart as in Fig 90), max position error "
+            f"{s['max_position_error']:.2g}, pose valid {100 * s['pose_valid_fraction']:.1f} % of iterations; "
+            f"key points right {100 * kp['key_point_accuracy']:.2f} %, "
+            f"{kp['wrong_key_point_iterations']:.0f} iterations with a wrong one")
+
+
+def e10(run):
+    """Rule 21's group counts and Rule 22's run time while revisiting (after the first loop)."""
+    cells, times = [], {}
+    for prefix in ("rule21_off", "rule21_uncapped", "rule21_capped", "rule22_off"):
+        name, folder = variant_folder(run, prefix)
+        groups = rp.read_table(run.file(folder, fg.PLANE, "groups.csv"), ["group_id"])["group_id"]
+        t = rp.read_table(run.file(folder, fg.PLANE, "iterations.csv"), ["iteration", "runtime_ms"])
+        revisit = t["runtime_ms"][t["iteration"] >= 0.8 * len(t["iteration"])]
+        times[prefix] = float(np.sum(revisit))
+        cells.append(f"{name}: {len(groups)} groups")
+    ratio = times["rule22_off"] / times["rule21_capped"] if times["rule21_capped"] > 0 else float("nan")
+    return ("; ".join(cells) + f"; time over the last 20 % of iterations, Rule 22 off / on: {ratio:.2f}")
+
+
 def e31(run):
     """Rule 2: the maps of chains in creation order and reversed, plane by plane."""
     maps = []
@@ -302,6 +327,10 @@ CLAIMS = [
      P(e05, prefix="c_")),
     ("E06 Rule 12 on vs off", "off: X8 links to the short-lived X7; on: to the better X6; map correct (4.3.2)",
      ["p-e06-rule12"], e06),
+    ("E21 completed map, noise-free (Fig 67)", "a completed map; without noise the maps are visually perfect "
+     "(4.2.2, 4.6)", ["p-e21-completed-map"], e21),
+    ("E10 Rules 21 and 22 on Map D (Fig 82)", "21 groups without Rule 21, 30 with it; a cap reduces the count; "
+     "Rule 22 about 5 % less time while revisiting (4.3.5)", ["p-e10-rule21-22"], e10),
     ("E31 Rule 2: chain order, noise-free", "the same map whatever the chain order (spec E31: <= 1e-9)",
      ["p-e31-chain-order"], e31),
 ]

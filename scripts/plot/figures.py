@@ -754,7 +754,7 @@ FIGURES = sorted([
     Figure(64, "four planes problem: Map A, true walls and mapped planes, E03", ("p-four-planes",), map_overlay),
     Figure(65, "the RltPlane structure (also paper Fig. 1)", ("p-four-planes",), rltplane_table),
     Figure(66, "invariance issue, E01 (also paper Fig. 3)", ("p-e01-invariance",), invariance_scatter),
-    Figure(67, "completed map of Map D with its groups (also paper Fig. 2)", ("p-office",),
+    Figure(67, "completed map of Map D with its groups, E21 (also paper Fig. 2)", ("p-e21-completed-map",),
            P(map_overlay, groups=True)),
     Figure(70, "four planes problem: map and pose error per loop, E03", ("p-four-planes",), four_planes_errors),
     Figure(71, "hallway problem: groups and links, E04", ("p-hallway",), hallway_groups),

@@ -81,6 +81,49 @@ TEST(PlanarRun, WritesTheFilesAndColumnsOfTheIssue) {
   for (const char* file :
        {"ground_truth_walls.csv", "ground_truth_path.tum", "plane_observations.csv", "manifest.json"})
     EXPECT_TRUE(std::filesystem::exists(dir / "run" / file)) << file;
+  // Part 1 claims no key points: no keypoints.csv, and its counts are zero.
+  EXPECT_FALSE(std::filesystem::exists(dir / "run/relative_plane/keypoints.csv"));
+  EXPECT_EQ(iterations.text(0, "kp_checked"), "0");
+  EXPECT_EQ(summary.text(0, "key_point_accuracy"), "");
+}
+
+// E21 (Fig 67: a completed map): Map D without noise, parts 2 and 3 on, large frustum, one loop
+// and the partial second. Every wall is mapped, the pose is exact wherever it is valid, every key
+// point claimed is a real wall end (keypoints.csv, issue 13), and the motion model carries the
+// corners (iterations.csv mm_* columns).
+TEST(PlanarRun, E21CompletedMapHasEveryWallAndOnlyRightKeyPoints) {
+  test::ScratchDir dir;
+  const auto r = run_relslam(run_args("p-e21-completed-map.json", dir / "run"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table iterations = read_csv(dir / "run/relative_plane/iterations.csv");
+  int valid = 0, motion_model = 0;
+  long long checked = 0;
+  for (std::size_t i = 0; i < iterations.rows.size(); ++i) {
+    checked += static_cast<long long>(iterations.number(i, "kp_checked"));
+    EXPECT_EQ(iterations.text(i, "kp_wrong"), "0") << "iteration " << i;
+    if (iterations.text(i, "mm_active") == "1") {
+      ++motion_model;
+      EXPECT_GT(iterations.number(i, "mm_distance"), 0) << "iteration " << i;
+    } else {
+      EXPECT_EQ(iterations.text(i, "mm_distance"), "") << "iteration " << i;
+    }
+    if (iterations.text(i, "pose_valid") != "1") continue;
+    ++valid;
+    EXPECT_LT(iterations.number(i, "position_error"), kNoiseFree) << "iteration " << i;
+  }
+  EXPECT_GT(valid, 2450);
+  EXPECT_GT(motion_model, 5 * 40);  // five corners of about 60 turning iterations, most of it one wall
+  const Table keypoints = read_csv(dir / "run/relative_plane/keypoints.csv");
+  EXPECT_EQ(keypoints.header, (std::vector<std::string>{"iteration", "group", "plane", "kp", "static", "ambiguous",
+                                                         "interval_start", "interval_end", "truth_correct"}));
+  EXPECT_EQ(static_cast<long long>(keypoints.rows.size()), checked);
+  EXPECT_GT(checked, 1000);
+  for (std::size_t i = 0; i < keypoints.rows.size(); ++i) EXPECT_EQ(keypoints.text(i, "truth_correct"), "1");
+  const Table summary = read_csv(dir / "run/summary.csv");
+  EXPECT_EQ(summary.text(0, "walls_mapped"), "36");
+  EXPECT_EQ(summary.text(0, "walls_seen"), "36");
+  EXPECT_EQ(summary.number(0, "key_point_accuracy"), 1);
+  EXPECT_EQ(summary.text(0, "wrong_key_point_iterations"), "0");
 }
 
 TEST(PlanarRun, NoiseFreeFourPlanesAreExactWhereverThePoseIsValid) {

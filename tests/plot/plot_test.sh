@@ -74,6 +74,8 @@ make_run p-office run scenarios/p-office.json --set planar.iterations=400
 make_run p-e05-edge-on sweep scenarios/p-e05-edge-on.json --set planar.iterations=900
 make_run p-e06-rule12 sweep scenarios/p-e06-rule12.json --set planar.iterations=400
 make_run p-e31-chain-order sweep scenarios/p-e31-chain-order.json --set planar.iterations=300
+make_run p-e21-completed-map run scenarios/p-e21-completed-map.json --set planar.iterations=400
+make_run p-e10-rule21-22 sweep scenarios/p-e10-rule21-22.json --set planar.iterations=400
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
 expected+=(110 111 112 113 114 115 116 117 $(seq 119 126) $(seq 130 152) $(seq 167 171) components)

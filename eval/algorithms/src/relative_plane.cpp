@@ -22,6 +22,12 @@ struct IterationRow {
   const RltXPointsS& slam;
 };
 
+// A field of the active motion model's sample at this iteration; empty without one.
+CsvField mm_field(const IterationRow& r, auto value) {
+  const plane::MotionModelSample* s = r.step.motion_model != nullptr ? r.step.motion_model->last() : nullptr;
+  return s != nullptr && s->iteration == r.step.iteration ? csv_field(value(*s)) : CsvField{};
+}
+
 const Columns<IterationRow> kIterationColumns = {
     {"pose_valid", [](const IterationRow& r) { return csv_field(r.step.pose_valid); }},
     {"rlt_planes", [](const IterationRow& r) { return csv_field(r.slam.planes().size()); }},
@@ -38,6 +44,16 @@ const Columns<IterationRow> kIterationColumns = {
     {"t_compute_ms", [](const IterationRow& r) { return csv_field(r.step.timings.compute_ms); }},
     {"t_build_ms", [](const IterationRow& r) { return csv_field(r.step.timings.build_ms); }},
     {"t_pose_ms", [](const IterationRow& r) { return csv_field(r.step.timings.pose_ms); }},
+    // The motion model (Rules 23–27, spec §5.10): the tracked robot in its frame.
+    {"mm_active", [](const IterationRow& r) { return csv_field(r.step.motion_model != nullptr); }},
+    {"mm_distance", [](const IterationRow& r) { return mm_field(r, [](const auto& s) { return s.distance; }); }},
+    {"mm_delta_normal",
+     [](const IterationRow& r) { return mm_field(r, [](const auto& s) { return s.delta_normal; }); }},
+    {"mm_delta_tangent",
+     [](const IterationRow& r) { return mm_field(r, [](const auto& s) { return s.delta_tangent; }); }},
+    {"mm_heading_deg", [](const IterationRow& r) {
+       return mm_field(r, [](const auto& s) { return s.mm_T_robot.heading * 180.0 / std::numbers::pi; });
+     }},
 };
 
 // One RltPlane as planes.csv sees it, after the recorder's scored columns.
@@ -99,6 +115,23 @@ class RelativePlane final : public PlaneAlgorithm {
     append_fields(kPlaneColumns, PlaneRow{slam_.planes().at(i), slam_.map().at(i)}, out);
   }
 
+  bool claims_key_points() const override { return slam_.options().key_points; }
+  std::vector<KeyPointClaim> key_point_claims() const override {
+    // Each observed plane's memberships with a key point valid at this iteration: what Rule 16
+    // grows a partial observation from (spec §5.9).
+    std::vector<KeyPointClaim> out;
+    for (std::size_t i = 0; i < last_.assignment.size(); ++i) {
+      const plane::RltPlane& p = slam_.planes().at(static_cast<std::size_t>(last_.assignment[i]));
+      for (const plane::RltXPointRef& ref : p.refs()) {
+        if (!ref.valid || !ref.interval.in_interval(last_.iteration)) continue;
+        if (ref.key_point == plane::KeyPoint::None) continue;
+        out.push_back({static_cast<int>(i), ref.xpoint, p.id(), static_cast<int>(ref.key_point), ref.size_static,
+                       ambiguous_in(ref.xpoint, p.id()), ref.interval.start, ref.interval.end});
+      }
+    }
+    return out;
+  }
+
   void write_tables(const std::filesystem::path& dir) const override {
     CsvWriter groups(dir / "groups.csv", {"group_id", "created_iter", "placed", "global_x", "global_z",
                                           "global_psi_deg", "planes", "base_plane", "adjacent"});
@@ -116,6 +149,15 @@ class RelativePlane final : public PlaneAlgorithm {
   }
 
  private:
+  // Whether one of the chain edges of group x that compare `plane` tied both diagonals (Rule 15).
+  bool ambiguous_in(int x, int plane) const {
+    const plane::RltXPoint& group = slam_.xpoints().at(static_cast<std::size_t>(x));
+    const std::vector<int>& chain = group.planes();
+    for (std::size_t e = 0; e < group.edges().size(); ++e)
+      if ((chain[e] == plane || chain[e + 1] == plane) && group.edges()[e].ambiguous) return true;
+    return false;
+  }
+
   std::string name_ = "relative_plane";
   RltXPointsS slam_;
   RelativePlaneStep last_;

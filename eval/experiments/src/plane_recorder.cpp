@@ -38,8 +38,14 @@ PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const st
     : algorithm_(std::move(algorithm)),
       walls_(walls),
       dir_(created(dir)),
-      iterations_(dir_ / "iterations.csv", with_own(score_columns(), algorithm_->iteration_columns())),
-      trajectory_(dir_ / "trajectory.tum") {}
+      iterations_(dir_ / "iterations.csv",
+                  with_own(with_own(score_columns(), algorithm_->iteration_columns()), {"kp_checked", "kp_wrong"})),
+      trajectory_(dir_ / "trajectory.tum") {
+  if (algorithm_->claims_key_points())
+    keypoints_.emplace(dir_ / "keypoints.csv",
+                       std::vector<std::string>{"iteration", "group", "plane", "kp", "static", "ambiguous",
+                                                "interval_start", "interval_end", "truth_correct"});
+}
 
 void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& truth) {
   digest_.add(observation);
@@ -86,12 +92,30 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
              static_cast<long long>(map.size()),
              static_cast<long long>(observation.planes.size())};
   algorithm_->iteration_fields(fields_);
+  // Key-point correctness (spec §7.2): a claim is right when the ends it says are real are the
+  // wall's real ends in this observation.
+  long long checked = 0, wrong = 0;
+  if (keypoints_)
+    for (const KeyPointClaim& c : algorithm_->key_point_claims()) {
+      if (c.observation < 0 || static_cast<std::size_t>(c.observation) >= truth.planes.size()) continue;
+      const PlaneTruth& t = truth.planes[static_cast<std::size_t>(c.observation)];
+      const bool correct = c.key_point == 1 ? t.a_is_wall_end : t.b_is_wall_end;
+      ++checked;
+      wrong += !correct;
+      keypoints_->row(static_cast<long long>(k), c.group, c.plane, c.key_point, c.is_static, c.ambiguous,
+                      c.interval_start, c.interval_end, correct);
+    }
+  key_points_checked_ += checked;
+  key_points_wrong_ += wrong;
+  wrong_key_point_iterations_ += wrong > 0;
+  fields_.insert(fields_.end(), {CsvField{checked}, CsvField{wrong}});
   iterations_.row_fields(fields_);
 }
 
 SummaryRow PlaneRecorder::finish() {
   iterations_.close();
   trajectory_.close();
+  if (keypoints_) keypoints_->close();
 
   const std::vector<MappedPlane>& map = algorithm_->map();
   std::vector<std::string> columns = {"id",    "true_wall", "kp1_x",     "kp1_z",  "kp2_x",     "kp2_z",
@@ -157,6 +181,10 @@ SummaryRow PlaneRecorder::finish() {
   scores.walls_mapped = static_cast<int>(walls_mapped.size());
   walls_seen_.erase(-1);
   scores.walls_seen = static_cast<int>(walls_seen_.size());
+  scores.key_point_accuracy = key_points_checked_ > 0 ? 1.0 - static_cast<double>(key_points_wrong_) /
+                                                                  static_cast<double>(key_points_checked_)
+                                                      : std::nan("");
+  scores.wrong_key_point_iterations = wrong_key_point_iterations_;
   row.planar = scores;
   return row;
 }

@@ -52,7 +52,8 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryR
     columns.push_back(summary_column(name, planar));
   if (planar)
     columns.insert(columns.end(), {"final_heading_error_deg", "max_position_error", "pose_valid_fraction",
-                                   "walls_mapped", "walls_seen"});
+                                   "walls_mapped", "walls_seen", "key_point_accuracy",
+                                   "wrong_key_point_iterations"});
   CsvWriter csv(file, columns);
   std::vector<CsvField> fields;
   const auto write = [&](const SummaryRow& r, bool is_ratio) {
@@ -78,7 +79,8 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryR
     if (planar) {
       const PlanarScores p = r.planar.value_or(PlanarScores{});
       fields.insert(fields.end(), {p.final_heading_error_deg, p.max_position_error, p.pose_valid_fraction,
-                                   static_cast<long long>(p.walls_mapped), static_cast<long long>(p.walls_seen)});
+                                   static_cast<long long>(p.walls_mapped), static_cast<long long>(p.walls_seen),
+                                   p.key_point_accuracy, static_cast<long long>(p.wrong_key_point_iterations)});
     }
     csv.row_fields(fields);
   };

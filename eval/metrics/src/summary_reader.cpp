@@ -110,7 +110,9 @@ std::vector<SummaryRow> read_summary(const std::filesystem::path& file) {
     // writes zeros there); the rows of the runs do.
     if (planar && r.status.kind != RunStatus::Kind::Ratio)
       r.planar = PlanarScores{f.number("final_heading_error_deg"), f.number("max_position_error"),
-                              f.number("pose_valid_fraction"), f.count("walls_mapped"), f.count("walls_seen")};
+                              f.number("pose_valid_fraction"),     f.count("walls_mapped"),
+                              f.count("walls_seen"),               f.number("key_point_accuracy"),
+                              f.count("wrong_key_point_iterations")};
     rows.push_back(std::move(r));
   }
   return rows;

@@ -29,6 +29,19 @@ struct PlaneGroup {
   std::vector<int> planes;
 };
 
+// What an algorithm says about which ends of an observed plane are real wall ends (thesis Rule
+// 14's key point; spec §7.2 key-point correctness), scored against the truth in keypoints.csv.
+struct KeyPointClaim {
+  int observation = 0;  // index in this iteration's frame
+  int group = -1;       // where the claim comes from (-1: none)
+  int plane = -1;       // the estimated plane (assignment())
+  int key_point = 1;       // 1: the left end (a) is real, 2: the right end (b)
+  bool is_static = false;  // the plane also kept its size in that comparison
+  bool ambiguous = false;  // a comparison of it tied both diagonals (Rule 15)
+  int interval_start = 0;  // the comparison piece the claim is valid in
+  int interval_end = 0;
+};
+
 class PlaneAlgorithm {
  public:
   virtual ~PlaneAlgorithm() = default;
@@ -55,6 +68,10 @@ class PlaneAlgorithm {
   // planes.csv: its columns after the scored ones, and the fields of estimated plane `id`.
   virtual std::vector<std::string> plane_columns() const = 0;
   virtual void plane_fields(int id, std::vector<CsvField>& out) const = 0;
+  // Whether it makes key-point claims at all (then the run has a keypoints.csv), and after
+  // read_out() this iteration's claims about the observed planes.
+  virtual bool claims_key_points() const { return false; }
+  virtual std::vector<KeyPointClaim> key_point_claims() const { return {}; }
   // At the end of the run: any tables of its own structure (groups.csv, links.csv) into dir.
   virtual void write_tables(const std::filesystem::path&) const {}
 };

@@ -2,7 +2,8 @@
 // The recorder of a plane algorithm's run (the counterpart of algorithm_recorder.hpp for the
 // Relative Plane half): it times each step, scores the pose and the map of planes against the
 // frame's truth (spec relative_plane_em.md §7.1–7.2), writes iterations.csv (the shared score
-// columns, then the algorithm's own), trajectory.tum, planes.csv and the algorithm's tables,
+// columns, the algorithm's own, then the key-point scores), keypoints.csv when the algorithm
+// claims key points, trajectory.tum, planes.csv and the algorithm's tables,
 // hashes the frames, and turns an exception or a non-finite estimate into a recorded status.
 
 #include "relslam/eval/algorithms/plane_algorithm.hpp"
@@ -14,6 +15,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -44,6 +46,7 @@ class PlaneRecorder {
   const std::vector<PlaneObject>& walls_;
   std::filesystem::path dir_;
   CsvWriter iterations_;
+  std::optional<CsvWriter> keypoints_;  // when the algorithm claims key points
   TumWriter trajectory_;
   FrameDigest digest_;
   RunStatus status_;
@@ -56,6 +59,8 @@ class PlaneRecorder {
   PlaneMapError last_map_error_;
   std::optional<PlanarPoseError> last_pose_error_;
   double max_position_error_ = 0;
+  long long key_points_checked_ = 0, key_points_wrong_ = 0;
+  int wrong_key_point_iterations_ = 0;
   std::vector<CsvField> fields_;  // reused row buffer
 };
 

@@ -50,6 +50,9 @@ struct PlanarScores {
   double pose_valid_fraction = 0;      // iterations with a pose / iterations processed
   int walls_mapped = 0;                // distinct true walls that a mapped plane stands for
   int walls_seen = 0;                  // distinct true walls observed
+  // Key-point claims (keypoints.csv) found right, share of those checked; NaN without claims.
+  double key_point_accuracy = 0;
+  int wrong_key_point_iterations = 0;  // iterations with at least one wrong claim
 };
 
 struct SummaryRow {
