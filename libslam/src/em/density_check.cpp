@@ -28,25 +28,47 @@ std::vector<int> density_check(std::span<const Eigen::Vector3d> points, const Em
     st.emplace_back(u.dot(q), v.dot(q));
   }
 
+  // The points binned into square cells of one step, aligned on the seed: the central square
+  // [−δ, δ]² is cells {−1, 0}², and every strip the rectangle grows by is one row or column
+  // of cells, so a strip is counted from its cells instead of from every point.
   const double step = o.em2.density_step;
-  // [s_lo, s_hi] × [t_lo, t_hi], boundaries included.
-  std::array<double, 4> rect{-step, step, -step, step};
-  // Points in [s_lo, s_hi] × [t_lo, t_hi] and how far the farthest lies beyond `edge` along
-  // axis `axis` (0: s, 1: t), in absolute value.
-  struct Strip {
+  struct Cell {
     int n = 0;
-    double depth = 0.0;
+    double s_lo = 0, s_hi = 0, t_lo = 0, t_hi = 0;
   };
-  auto count_in = [&](double s_lo, double s_hi, double t_lo, double t_hi, int axis = 0, double edge = 0.0) {
-    Strip strip;
-    for (const Eigen::Vector2d& p : st)
-      if (p.x() >= s_lo && p.x() <= s_hi && p.y() >= t_lo && p.y() <= t_hi) {
-        ++strip.n;
-        strip.depth = std::max(strip.depth, std::abs(p[axis] - edge));
-      }
-    return strip;
+  std::vector<std::array<int, 2>> index(st.size());
+  std::array<int, 2> lo{0, 0}, hi{-1, -1};
+  for (std::size_t k = 0; k < st.size(); ++k) {
+    index[k] = {static_cast<int>(std::floor(st[k].x() / step)), static_cast<int>(std::floor(st[k].y() / step))};
+    for (int a = 0; a < 2; ++a) {
+      lo[a] = k == 0 ? index[k][a] : std::min(lo[a], index[k][a]);
+      hi[a] = k == 0 ? index[k][a] : std::max(hi[a], index[k][a]);
+    }
+  }
+  const int columns = hi[0] - lo[0] + 1, rows = hi[1] - lo[1] + 1;
+  std::vector<Cell> cells(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows));
+  auto cell = [&](int c, int r) -> Cell* {
+    if (c < lo[0] || c > hi[0] || r < lo[1] || r > hi[1]) return nullptr;
+    return &cells[static_cast<std::size_t>(c - lo[0]) * static_cast<std::size_t>(rows) + static_cast<std::size_t>(r - lo[1])];
   };
-  const int central = count_in(rect[0], rect[1], rect[2], rect[3]).n;
+  for (std::size_t k = 0; k < st.size(); ++k) {
+    Cell& x = *cell(index[k][0], index[k][1]);
+    const double ps = st[k].x(), pt = st[k].y();
+    if (x.n++ == 0) {
+      x.s_lo = x.s_hi = ps;
+      x.t_lo = x.t_hi = pt;
+    } else {
+      x.s_lo = std::min(x.s_lo, ps), x.s_hi = std::max(x.s_hi, ps);
+      x.t_lo = std::min(x.t_lo, pt), x.t_hi = std::max(x.t_hi, pt);
+    }
+  }
+
+  // The rectangle in cells, both ends included: columns c0..c1 (s), rows r0..r1 (t).
+  int c0 = -1, c1 = 0, r0 = -1, r1 = 0;
+  int central = 0;
+  for (int c = c0; c <= c1; ++c)
+    for (int r = r0; r <= r1; ++r)
+      if (const Cell* x = cell(c, r)) central += x->n;
   if (central == 0) return plane.points;
   const double threshold = o.em2.density_fraction * central / (4.0 * step * step);
 
@@ -54,31 +76,36 @@ std::vector<int> density_check(std::span<const Eigen::Vector3d> points, const Em
   while (growing[0] || growing[1] || growing[2] || growing[3]) {
     for (int d = 0; d < 4; ++d) {
       if (!growing[static_cast<std::size_t>(d)]) continue;
-      // The strip just beyond the rectangle's side d, open towards the rectangle.
-      const double eps = 1e-12 * step;
-      Strip strip;
-      double width = 0.0;
-      switch (d) {
-        case 0: strip = count_in(rect[1] + eps, rect[1] + step, rect[2], rect[3], 0, rect[1]); width = rect[3] - rect[2]; break;
-        case 1: strip = count_in(rect[0] - step, rect[0] - eps, rect[2], rect[3], 0, rect[0]); width = rect[3] - rect[2]; break;
-        case 2: strip = count_in(rect[0], rect[1], rect[3] + eps, rect[3] + step, 1, rect[3]); width = rect[1] - rect[0]; break;
-        default: strip = count_in(rect[0], rect[1], rect[2] - step, rect[2] - eps, 1, rect[2]); width = rect[1] - rect[0]; break;
+      // The next column (±s) or row (±t) beyond the rectangle, its count, and how deep its
+      // farthest point lies beyond the rectangle's side.
+      const bool along_s = d < 2;
+      const int line = d == 0 ? c1 + 1 : d == 1 ? c0 - 1 : d == 2 ? r1 + 1 : r0 - 1;
+      const double edge = (d == 0 || d == 2) ? line * step : (line + 1) * step;
+      int n = 0;
+      double depth = 0.0;
+      const int from = along_s ? r0 : c0, to = along_s ? r1 : c1;
+      for (int other = from; other <= to; ++other) {
+        const Cell* x = along_s ? cell(line, other) : cell(other, line);
+        if (!x || x->n == 0) continue;
+        n += x->n;
+        const double reach = d == 0 ? x->s_hi - edge : d == 1 ? edge - x->s_lo : d == 2 ? x->t_hi - edge : edge - x->t_lo;
+        depth = std::max(depth, reach);
       }
+      const double width = (to - from + 1) * step;
       // The strip's density over the part its points reach into: a wall's last, partly filled
       // strip is as dense as the rest (its end must not be cut off), while a strip whose
       // points lie only across a gap near its far side stays thin [C].
-      if (strip.n == 0 || strip.n < threshold * strip.depth * width) {
+      if (n == 0 || n < threshold * depth * width) {
         growing[static_cast<std::size_t>(d)] = false;
         continue;
       }
-      constexpr std::array<std::size_t, 4> kSide{1, 0, 3, 2};  // the bound direction d moves
-      rect[kSide[static_cast<std::size_t>(d)]] += (d % 2 == 0) ? step : -step;
+      (d == 0 ? c1 : d == 1 ? c0 : d == 2 ? r1 : r0) = line;
     }
   }
   std::vector<int> kept;
   kept.reserve(plane.points.size());
   for (std::size_t k = 0; k < st.size(); ++k)
-    if (st[k].x() >= rect[0] && st[k].x() <= rect[1] && st[k].y() >= rect[2] && st[k].y() <= rect[3])
+    if (index[k][0] >= c0 && index[k][0] <= c1 && index[k][1] >= r0 && index[k][1] <= r1)
       kept.push_back(plane.points[k]);
   return kept;
 }
