@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 namespace relslam::em {
 namespace {
@@ -181,6 +182,43 @@ TEST(EmExtraction, FindsEveryVisibleWallOnMapsDAndEWithNoise) {
     for (const View& view : map_views())
       for (Variant v : {Variant::Em1, Variant::Em2})
         expect_every_wall_once(extract(view, v, 0.05, o, seed), v, 0.05, o, where(view) + " seed " + std::to_string(seed));
+}
+
+TEST(EmExtraction, CollinearPiecesOfACorridorStaySeparate) {
+  // Map D from (15, 1.5) facing +x sees x in [17.6, 22] on both sides: on the right two pieces
+  // of one line with a gap of 1 between them (outer bottom walls 3 = [15.5, 19.5] and 4 =
+  // [20.5, 24.5] at z = 0), on the left inner wall 23 = [18.5, 22.5] beside the gap (17.5,
+  // 18.5). Each piece is its own plane and none crosses a gap: the boxes widened by e_exp on
+  // both sides (0.6 together) stay apart, so neither the E-step nor the merge joins them.
+  const View view = map_views()[0];
+  for (Variant v : {Variant::Em1, Variant::Em2})
+    for (double sigma : {0.0, 0.05}) {
+      const EmOptions o = EmOptions::for_point_sigma(sigma);
+      const Outcome out = extract(view, v, sigma, o);
+      for (int id : {3, 4, 23}) {
+        ASSERT_TRUE(out.score.walls.count(id)) << name(v) << " wall " << id << ": " << out.score.describe();
+        EXPECT_EQ(out.score.walls.at(id).planes, 1) << name(v) << " wall " << id << ": " << out.score.describe();
+      }
+      for (const PlaneObject& p : out.planes.frame.planes) {
+        // No plane on a line spans that line's gap (outer z = 0: x in (19.5, 20.5); inner z = 3:
+        // (17.5, 18.5)); its ends may sit a little inside the gap with the noise.
+        const Eigen::Vector2d a = view.world_T_robot * p.a, b = view.world_T_robot * p.b;
+        const double x_lo = std::min(a.x(), b.x()), x_hi = std::max(a.x(), b.x()), z = 0.5 * (a.y() + b.y());
+        for (auto [line_z, gap_lo, gap_hi] : {std::tuple{0.0, 19.5, 20.5}, std::tuple{3.0, 17.5, 18.5}})
+          if (std::abs(z - line_z) < 0.5)
+            EXPECT_FALSE(x_lo < gap_lo + 0.25 && x_hi > gap_hi - 0.25)
+                << name(v) << " sigma " << sigma << ": a plane spans the gap at z = " << line_z;
+      }
+    }
+}
+
+TEST(EmExtraction, NearestAssignmentAlsoFindsSeparateWalls) {
+  // EM1's other assignment mode (thesis 3.5.2 step 3): each point to its nearest plane only.
+  EmOptions o = EmOptions::for_point_sigma(0.0);
+  o.assign_mode = AssignMode::Nearest;
+  const Outcome out = extract(two_walls(), Variant::Em1, 0.0, o);
+  expect_every_wall_once(out, Variant::Em1, 0.0, o, "two walls, nearest");
+  EXPECT_EQ(out.planes.frame.planes.size(), 2u) << out.score.describe();
 }
 
 TEST(EmExtraction, SameSeedGivesTheSamePlanes) {
