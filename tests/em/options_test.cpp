@@ -1,6 +1,8 @@
 #include "relslam/em/options.hpp"
 #include "relslam/em/em_random.hpp"
 
+#include "described_fields.hpp"
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -37,6 +39,13 @@ TEST(EmOptions, CheckNamesNestedFieldsAndTheBoundBetweenFields) {
   EXPECT_EQ(issues[1].field, "em1.max_iterations");
   EXPECT_EQ(issues[2].field, "em2.grid_overlap");
   EXPECT_EQ(issues[2].problem, "must be <= em2.grid_cell (3), got 4");
+}
+
+TEST(EmOptions, EveryFieldHasAScenarioKey) {
+  EXPECT_EQ(relslam::test::described_count<EmOptions>(), relslam::test::member_count<EmOptions>());
+  EXPECT_EQ(relslam::test::described_count<Em1Options>(), relslam::test::member_count<Em1Options>());
+  EXPECT_EQ(relslam::test::described_count<Em2Options>(), relslam::test::member_count<Em2Options>());
+  EXPECT_EQ(relslam::test::described_count<ConversionOptions>(), relslam::test::member_count<ConversionOptions>());
 }
 
 TEST(EmOptions, ModeNamesAreDistinct) {

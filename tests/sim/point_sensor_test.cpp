@@ -1,6 +1,8 @@
 #include "relslam/sim/point_sensor.hpp"
 #include "relslam/sim/planar_simulator.hpp"
 
+#include "described_fields.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -44,6 +46,12 @@ TEST(PointSensor, DefaultsAreValid) {
   EXPECT_EQ(o.sigma, 0.05);
   EXPECT_TRUE(o.backface_cull);
   EXPECT_TRUE(o.occlusion);
+}
+
+TEST(PointSensor, EveryFieldButTheFrustumHasAScenarioKey) {
+  // The frustum is set from a preset (the map's), not field by field.
+  EXPECT_EQ(relslam::test::described_count<PointSensorOptions>() + 1,
+            relslam::test::member_count<PointSensorOptions>());
 }
 
 TEST(PointSensor, CheckNamesFrustumAndFieldProblems) {
