@@ -12,7 +12,22 @@ std::string point_text(const Eigen::Vector2d& p) {
   return "[" + format_number(p.x()) + ", " + format_number(p.y()) + "]";
 }
 
+// > 0 when c lies to the left of a→b, < 0 to the right, 0 on the line.
+double orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const Eigen::Vector2d u = b - a, v = c - a;
+  return u.x() * v.y() - u.y() * v.x();
+}
+
 }  // namespace
+
+bool segment_crosses_wall(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Wall& wall) {
+  // The wall's ends on opposite sides of the line p→q (or one on it: a ray through a wall's
+  // end is blocked), and p and q strictly on opposite sides of the wall's line.
+  const double wall_a = orientation(p, q, wall.a), wall_b = orientation(p, q, wall.b);
+  if (wall_a * wall_b > 0.0) return false;
+  const double side_p = orientation(wall.a, wall.b, p), side_q = orientation(wall.a, wall.b, q);
+  return side_p * side_q < 0.0;
+}
 
 std::vector<OptionIssue> check(const PlanarWorld& world) {
   std::vector<OptionIssue> issues;

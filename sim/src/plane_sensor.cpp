@@ -64,8 +64,8 @@ PlaneSimFrame PlaneSensor::observe(const PlanarWorld& world, const PlanarPose& w
   out.truth.world_T_robot = world_T_robot;
   for (const Wall& wall : world.walls) {
     if (o.mode == PlaneVisibility::Scripted && !in_script(wall, k)) continue;
-    const bool seen_from_both_sides = !o.backface_cull || !wall.one_sided;
-    if (!seen_from_both_sides && !wall.faces(world_T_robot.translation)) continue;
+    if (!wall.visible_from(world_T_robot.translation, o.backface_cull)) continue;
+    const bool seen_from_both_sides = wall.seen_from_both_sides(o.backface_cull);
 
     const Eigen::Vector2d true_a = world_T_robot.inverse_apply(wall.a), true_b = world_T_robot.inverse_apply(wall.b);
     const std::pair<Eigen::Vector2d, Eigen::Vector2d> noisy =

@@ -20,7 +20,7 @@ SIM = {
     "random": 0, "checked": 0, "centerline": 0, "frustum": 0, "viewing_frustum": 0, "planar_world": 0,
     "options": 1, "figure_eight": 1, "straight_line": 1, "plane_noise": 1, "planar_path": 1,
     "path": 2, "plane_sensor": 2,
-    "world": 3, "column_grid": 3, "planar_map": 3,
+    "world": 3, "column_grid": 3, "planar_map": 3, "point_sensor": 3,
     "simulator": 4, "planar_simulator": 4,
 }
 # eval: relslam/eval/<layer>/... or, for internal headers, "<layer>/x.hpp" under eval/src.

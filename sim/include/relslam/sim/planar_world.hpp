@@ -49,7 +49,21 @@ struct Wall {
   double length() const { return (b - a).norm(); }
   // True when p lies strictly on the front side (the back-face test of spec §3.4 step 1).
   bool faces(const Eigen::Vector2d& p) const { return normal().dot(p - a) > 0.0; }
+  // Whether the wall may be seen from behind: back-face culling is off, or the wall is
+  // two-sided (spec §3.4 step 1; shared by the plane and the point sensor).
+  bool seen_from_both_sides(bool backface_cull) const { return !backface_cull || !one_sided; }
+  // Whether a viewer at p (world) sees a face of the wall at all.
+  bool visible_from(const Eigen::Vector2d& p, bool backface_cull) const {
+    return seen_from_both_sides(backface_cull) || faces(p);
+  }
 };
+
+// True when the segment p→q crosses the wall a→b (world (x, z)). A wall only touched by the
+// segment's end p (the point lies on that wall) or lying on the same line does not block it:
+// walls are infinitely thin and span their whole height, so this 2D test is the exact
+// occlusion test of the point sensor (thesis 2.4: "a ray is projected from the point's
+// location to the robot viewpoint"; spec §3.5 step 2).
+bool segment_crosses_wall(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Wall& wall);
 
 // The map. Its order is the sensor's output order: the thesis's comparison order inside X0
 // followed the order in which the simulator stored planes 1–5 (Fig. 94; spec A38) [T].

@@ -8,7 +8,8 @@ namespace relslam::sim {
 // Independent streams, so that e.g. changing the noise never moves a landmark (issue #2, spec 4.5).
 // The planar world's sensor has its own: a wall's rigid pose noise, its end jitter (so turning
 // σ_end on leaves the pose noise unchanged) and the optional output shuffle
-// (relative_plane_em.md §3.6, A38).
+// (relative_plane_em.md §3.6, A38). The point sensor has three more: the static point field's
+// jitter, the per-point noise and the output shuffle (§3.5).
 enum class Stream : std::uint64_t {
   Field = 1,
   Noise = 2,
@@ -17,6 +18,9 @@ enum class Stream : std::uint64_t {
   PlanePose = 5,
   PlaneEnds = 6,
   PlaneShuffle = 7,
+  WallPointField = 8,
+  WallPointNoise = 9,
+  WallPointShuffle = 10,
 };
 
 // A short random sequence that is a pure function of (seed, stream, a, b).

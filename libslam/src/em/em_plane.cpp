@@ -1,0 +1,68 @@
+#include "relslam/em/em_plane.hpp"
+
+#include <cmath>
+
+namespace relslam::em {
+
+bool EmPlane::accepts(const Eigen::Vector3d& p, double inlier_distance, double expansion) const {
+  const Eigen::Vector3d margin = Eigen::Vector3d::Constant(expansion);
+  if ((p.array() < (box.min() - margin).array()).any() || (p.array() > (box.max() + margin).array()).any())
+    return false;
+  return std::abs(distance(p)) <= inlier_distance;
+}
+
+void update_box(EmPlane& plane, std::span<const Eigen::Vector3d> points) {
+  plane.box.setEmpty();
+  for (int i : plane.points) plane.box.extend(points[static_cast<std::size_t>(i)]);
+}
+
+bool refit(EmPlane& plane, std::span<const Eigen::Vector3d> points) {
+  update_box(plane, points);
+  const std::optional<PlaneFit> fit = fit_plane(points, plane.points);
+  if (!fit) return false;
+  plane.normal = fit->normal;
+  plane.offset = fit->offset;
+  plane.centroid = fit->centroid;
+  return true;
+}
+
+std::vector<int> usage_counts(const std::vector<EmPlane>& planes, std::size_t count) {
+  std::vector<int> usage(count, 0);
+  for (const EmPlane& plane : planes)
+    for (int i : plane.points) ++usage[static_cast<std::size_t>(i)];
+  return usage;
+}
+
+double exclusive_fraction(const EmPlane& plane, const std::vector<int>& usage) {
+  if (plane.points.empty()) return 0.0;
+  int own = 0;
+  for (int i : plane.points) own += usage[static_cast<std::size_t>(i)] == 1;
+  return static_cast<double>(own) / static_cast<double>(plane.points.size());
+}
+
+void set_rectangles(std::vector<EmPlane>& planes, std::span<const Eigen::Vector3d> points, const EmOptions& o) {
+  for (EmPlane& plane : planes) {
+    switch (o.rectangle) {
+      case RectangleFit::TangentProjection:
+        plane.rectangle = tangent_rectangle(points, plane.points, plane.normal, plane.centroid);
+        break;
+      case RectangleFit::RotationSearch:
+        plane.rectangle =
+            search_rectangle(points, plane.points, plane.normal, plane.centroid, o.search_step_rad, o.search_passes);
+        break;
+      case RectangleFit::BoxCorners:
+        plane.rectangle = box_corner_rectangle(points, plane.points, plane.normal, plane.centroid);
+        break;
+    }
+  }
+}
+
+std::vector<int> finite_points(std::span<const Eigen::Vector3d> points) {
+  std::vector<int> finite;
+  finite.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i].allFinite()) finite.push_back(static_cast<int>(i));
+  return finite;
+}
+
+}  // namespace relslam::em

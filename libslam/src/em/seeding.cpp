@@ -1,0 +1,44 @@
+#include "relslam/em/seeding.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+namespace relslam::em {
+
+std::optional<EmPlane> seed_plane(std::span<const Eigen::Vector3d> points, int start,
+                                  std::span<const int> candidates, const EmOptions& options) {
+  const Eigen::Vector3d& p = points[static_cast<std::size_t>(start)];
+  // The two nearest by (squared distance, index).
+  using Near = std::pair<double, int>;
+  constexpr Near kNone{std::numeric_limits<double>::infinity(), -1};
+  Near first = kNone, second = kNone;
+  const double radius2 = options.seed_radius * options.seed_radius;
+  for (int i : candidates) {
+    if (i == start) continue;
+    const Near n{(points[static_cast<std::size_t>(i)] - p).squaredNorm(), i};
+    if (!(n.first <= radius2)) continue;
+    if (n < first) {
+      second = first;
+      first = n;
+    } else if (n < second) {
+      second = n;
+    }
+  }
+  if (second.second < 0) return std::nullopt;
+  const Eigen::Vector3d a = points[static_cast<std::size_t>(first.second)] - p;
+  const Eigen::Vector3d b = points[static_cast<std::size_t>(second.second)] - p;
+  const double scale = a.norm() * b.norm();
+  if (!(scale > 0.0) || a.cross(b).norm() < options.min_seed_sine * scale) return std::nullopt;
+
+  EmPlane plane;
+  plane.points = {start, first.second, second.second};
+  std::sort(plane.points.begin(), plane.points.end());
+  plane.seed_point = start;
+  if (!refit(plane, points)) return std::nullopt;
+  return plane;
+}
+
+}  // namespace relslam::em
