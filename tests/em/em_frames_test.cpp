@@ -205,10 +205,12 @@ TEST(EmExtraction, CollinearPiecesOfACorridorStaySeparate) {
         // (17.5, 18.5)); its ends may sit a little inside the gap with the noise.
         const Eigen::Vector2d a = view.world_T_robot * p.a, b = view.world_T_robot * p.b;
         const double x_lo = std::min(a.x(), b.x()), x_hi = std::max(a.x(), b.x()), z = 0.5 * (a.y() + b.y());
-        for (auto [line_z, gap_lo, gap_hi] : {std::tuple{0.0, 19.5, 20.5}, std::tuple{3.0, 17.5, 18.5}})
-          if (std::abs(z - line_z) < 0.5)
+        for (auto [line_z, gap_lo, gap_hi] : {std::tuple{0.0, 19.5, 20.5}, std::tuple{3.0, 17.5, 18.5}}) {
+          if (std::abs(z - line_z) < 0.5) {
             EXPECT_FALSE(x_lo < gap_lo + 0.25 && x_hi > gap_hi - 0.25)
                 << name(v) << " sigma " << sigma << ": a plane spans the gap at z = " << line_z;
+          }
+        }
       }
     }
 }
