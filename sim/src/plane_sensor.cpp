@@ -98,13 +98,9 @@ PlaneSimFrame PlaneSensor::observe(const PlanarWorld& world, const PlanarPose& w
     out.truth.planes.push_back({wall.id, part.a_is_wall_end, part.b_is_wall_end});
   }
   if (o.shuffle) {
-    // Fisher–Yates on both lists together, from the iteration's own stream.
+    // Shuffled together, from the iteration's own stream.
     RandomSequence rng(seed_, Stream::PlaneShuffle, static_cast<std::uint64_t>(k));
-    for (std::size_t i = out.observation.planes.size(); i > 1; --i) {
-      const std::size_t j = rng.below(i);
-      std::swap(out.observation.planes[i - 1], out.observation.planes[j]);
-      std::swap(out.truth.planes[i - 1], out.truth.planes[j]);
-    }
+    shuffle_together(rng, out.observation.planes, out.truth.planes);
   }
   return out;
 }

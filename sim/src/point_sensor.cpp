@@ -105,13 +105,9 @@ PointSimFrame PointSensor::observe(const PlanarPose& world_T_robot, int k) const
   }
 
   if (o.shuffle) {
-    // Fisher–Yates on both lists together, from the iteration's own stream.
+    // Shuffled together, from the iteration's own stream.
     RandomSequence rng(seed_, Stream::WallPointShuffle, static_cast<std::uint64_t>(k));
-    for (std::size_t i = out.observation.points.size(); i > 1; --i) {
-      const std::size_t j = rng.below(i);
-      std::swap(out.observation.points[i - 1], out.observation.points[j]);
-      std::swap(out.truth.wall_ids[i - 1], out.truth.wall_ids[j]);
-    }
+    shuffle_together(rng, out.observation.points, out.truth.wall_ids);
   }
   return out;
 }

@@ -1,19 +1,13 @@
 #include "relslam/sim/random.hpp"
 
+#include "relslam/core/split_mix.hpp"
+
 #include <cmath>
 #include <numbers>
 
 namespace relslam::sim {
 namespace {
 
-constexpr std::uint64_t kGolden = 0x9E3779B97F4A7C15ULL;
-
-// SplitMix64 finaliser (Steele, Lea, Flood 2014): a bijective avalanche of 64 bits.
-std::uint64_t mix(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
-}
 
 // Natural logarithm for x > 0 from +, *, / and frexp only. IEEE arithmetic makes it give the
 // same bits on every machine, which libm does not promise (glibc picks FMA or non-FMA code
@@ -39,16 +33,16 @@ double portable_log(double x) {
 
 RandomSequence::RandomSequence(std::uint64_t seed, Stream stream, std::uint64_t a, std::uint64_t b) {
   // Each key part is absorbed through a full mix, so (a, b) and (b, a) give unrelated sequences.
-  std::uint64_t h = mix(seed + kGolden);
-  h = mix(h ^ (static_cast<std::uint64_t>(stream) + kGolden));
-  h = mix(h ^ (a + 2 * kGolden));
-  h = mix(h ^ (b + 3 * kGolden));
+  std::uint64_t h = split_mix64(seed + kSplitMixGolden);
+  h = split_mix64(h ^ (static_cast<std::uint64_t>(stream) + kSplitMixGolden));
+  h = split_mix64(h ^ (a + 2 * kSplitMixGolden));
+  h = split_mix64(h ^ (b + 3 * kSplitMixGolden));
   state_ = h;
 }
 
 std::uint64_t RandomSequence::next_u64() {
-  state_ += kGolden;
-  return mix(state_);
+  state_ += kSplitMixGolden;
+  return split_mix64(state_);
 }
 
 double RandomSequence::uniform() { return static_cast<double>(next_u64() >> 11) * 0x1.0p-53; }

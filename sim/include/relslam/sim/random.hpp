@@ -1,7 +1,10 @@
 #pragma once
 // Counter-based random numbers for the simulator. Part of relslam/sim: no I/O.
 
+#include <cstddef>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace relslam::sim {
 
@@ -48,5 +51,16 @@ class RandomSequence {
   double spare_ = 0.0;
   bool has_spare_ = false;
 };
+
+// Fisher–Yates on two parallel lists together (a sensor's output and its truth), from `rng`: the
+// sensors' unordered output (spec A38).
+template <class A, class B>
+void shuffle_together(RandomSequence& rng, std::vector<A>& a, std::vector<B>& b) {
+  for (std::size_t i = a.size(); i > 1; --i) {
+    const auto j = static_cast<std::size_t>(rng.below(i));
+    std::swap(a[i - 1], a[j]);
+    std::swap(b[i - 1], b[j]);
+  }
+}
 
 }  // namespace relslam::sim
