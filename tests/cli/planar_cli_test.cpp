@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 namespace relslam {
@@ -119,6 +120,18 @@ TEST(PlanarRun, E21CompletedMapHasEveryWallAndOnlyRightKeyPoints) {
   EXPECT_EQ(static_cast<long long>(keypoints.rows.size()), checked);
   EXPECT_GT(checked, 1000);
   for (std::size_t i = 0; i < keypoints.rows.size(); ++i) EXPECT_EQ(keypoints.text(i, "truth_correct"), "1");
+  // edges.csv: one row per chain edge of every group (a group of n planes has n − 1).
+  const Table groups = read_csv(dir / "run/relative_plane/groups.csv");
+  std::size_t chain_edges = 0;
+  for (std::size_t g = 0; g < groups.rows.size(); ++g) {
+    const std::string planes = groups.text(g, "planes");
+    chain_edges += static_cast<std::size_t>(std::count(planes.begin(), planes.end(), ';'));
+  }
+  const Table edges = read_csv(dir / "run/relative_plane/edges.csv");
+  EXPECT_EQ(edges.rows.size(), chain_edges);
+  EXPECT_GT(edges.rows.size(), 10u);
+  for (std::size_t e = 0; e < edges.rows.size(); ++e)
+    EXPECT_LE(edges.number(e, "length1"), edges.number(e, "canonical1") + 1e-9) << "edge " << e;  // L_e <= L*
   const Table summary = read_csv(dir / "run/summary.csv");
   EXPECT_EQ(summary.text(0, "walls_mapped"), "36");
   EXPECT_EQ(summary.text(0, "walls_seen"), "36");

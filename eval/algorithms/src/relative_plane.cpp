@@ -146,9 +146,30 @@ class RelativePlane final : public PlaneAlgorithm {
     for (const plane::RltXPointLink& l : slam_.links())
       links.row(id_field(l.from), id_field(l.to), joined(l.planes), l.created_iteration, l.first);
     links.close();
+    write_edges(dir / "edges.csv");
   }
 
  private:
+  // edges.csv (diagnostic, spec §7.3): each group's last comparison of every chain edge — the piece
+  // it used, both planes' lengths there and their canonical sizes in the group (Rule 28's L_e vs
+  // L*, Fig 87), key points, static flags, the Rule 15 tie and the offset.
+  void write_edges(const std::filesystem::path& path) const {
+    CsvWriter edges(path, {"group", "plane1", "plane2", "valid", "interval_start", "interval_end", "samples",
+                           "length1", "length2", "canonical1", "canonical2", "kp1", "kp2", "static1", "static2",
+                           "ambiguous", "dx", "dz", "dpsi_deg"});
+    for (const plane::RltXPoint& x : slam_.xpoints())
+      for (std::size_t e = 0; e < x.edges().size(); ++e) {
+        const plane::CompareResult& c = x.edges()[e];
+        const plane::RltXPointRef* r1 = slam_.planes().at(static_cast<std::size_t>(x.planes()[e])).ref(x.id());
+        const plane::RltXPointRef* r2 = slam_.planes().at(static_cast<std::size_t>(x.planes()[e + 1])).ref(x.id());
+        edges.row(x.id(), x.planes()[e], x.planes()[e + 1], c.valid, c.interval.start, c.interval.end, c.samples,
+                  c.length1, c.length2, r1->max_length, r2->max_length, static_cast<int>(c.key_point1),
+                  static_cast<int>(c.key_point2), c.static1, c.static2, c.ambiguous, c.delta.translation.x(),
+                  c.delta.translation.y(), c.delta.heading * 180.0 / std::numbers::pi);
+      }
+    edges.close();
+  }
+
   // Whether one of the chain edges of group x that compare `plane` tied both diagonals (Rule 15).
   bool ambiguous_in(int x, int plane) const {
     const plane::RltXPoint& group = slam_.xpoints().at(static_cast<std::size_t>(x));
