@@ -23,10 +23,9 @@
 #include <mrpt/serialization/CArchive.h>
 #include <Eigen/Geometry>
 
-#include <array>
-#include <cctype>
 #include <cmath>
-#include <fstream>
+#include <string_view>
+#include <utility>
 
 namespace relslam::eval {
 namespace {
