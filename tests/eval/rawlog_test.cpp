@@ -6,8 +6,6 @@
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
-#include <cstring>
-#include <limits>
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/io/CMemoryStream.h>
@@ -17,6 +15,8 @@
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
+#include <cstring>
+#include <limits>
 
 namespace relslam::eval {
 namespace {
@@ -317,8 +317,7 @@ TEST(RawlogBounds, FlagOtherThanZeroOrOneIsRefused) {
   // validCovariances: the byte before the three sensor std floats, which come before the count.
   bytes[count_offset(bytes, 3) - 13] = 2;
   const std::string e = error_reading_bytes(bytes);
-  EXPECT_NE(e.find("CObservationBearingRange.validCovariances: a flag must be 0 or 1, got 2"), std::string::npos)
-      << e;
+  EXPECT_NE(e.find("CObservationBearingRange.validCovariances: a flag must be 0 or 1, got 2"), std::string::npos) << e;
 }
 
 TEST(RawlogBounds, ClassesOutsideTheAcceptedListAreNamed) {

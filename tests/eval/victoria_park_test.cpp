@@ -149,7 +149,8 @@ TEST(VictoriaPark, ReversedGpsIsAnErrorNotAnEmptyComparison) {
   test::ScratchDir dir;
   write_small_log(dir.path(), "0.852 20.0 1.5 0.3\n");
   test::write_file(dir / "gps.dat", "2.0 1.0 1.0\n1.0 0.5 0.5\n0.0 0.0 0.0\n");
-  EXPECT_EQ(error_reading(dir.path()), (dir / "gps.dat").string() + ":2: time: times must not decrease (line 1 is later)");
+  EXPECT_EQ(error_reading(dir.path()),
+            (dir / "gps.dat").string() + ":2: time: times must not decrease (line 1 is later)");
 }
 
 TEST(VictoriaPark, NonFiniteAndAbsurdTimesNameFileAndLine) {

@@ -32,7 +32,7 @@ enum class Class {
 
 struct ClassInfo {
   Class id;
-  const char* name;       // as MRPT 2 writes it without its namespace (older MRPT wrote only this)
+  const char* name;        // as MRPT 2 writes it without its namespace (older MRPT wrote only this)
   const char* namespace_;  // what MRPT 2 writes before it
 };
 
@@ -155,8 +155,8 @@ class Walker {
         if (v < 2 || v > 7) unsupported(path, v);
         const std::int32_t method = pod<std::int32_t>(path, "estimationMethod");
         if (method != 0 && method != 1)
-          throw RecordProblem(path + ".estimationMethod", "must be 0 (odometry) or 1 (scan matching), got " +
-                                                              std::to_string(method));
+          throw RecordProblem(path + ".estimationMethod",
+                              "must be 0 (odometry) or 1 (scan matching), got " + std::to_string(method));
         if (method == 0) {  // odometry: MRPT recomputes the PDF from the reading and the model
           object(path + ".rawOdometryIncrementReading", {Class::Pose2D});
           if (v == 2) {
@@ -190,8 +190,8 @@ class Walker {
         if (v > 1) unsupported(path, v);
         const std::uint32_t method = pod<std::uint32_t>(path, "estimationMethod");
         if (method > 1)
-          throw RecordProblem(path + ".estimationMethod", "must be 0 (odometry) or 1 (visual odometry), got " +
-                                                              std::to_string(method));
+          throw RecordProblem(path + ".estimationMethod",
+                              "must be 0 (odometry) or 1 (visual odometry), got " + std::to_string(method));
         object(path + ".poseChange", {Class::Pose3DPdfGaussian});
         const std::uint32_t flags = count(path + ".hasVelocities", kMaxSmallVector, 1);
         for (std::uint32_t i = 0; i < flags; ++i) boolean(path + ".hasVelocities");
@@ -279,11 +279,13 @@ class Walker {
   // fit in what a record may still hold (checked before MRPT would resize to it).
   std::uint32_t count(const std::string& field, std::uint32_t maximum, std::size_t element_bytes = 1) {
     const std::uint32_t n = pod<std::uint32_t>(field, "element count");
-    if (n > maximum) throw RecordProblem(field, "count " + std::to_string(n) + " above the maximum " + std::to_string(maximum));
+    if (n > maximum)
+      throw RecordProblem(field, "count " + std::to_string(n) + " above the maximum " + std::to_string(maximum));
     const std::size_t room = kMaxRecordBytes - std::min(out_.size(), kMaxRecordBytes);
     if (std::size_t{n} * element_bytes > room)
-      throw RecordProblem(field, "count " + std::to_string(n) + " needs " + std::to_string(std::size_t{n} * element_bytes) +
-                                     " bytes, more than the " + std::to_string(room) + " a record may still hold");
+      throw RecordProblem(field, "count " + std::to_string(n) + " needs " +
+                                     std::to_string(std::size_t{n} * element_bytes) + " bytes, more than the " +
+                                     std::to_string(room) + " a record may still hold");
     return n;
   }
 

@@ -2,9 +2,9 @@
 
 #include "relslam/eval/config/input_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <string>

@@ -74,8 +74,8 @@ void require_finite(const Rigid3& pose, const std::string& file, int record, con
     throw InputError(file, record, field, "pose must be finite");
   const double error = (pose.rotation.transpose() * pose.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (error > 1e-3 || pose.rotation.determinant() < 0)
-    throw InputError(file, record, field, "rotation is not a rotation (R^T R differs from I by " +
-                                              std::to_string(error) + ")");
+    throw InputError(file, record, field,
+                     "rotation is not a rotation (R^T R differs from I by " + std::to_string(error) + ")");
 }
 
 std::optional<Rigid3> odometry_of(const CActionCollection& actions, const std::string& file, int record) {

@@ -71,8 +71,7 @@ VictoriaParkLog parse_victoria_park(const VictoriaParkText& text, const std::fil
     log.scans.push_back({static_cast<int>(log.scans.size()) + 1, time, {}});
   }
   // Scan numbers count the laser lines; without one no detection can be placed in time.
-  if (log.scans.empty())
-    throw InputError(sensors, 0, "", "no laser line (sensor 3): no scan to number");
+  if (log.scans.empty()) throw InputError(sensors, 0, "", "no laser line (sensor 3): no scan to number");
   log.listed_scans = static_cast<int>(log.scans.size());
   const double last_listed = log.scans.back().time;
 
