@@ -65,6 +65,15 @@ TEST(ScenarioLimits, HugeDensityDoesNotOverflowTheLandmarkGuard) {  // exit 0 wi
   EXPECT_NE(r.err.find("sim.density: would create"), std::string::npos) << r.err;
 }
 
+// Found by fuzz_scenario: a plain-text --set value became a JSON string that nlohmann's dump
+// (error messages, the manifest) could not print, std::terminate.
+TEST(ScenarioLimits, SetValueThatIsNotUtf8IsABadInput) {
+  const test::CliResult r = check_set("algorithms=[\"relative_point\",\xfa\"ekf6d\"]");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--set: not valid UTF-8 text"), std::string::npos) << r.err;
+  EXPECT_EQ(check_set("description=caf\xc3\xa9").exit_code, 0) << "valid UTF-8 passes";
+}
+
 TEST(ScenarioLimits, HugeChartingCapacityIsRefusedBeforeAllocating) {  // repro/scn_accrel_5_exit1.json
   const test::CliResult r = check_scenario("{\"relative_point\":\n {\"charting_capacity\": 1e9}}");
   EXPECT_EQ(r.exit_code, 2);

@@ -144,7 +144,9 @@ TEST(SweepEngines, AFailedCellIsListedAndResumeFailedRunsOnlyIt) {
   EXPECT_EQ(runs.text(1, "status").rfind("error: failed or unfinished", 0), 0u) << runs.text(1, "status");
   const CsvTable partial = read_csv(dir / "s/aggregate.csv");
   ASSERT_EQ(partial.rows.size(), 1u);
-  EXPECT_EQ(partial.text(0, "runs"), "2") << "the failed seed is not averaged over";
+  EXPECT_EQ(partial.text(0, "runs"), "3") << "every planned seed is counted";
+  EXPECT_EQ(partial.text(0, "ok"), "2") << "the failed seed is not averaged over";
+  EXPECT_EQ(partial.text(0, "not_ok_seeds"), "2");
 
   const auto done_before = fs::last_write_time(dir / "s/seed-1/manifest.json");
   fs::remove_all(dir / "s/seed-2");
@@ -155,7 +157,8 @@ TEST(SweepEngines, AFailedCellIsListedAndResumeFailedRunsOnlyIt) {
   EXPECT_EQ(test::read_lines(dir / "s/parallel.joblog").size(), 1u + 3u + 1u) << "header, three runs, one rerun";
   const auto complete = run_relslam({"sweep", "--aggregate", (dir / "s").string(), "-q"});
   EXPECT_EQ(complete.exit_code, 0) << complete.out;
-  EXPECT_EQ(read_csv(dir / "s/aggregate.csv").text(0, "runs"), "3");
+  EXPECT_EQ(read_csv(dir / "s/aggregate.csv").text(0, "ok"), "3");
+  EXPECT_EQ(read_csv(dir / "s/aggregate.csv").text(0, "not_ok_seeds"), "");
   EXPECT_NE(test::read_file(dir / "s/aggregate.csv").find("final_map_error_mean"), std::string::npos);
 }
 

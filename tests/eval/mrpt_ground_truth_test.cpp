@@ -67,5 +67,18 @@ TEST(MrptGroundTruth, MalformedFilesNameTheFileAndLine) {
   EXPECT_EQ(error_reading(dir / "missing.txt", true), (dir / "missing.txt").string() + ": file not found");
 }
 
+// Issue 18: a double outside int's range was cast to int (undefined behaviour).
+TEST(MrptGroundTruth, LandmarkIdsMustBeWholeNumbersInIntRange) {
+  test::ScratchDir dir;
+  test::write_file(dir / "huge.txt", "1 2 3 0 0 0 7\n4 5 6 0 0 0 1e300\n");
+  EXPECT_EQ(error_reading(dir / "huge.txt", false),
+            (dir / "huge.txt").string() + ":2: id: must be a whole number in the int32 range, got 1e+300");
+  test::write_file(dir / "fraction.txt", "1 2 3 0 0 0 3.7\n");
+  EXPECT_EQ(error_reading(dir / "fraction.txt", false),
+            (dir / "fraction.txt").string() + ":1: id: must be a whole number in the int32 range, got 3.7");
+  test::write_file(dir / "edge.txt", "1 2 3 0 0 0 2147483647\n1 2 3 0 0 0 -2147483648\n");
+  EXPECT_EQ(read_mrpt_landmarks(dir / "edge.txt").at(1).id, -2147483647 - 1);
+}
+
 }  // namespace
 }  // namespace relslam::eval

@@ -8,12 +8,15 @@
 #include <gtest/gtest.h>
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
+#include <cstring>
+#include <limits>
 
 namespace relslam::eval {
 namespace {
@@ -108,7 +111,8 @@ TEST(Rawlog, TruncatedFileIsReportedWithTheRecord) {
   const std::string bytes = test::read_file(dir / "r.rawlog");
   test::write_file(dir / "cut.rawlog", bytes.substr(0, bytes.size() - 10));
   const std::string e = error_reading(dir / "cut.rawlog");
-  EXPECT_NE(e.find("cut.rawlog:12: truncated: the file ends inside record 12"), std::string::npos) << e;
+  EXPECT_NE(e.find("cut.rawlog:12: "), std::string::npos) << e;
+  EXPECT_NE(e.find("truncated: the file ends inside record 12"), std::string::npos) << e;
 }
 
 TEST(Rawlog, ForeignFilesAreRejectedWithoutCrashing) {
@@ -138,7 +142,8 @@ TEST(Rawlog, HeaderLookingGarbageAfterTheFirstRecordIsAnError) {
                14) +
            std::string(64, '\x01');
   test::write_file(dir / "bad.rawlog", bytes);
-  EXPECT_NE(error_reading(dir / "bad.rawlog").find("bad.rawlog:5: unreadable record"), std::string::npos)
+  EXPECT_NE(error_reading(dir / "bad.rawlog").find("bad.rawlog:5: class CNotAClassXYZ is not accepted here"),
+            std::string::npos)
       << error_reading(dir / "bad.rawlog");
 }
 
@@ -239,6 +244,141 @@ TEST(Rawlog, NonFiniteMeasurementsAreRejectedWithRecordAndIndex) {
   }
   const std::string e = error_reading(dir / "nan.rawlog");
   EXPECT_NE(e.find("nan.rawlog:2: sensedData[1]: range/yaw/pitch must be finite"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace relslam::eval
+
+// Our own bounds on MRPT's framing (issue 18): the mutations the fuzzer found, on a file we write.
+namespace relslam::eval {
+namespace {
+
+// A one-frame rawlog as bytes: action collection (record 1), then a sensory frame (record 2)
+// with one bearing-range observation of `points` measurements.
+std::string one_frame_rawlog(const test::ScratchDir& dir, int points = 3) {
+  ObservationFrame frame;
+  for (int i = 0; i < points; ++i) frame.points.emplace_back(1.0 + i, 0.5, 10.0);
+  RawlogWriter writer(dir / "one.rawlog", sensor(), false);
+  writer.write(frame, {}, kSimulationEpoch_s);
+  writer.close();
+  return test::read_file(dir / "one.rawlog");
+}
+
+std::string error_reading_bytes(const std::string& bytes) {
+  try {
+    read_rawlog_bytes(bytes, "m.rawlog");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// The offset of the measurement count: right before the first measurement's four fields.
+std::size_t count_offset(const std::string& bytes, int points) {
+  // The label "RELSLAM_SIM" follows the measurements (4-byte length, then the text).
+  const std::size_t label = bytes.find("RELSLAM_SIM");
+  return label - 4 - 16 * static_cast<std::size_t>(points) - 4;
+}
+
+TEST(RawlogBounds, MemoryAndFileReadersAgree) {
+  test::ScratchDir dir;
+  const std::string bytes = one_frame_rawlog(dir);
+  const Rawlog from_file = read_rawlog(dir / "one.rawlog");
+  const Rawlog from_memory = read_rawlog_bytes(bytes, "m.rawlog");
+  ASSERT_EQ(from_memory.frames.size(), 1u);
+  ASSERT_EQ(from_memory.frames[0].measurements.size(), from_file.frames[0].measurements.size());
+  EXPECT_EQ(from_memory.frames[0].measurements[2].range, from_file.frames[0].measurements[2].range);
+}
+
+TEST(RawlogBounds, CountBeyondWhatARecordMayHoldIsRefusedBeforeAllocating) {
+  test::ScratchDir dir;
+  std::string bytes = one_frame_rawlog(dir);
+  const std::uint32_t huge = 0xF0000000u;
+  std::memcpy(bytes.data() + count_offset(bytes, 3), &huge, 4);
+  const std::string e = error_reading_bytes(bytes);
+  EXPECT_NE(e.find("m.rawlog:2: CSensoryFrame.observations[0].CObservationBearingRange.sensedData: count 4026531840"),
+            std::string::npos)
+      << e;
+}
+
+TEST(RawlogBounds, CountTheFileDoesNotHoldIsATruncation) {
+  test::ScratchDir dir;
+  std::string bytes = one_frame_rawlog(dir);
+  const std::uint32_t more = 1000000;  // 16 MB of measurements in a file of a few hundred bytes
+  std::memcpy(bytes.data() + count_offset(bytes, 3), &more, 4);
+  const std::string e = error_reading_bytes(bytes);
+  EXPECT_NE(e.find("m.rawlog:2: "), std::string::npos) << e;
+  EXPECT_NE(e.find("truncated: the file ends inside record 2"), std::string::npos) << e;
+}
+
+TEST(RawlogBounds, FlagOtherThanZeroOrOneIsRefused) {
+  test::ScratchDir dir;
+  std::string bytes = one_frame_rawlog(dir);
+  // validCovariances: the byte before the three sensor std floats, which come before the count.
+  bytes[count_offset(bytes, 3) - 13] = 2;
+  const std::string e = error_reading_bytes(bytes);
+  EXPECT_NE(e.find("CObservationBearingRange.validCovariances: a flag must be 0 or 1, got 2"), std::string::npos) << e;
+}
+
+TEST(RawlogBounds, ClassesOutsideTheAcceptedListAreNamed) {
+  mrpt::io::CMemoryStream memory;
+  auto archive = mrpt::serialization::archiveFrom(memory);
+  archive << mrpt::poses::CPose2D(1, 2, 3);
+  const std::string bytes(reinterpret_cast<const char*>(memory.getRawBufferData()), memory.getTotalBytesCount());
+  const std::string e = error_reading_bytes(bytes);
+  EXPECT_NE(e.find("m.rawlog:1: not an MRPT rawlog (class mrpt::poses::CPose2D is not accepted here (accepted: "
+                   "CActionCollection, CSensoryFrame, CObservationBearingRange, CObservationOdometry))"),
+            std::string::npos)
+      << e;
+}
+
+TEST(RawlogBounds, NonFiniteSensorPoseIsRefusedWithTheField) {
+  test::ScratchDir dir;
+  {
+    mrpt::io::CFileOutputStream out((dir / "pose.rawlog").string());
+    auto archive = mrpt::serialization::archiveFrom(out);
+    mrpt::obs::CObservationBearingRange obs;
+    obs.sensorLocationOnRobot = mrpt::poses::CPose3D(std::numeric_limits<double>::quiet_NaN(), 0, 0, 0, 0, 0);
+    obs.sensedData.push_back({10.0f, 0.0f, 0.0f, -1, {}});
+    archive << obs;
+  }
+  const std::string e = error_reading(dir / "pose.rawlog");
+  EXPECT_NE(e.find("pose.rawlog:1: sensorLocationOnRobot: pose must be finite"), std::string::npos) << e;
+}
+
+TEST(RawlogBounds, ThrunModelWithAbsurdParticleCountIsRefused) {
+  test::ScratchDir dir;
+  {
+    mrpt::io::CFileOutputStream out((dir / "thrun.rawlog").string());
+    auto archive = mrpt::serialization::archiveFrom(out);
+    mrpt::obs::CActionCollection actions;
+    mrpt::obs::CActionRobotMovement2D move;
+    mrpt::obs::CActionRobotMovement2D::TMotionModelOptions model;
+    model.modelSelection = mrpt::obs::CActionRobotMovement2D::mmThrun;
+    model.thrunModel.nParticlesCount = 300;
+    move.computeFromOdometry(mrpt::poses::CPose2D(1, 0, 0), model);
+    move.motionModelConfiguration.thrunModel.nParticlesCount = 50000000;  // as a mutated file says
+    actions.insert(move);
+    archive << actions;
+  }
+  const std::string e = error_reading(dir / "thrun.rawlog");
+  EXPECT_NE(e.find("thrun.rawlog:1: CActionCollection.actions[0].CActionRobotMovement2D.nParticlesCount: must be in "
+                   "[1, 100000] for the Thrun model, got 50000000"),
+            std::string::npos)
+      << e;
+}
+
+// MRPT's demo logs (older class versions, names without namespaces) still read, where installed.
+TEST(RawlogBounds, MrptDemoLogsPassTheBounds) {
+  int read = 0;
+  for (const char* name : {"kf-slam_demo.rawlog", "kf-slam_6D_demo.rawlog", "kf-slam_6D_demo_DA.rawlog",
+                           "kf-slam_6D_demo_noncentered.rawlog"}) {
+    const std::filesystem::path file = std::filesystem::path("/usr/share/mrpt/datasets") / name;
+    if (!std::filesystem::exists(file)) continue;
+    EXPECT_GT(read_rawlog(file).frames.size(), 10u) << name;
+    ++read;
+  }
+  if (read == 0) GTEST_SKIP() << "MRPT's demo logs not installed (apt-get install mrpt-common)";
 }
 
 }  // namespace

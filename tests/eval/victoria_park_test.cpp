@@ -128,6 +128,51 @@ TEST(VictoriaPark, MalformedFilesNameTheFileAndLine) {
   EXPECT_EQ(error_reading(dir.path()), (dir / "gps.dat").string() + ": file not found");
 }
 
+// Issue 18: each of these crashed or misread the log without saying where.
+TEST(VictoriaPark, SensorsManagerWithoutALaserLineIsAnError) {  // back() on no scans before
+  test::ScratchDir dir;
+  write_small_log(dir.path(), "1.000 10.0 1.0 0.2\n");
+  test::write_file(dir / "Sensors_manager.txt", "0.000 1 1\n0.500 2 1\n");
+  EXPECT_EQ(error_reading(dir.path()),
+            (dir / "Sensors_manager.txt").string() + ": no laser line (sensor 3): no scan to number");
+}
+
+TEST(VictoriaPark, InputsOutOfTimeOrderNameFileAndLine) {
+  test::ScratchDir dir;
+  write_small_log(dir.path(), "0.852 20.0 1.5 0.3\n");
+  test::write_file(dir / "inputs.dat", "0.973 1.0 0.0\n% a comment\n0.500 1.0 0.0\n");
+  EXPECT_EQ(error_reading(dir.path()),
+            (dir / "inputs.dat").string() + ":3: time: times must not decrease (line 1 is later)");
+}
+
+TEST(VictoriaPark, ReversedGpsIsAnErrorNotAnEmptyComparison) {
+  test::ScratchDir dir;
+  write_small_log(dir.path(), "0.852 20.0 1.5 0.3\n");
+  test::write_file(dir / "gps.dat", "2.0 1.0 1.0\n1.0 0.5 0.5\n0.0 0.0 0.0\n");
+  EXPECT_EQ(error_reading(dir.path()),
+            (dir / "gps.dat").string() + ":2: time: times must not decrease (line 1 is later)");
+}
+
+TEST(VictoriaPark, NonFiniteAndAbsurdTimesNameFileAndLine) {
+  test::ScratchDir dir;
+  write_small_log(dir.path(), "0.852 20.0 nan 0.3\n");
+  EXPECT_EQ(error_reading(dir.path()), (dir / "measurements.dat").string() + ":1: not a finite number: \"nan\"");
+  write_small_log(dir.path(), "1e300 20.0 1.5 0.3\n");
+  EXPECT_EQ(error_reading(dir.path()), (dir / "measurements.dat").string() + ":1: time: must be within +-1e9 s");
+}
+
+TEST(VictoriaPark, TextAndFileReadersAgree) {
+  test::ScratchDir dir;
+  write_small_log(dir.path(), "0.852 20.0 1.5 0.3\n1.066 5.0 2.0 0.2\n");
+  const VictoriaParkText text{test::read_file(dir / "Sensors_manager.txt"), test::read_file(dir / "measurements.dat"),
+                              test::read_file(dir / "inputs.dat"), test::read_file(dir / "gps.dat")};
+  const VictoriaParkLog from_text = parse_victoria_park(text, dir.path());
+  const VictoriaParkLog from_files = read_victoria_park(dir.path());
+  ASSERT_EQ(from_text.scans.size(), from_files.scans.size());
+  EXPECT_EQ(from_text.detections, 2);
+  EXPECT_EQ(from_text.scans[1].trees.size(), from_files.scans[1].trees.size());
+}
+
 TEST(VictoriaPark, WindowsParseOrSayWhatIsExpected) {
   EXPECT_EQ(parse_scan_window("1181:1642", "--window").first, 1181);
   EXPECT_EQ(parse_scan_window("1181:1642", "--window").last, 1642);

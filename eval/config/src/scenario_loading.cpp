@@ -206,6 +206,13 @@ LoadedScenario build(const JsonDocument& doc, const std::vector<Override>& overr
 }  // namespace
 
 Override parse_override(const std::string& text) {
+  // A plain-text value becomes a JSON string, and nlohmann's dump (error messages, the
+  // manifest) throws on invalid UTF-8: refuse it here, by the dumper's own rule.
+  try {
+    (void)json(text).dump();
+  } catch (const json::type_error&) {
+    throw InputError("--set", 0, "", "not valid UTF-8 text");
+  }
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos || eq == 0) throw InputError("--set", 0, text, "expected key=value, e.g. sim.density=50");
   return {text.substr(0, eq), text.substr(eq + 1)};

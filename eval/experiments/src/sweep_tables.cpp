@@ -3,6 +3,7 @@
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/metrics/seed_statistics.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -66,31 +67,64 @@ void write_runs_table(const std::filesystem::path& out, const std::vector<GridAx
 // aggregate.csv: per combination and algorithm, statistics over the seeds whose run succeeded.
 
 std::vector<SweepCell> sweep_cells(const std::vector<BatchResult>& results) {
-  std::map<std::pair<std::vector<std::string>, std::string>, SweepCell> cells;
-  std::vector<std::pair<std::vector<std::string>, std::string>> order;  // first appearance: grid order
+  // The algorithms each combination reports, in first-appearance order, for the runs that failed.
+  std::map<std::vector<std::string>, std::vector<std::string>> algorithms_of;
+  std::vector<std::string> every_algorithm;
+  const auto add = [](std::vector<std::string>& list, const std::string& name) {
+    if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+  };
   for (const BatchResult& r : results)
     for (const SummaryRow& s : r.rows) {
-      const auto key = std::pair{r.job.labels, s.algorithm};
-      auto [it, inserted] = cells.try_emplace(key, SweepCell{r.job.labels, s.algorithm, 0, {}});
-      if (inserted) order.push_back(key);
-      ++it->second.runs;
-      if (usable(s)) it->second.ok.push_back(&s);
+      add(algorithms_of[r.job.labels], s.algorithm);
+      add(every_algorithm, s.algorithm);
     }
+  if (every_algorithm.empty()) every_algorithm.push_back("(no run finished)");
+
+  std::map<std::pair<std::vector<std::string>, std::string>, SweepCell> cells;
+  std::vector<std::pair<std::vector<std::string>, std::string>> order;  // first appearance: grid order
+  const auto cell = [&](const BatchResult& r, const std::string& algorithm) -> SweepCell& {
+    const auto key = std::pair{r.job.labels, algorithm};
+    auto [it, inserted] = cells.try_emplace(key, SweepCell{r.job.labels, algorithm, 0, {}, {}});
+    if (inserted) order.push_back(key);
+    ++it->second.runs;
+    return it->second;
+  };
+  for (const BatchResult& r : results) {
+    if (r.rows.empty()) {
+      const auto known = algorithms_of.find(r.job.labels);
+      for (const std::string& a : known != algorithms_of.end() ? known->second : every_algorithm)
+        cell(r, a).not_ok_seeds.push_back(r.job.seed);
+      continue;
+    }
+    for (const SummaryRow& s : r.rows) {
+      SweepCell& c = cell(r, s.algorithm);
+      if (usable(s))
+        c.ok.push_back(&s);
+      else
+        c.not_ok_seeds.push_back(r.job.seed);
+    }
+  }
   std::vector<SweepCell> out;
   for (const auto& key : order) out.push_back(cells.at(key));
   return out;
 }
 
+bool any_run_failed(const std::vector<BatchResult>& results) {
+  return std::any_of(results.begin(), results.end(), [](const BatchResult& r) { return !r.error.empty(); });
+}
+
 void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
                      const std::vector<SweepCell>& cells, bool planar) {
   std::vector<std::string> columns = axis_names(axes);
-  columns.insert(columns.end(), {"algorithm", "runs", "ok"});
+  columns.insert(columns.end(), {"algorithm", "runs", "ok", "not_ok_seeds"});
   for (const Metric& m : kMetrics)
     for (const char* suffix : {"_mean", "_std", "_ci95"}) columns.push_back(summary_column(m.name, planar) + suffix);
   CsvWriter table(out / "aggregate.csv", columns);
   for (const SweepCell& cell : cells) {
     std::vector<std::string> texts = cell.labels;
-    texts.insert(texts.end(), {cell.algorithm, std::to_string(cell.runs), std::to_string(cell.ok.size())});
+    std::string seeds;
+    for (int seed : cell.not_ok_seeds) seeds += (seeds.empty() ? "" : " ") + std::to_string(seed);
+    texts.insert(texts.end(), {cell.algorithm, std::to_string(cell.runs), std::to_string(cell.ok.size()), seeds});
     std::vector<std::optional<double>> values;
     for (const Metric& m : kMetrics) {
       std::vector<double> v;

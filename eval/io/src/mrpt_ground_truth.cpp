@@ -1,6 +1,12 @@
 #include "relslam/eval/io/mrpt_ground_truth.hpp"
 
 #include "numeric_rows.hpp"
+#include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/io/text_output.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace relslam::eval {
 
@@ -22,6 +28,14 @@ std::vector<TruthLandmark> read_mrpt_landmarks(const std::filesystem::path& file
   std::vector<TruthLandmark> landmarks;
   for (const NumericRow& row : read_numeric_rows(file, 3, "x y z [...] [id]")) {
     const std::vector<double>& v = row.values;
+    // Converting a double outside int's range is undefined behaviour, and a fractional id
+    // would silently match another landmark: the file is wrong, so say where.
+    if (v.size() >= 7 && !(std::trunc(v[6]) == v[6] && v[6] >= std::numeric_limits<std::int32_t>::min() &&
+                           v[6] <= std::numeric_limits<std::int32_t>::max())) {
+      std::string problem = "must be a whole number in the int32 range, got ";
+      append_number(problem, v[6]);
+      throw InputError(file.string(), row.line, "id", problem);
+    }
     const int id = v.size() >= 7 ? static_cast<int>(v[6]) : static_cast<int>(landmarks.size());
     landmarks.push_back({id, {v[0], v[1], v[2]}});
   }

@@ -3,6 +3,8 @@
 // one data row per line, '%' and '#' start comment lines. Internal to eval/.
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -18,5 +20,8 @@ struct NumericRow {
 // is no data row at all. `columns_hint` describes the expected row in that message.
 std::vector<NumericRow> read_numeric_rows(const std::filesystem::path& file, std::size_t min_columns,
                                           const char* columns_hint);
+// The same from text already read; `name` stands for the file in messages.
+std::vector<NumericRow> parse_numeric_rows(std::string_view text, const std::string& name, std::size_t min_columns,
+                                           const char* columns_hint);
 
 }  // namespace relslam::eval

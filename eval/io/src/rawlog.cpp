@@ -4,6 +4,8 @@
 #include "relslam/eval/io/mrpt_observation.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
 
+#include "mrpt_record_check.hpp"
+
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -21,10 +23,9 @@
 #include <mrpt/serialization/CArchive.h>
 #include <Eigen/Geometry>
 
-#include <array>
-#include <cctype>
 #include <cmath>
-#include <fstream>
+#include <string_view>
+#include <utility>
 
 namespace relslam::eval {
 namespace {
@@ -66,16 +67,30 @@ CActionCollection odometry_actions(const ObservationFrame& frame) {
   return actions;
 }
 
-std::optional<Rigid3> odometry_of(const CActionCollection& actions) {
-  if (auto a3 = actions.getActionByClass<mrpt::obs::CActionRobotMovement3D>()) return rigid_of(a3->poseChange.mean);
-  if (auto a2 = actions.getActionByClass<mrpt::obs::CActionRobotMovement2D>())
-    return rigid_of(mrpt::poses::CPose3D(a2->poseChange->getMeanVal()));
-  return std::nullopt;
+// A pose from the file must be finite and its rotation a rotation: MRPT stores the matrix
+// itself, so a flipped bit gives a shear that would bend every point silently.
+void require_finite(const Rigid3& pose, const std::string& file, int record, const std::string& field) {
+  if (!pose.rotation.allFinite() || !pose.translation.allFinite())
+    throw InputError(file, record, field, "pose must be finite");
+  const double error = (pose.rotation.transpose() * pose.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (error > 1e-3 || pose.rotation.determinant() < 0)
+    throw InputError(file, record, field,
+                     "rotation is not a rotation (R^T R differs from I by " + std::to_string(error) + ")");
 }
 
-// A NaN or infinite measurement would poison every estimate downstream; reject it here,
-// naming the record and the measurement, instead of producing silently wrong numbers.
-RangeBearingSensor sensor_of(const CObservationBearingRange& obs) {
+std::optional<Rigid3> odometry_of(const CActionCollection& actions, const std::string& file, int record) {
+  std::optional<Rigid3> odometry;
+  if (auto a3 = actions.getActionByClass<mrpt::obs::CActionRobotMovement3D>())
+    odometry = rigid_of(a3->poseChange.mean);
+  else if (auto a2 = actions.getActionByClass<mrpt::obs::CActionRobotMovement2D>())
+    odometry = rigid_of(mrpt::poses::CPose3D(a2->poseChange->getMeanVal()));
+  if (odometry) require_finite(*odometry, file, record, "odometry");
+  return odometry;
+}
+
+// A NaN or infinite value would poison every estimate downstream; reject it here, naming the
+// record and the field, instead of producing silently wrong numbers.
+RangeBearingSensor sensor_of(const CObservationBearingRange& obs, const std::string& file, int record) {
   RangeBearingSensor s;
   s.min_range = obs.minSensorDistance;
   s.max_range = obs.maxSensorDistance;
@@ -84,6 +99,15 @@ RangeBearingSensor sensor_of(const CObservationBearingRange& obs) {
   s.std_range = obs.sensor_std_range;
   s.std_yaw_rad = obs.sensor_std_yaw;
   s.std_pitch_rad = obs.sensor_std_pitch;
+  const std::pair<const char*, double> values[] = {{"minSensorDistance", s.min_range},
+                                                   {"maxSensorDistance", s.max_range},
+                                                   {"fieldOfView_yaw", s.field_of_view_yaw_rad},
+                                                   {"fieldOfView_pitch", s.field_of_view_pitch_rad},
+                                                   {"sensor_std_range", s.std_range},
+                                                   {"sensor_std_yaw", s.std_yaw_rad},
+                                                   {"sensor_std_pitch", s.std_pitch_rad}};
+  for (const auto& [field, value] : values)
+    if (!std::isfinite(value)) throw InputError(file, record, field, "must be finite, got " + std::to_string(value));
   return s;
 }
 
@@ -92,6 +116,7 @@ RawlogFrame frame_of(const CObservationBearingRange& obs, int index, const std::
   frame.index = index;
   frame.timestamp_s = mrpt::Clock::toDouble(obs.timestamp);
   frame.robot_T_sensor = rigid_of(obs.sensorLocationOnRobot);
+  require_finite(frame.robot_T_sensor, file, record, "sensorLocationOnRobot");
   frame.measurements.reserve(obs.sensedData.size());
   for (std::size_t i = 0; i < obs.sensedData.size(); ++i) {
     const auto& m = obs.sensedData[i];
@@ -106,26 +131,6 @@ RawlogFrame frame_of(const CObservationBearingRange& obs, int index, const std::
   return frame;
 }
 
-// MRPT deserialises whatever bytes it is given; a text or image file can make it allocate
-// gigabytes for a "class name". So check the first record's header ourselves: a serialised
-// object starts with 0x80 | length, then that many identifier characters naming a class.
-void require_mrpt_header(const std::filesystem::path& path) {
-  mrpt::io::CFileGZInputStream in;
-  if (!in.open(path.string())) throw InputError(path.string(), 0, "", "cannot open file");
-  std::array<unsigned char, 128> head{};
-  const std::size_t n = in.Read(head.data(), head.size());
-  if (n == 0) throw InputError(path.string(), 0, "", "empty file: not an MRPT rawlog");
-  const unsigned length = head[0] & 0x7F;
-  bool ok = (head[0] & 0x80) != 0 && length >= 2 && 1 + length <= n;
-  for (unsigned i = 0; ok && i < length; ++i)
-    ok = std::isalnum(head[1 + i]) || head[1 + i] == '_' || head[1 + i] == ':';
-  // Every MRPT serialisable class is called C..., with its namespace in MRPT 2 ("mrpt::obs::C...").
-  const std::string class_name(reinterpret_cast<const char*>(head.data()) + 1, ok ? length : 0);
-  const std::size_t colons = class_name.rfind("::");
-  ok = ok && class_name[colons == std::string::npos ? 0 : colons + 2] == 'C';
-  if (!ok) throw InputError(path.string(), 1, "", "not an MRPT rawlog (the first record has no MRPT object header)");
-}
-
 // MRPT's exception text is a banner, a "Message:" line and a call stack; keep the message.
 std::string mrpt_message(const std::string& what) {
   const std::size_t start = what.find("Message:");
@@ -135,41 +140,44 @@ std::string mrpt_message(const std::string& what) {
   return first == std::string::npos ? what.substr(0, what.find('\n')) : line.substr(first);
 }
 
-}  // namespace
-
-Rawlog read_rawlog(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  if (!std::filesystem::exists(path)) throw InputError(name, 0, "", "file not found");
-  if (std::filesystem::is_directory(path)) throw InputError(name, 0, "", "is a directory, not a rawlog");
-  require_mrpt_header(path);
-
-  mrpt::io::CFileGZInputStream in;
-  if (!in.open(name)) throw InputError(name, 0, "", "cannot open file");
-  auto archive = mrpt::serialization::archiveFrom(in);
-
+// Every record goes through our own bounds first (mrpt_record_check.hpp); MRPT then decodes
+// exactly the bytes that passed, from memory.
+Rawlog read_records(mrpt::io::CStream& in, const std::string& name) {
+  const ByteReader read = [&in](void* buffer, std::size_t n) { return in.Read(buffer, n); };
+  std::vector<unsigned char> bytes;
   Rawlog log;
   bool any_action = false, any_frame = false;
   std::optional<Rigid3> pending_odometry;                     // action waiting for its frame
   std::optional<mrpt::poses::CPose2D> last_odometry_reading;  // observation-only files
   for (int record = 1;; ++record) {
-    const std::uint64_t before = in.getPosition();
+    try {
+      if (!read_checked_record(read, bytes)) {
+        if (record == 1) throw InputError(name, 0, "", "empty file: not an MRPT rawlog");
+        break;  // clean end between records
+      }
+    } catch (const RecordProblem& p) {
+      if (p.truncated())
+        throw InputError(name, record, p.field(),
+                         "truncated: the file ends inside record " + std::to_string(record) + " (" + p.what() + ")");
+      if (record == 1 && p.field().empty())
+        throw InputError(name, record, "", std::string("not an MRPT rawlog (") + p.what() + ")");
+      throw InputError(name, record, p.field(), p.what());
+    }
+    mrpt::io::CMemoryStream memory;
+    memory.assignMemoryNotOwn(bytes.data(), bytes.size());
+    auto archive = mrpt::serialization::archiveFrom(memory);
     mrpt::serialization::CSerializable::Ptr object;
     try {
       object = archive.ReadObject();
-    } catch (const mrpt::serialization::CExceptionEOF&) {
-      if (in.getPosition() == before) break;  // clean end between records
-      throw InputError(name, record, "", "truncated: the file ends inside record " + std::to_string(record));
     } catch (const std::exception& e) {
-      // MRPT wraps a short read inside an object in a generic error; EOF tells them apart.
-      if (in.checkEOF())
-        throw InputError(name, record, "", "truncated: the file ends inside record " + std::to_string(record));
-      throw InputError(name, record, "", "unreadable record (corrupt or not a rawlog): " + mrpt_message(e.what()));
+      // What our bounds do not cover: MRPT's own checks (a landmark id listed twice, ...).
+      throw InputError(name, record, "", "unreadable record: " + mrpt_message(e.what()));
     }
     log.records = record;
     if (auto actions = std::dynamic_pointer_cast<CActionCollection>(object)) {
       if (!any_action && !any_frame) log.sensory_frame_first = false;
       any_action = true;
-      pending_odometry = odometry_of(*actions);
+      pending_odometry = odometry_of(*actions, name, record);
     } else if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(object)) {
       if (!any_action && !any_frame) log.sensory_frame_first = true;
       any_frame = true;
@@ -179,13 +187,13 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
         continue;
       }
       log.skipped_observations += static_cast<int>(sf->size()) - 1;
-      if (log.frames.empty()) log.sensor = sensor_of(*obs);
+      if (log.frames.empty()) log.sensor = sensor_of(*obs, name, record);
       RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()), name, record);
       frame.odometry = pending_odometry;
       pending_odometry.reset();
       log.frames.push_back(std::move(frame));
     } else if (auto obs = std::dynamic_pointer_cast<CObservationBearingRange>(object)) {
-      if (log.frames.empty()) log.sensor = sensor_of(*obs);
+      if (log.frames.empty()) log.sensor = sensor_of(*obs, name, record);
       log.format = Rawlog::Format::ObservationsOnly;
       RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()), name, record);
       frame.odometry = pending_odometry;
@@ -193,17 +201,15 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
       log.frames.push_back(std::move(frame));
     } else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(object)) {
       log.format = Rawlog::Format::ObservationsOnly;
+      require_finite(rigid_of(mrpt::poses::CPose3D(odo->odometry)), name, record, "CObservationOdometry.odometry");
       // Absolute odometry readings: the increment since the previous reading is the motion.
       if (last_odometry_reading)
         pending_odometry = rigid_of(mrpt::poses::CPose3D(odo->odometry - *last_odometry_reading));
       last_odometry_reading = odo->odometry;
-    } else if (std::dynamic_pointer_cast<mrpt::obs::CObservation>(object)) {
-      log.format = Rawlog::Format::ObservationsOnly;
-      ++log.skipped_observations;
     } else {
-      throw InputError(
-          name, record, "",
-          std::string("unexpected object of class ") + object->GetRuntimeClass()->className + " in a rawlog");
+      // read_checked_record admits no other class at the top level.
+      throw std::logic_error(name + ": record " + std::to_string(record) + ": unexpected class " +
+                             object->GetRuntimeClass()->className);
     }
   }
   if (log.frames.empty())
@@ -212,6 +218,23 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
                          " records: nothing for a landmark SLAM algorithm to read");
   if (any_action && any_frame) log.format = Rawlog::Format::ActionsSensoryFrames;
   return log;
+}
+
+}  // namespace
+
+Rawlog read_rawlog(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  if (!std::filesystem::exists(path)) throw InputError(name, 0, "", "file not found");
+  if (std::filesystem::is_directory(path)) throw InputError(name, 0, "", "is a directory, not a rawlog");
+  mrpt::io::CFileGZInputStream in;
+  if (!in.open(name)) throw InputError(name, 0, "", "cannot open file");
+  return read_records(in, name);
+}
+
+Rawlog read_rawlog_bytes(std::string_view bytes, const std::string& name) {
+  mrpt::io::CMemoryStream in;
+  in.assignMemoryNotOwn(bytes.data(), bytes.size());
+  return read_records(in, name);
 }
 
 ObservationFrame observation_frame(const RawlogFrame& frame) {

@@ -79,8 +79,9 @@ std::vector<SizeInterval> split_by_growth_phase(std::span<const SizeSample> samp
     begin = end;
   }
   std::ranges::sort(ends);
-  const auto [dup_begin, dup_end] = std::ranges::unique(ends);
-  ends.erase(dup_begin, dup_end);
+  // std::unique, not std::ranges::unique: clang 14 (the fuzz build) cannot compile the
+  // subrange libstdc++ 12's ranges::unique returns.
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
 
   std::vector<SizeInterval> intervals;
   int first = 0;

@@ -134,7 +134,7 @@ void add_sweep(CLI::App& app, SweepArgs& args) {
       "Every run gets its own folder below --out (<axis>=<value>/.../seed-<n>/, the files of relslam run).\n"
       "sweep.csv lists every run; aggregate.csv gives per combination and algorithm the mean, sample\n"
       "standard deviation and 95 % confidence interval (Student t) over the seeds. A failing run is\n"
-      "recorded and the sweep goes on.\n"
+      "recorded and the sweep goes on; aggregate.csv lists its seed (not_ok_seeds) and the sweep exits 1.\n"
       "With --emit DIR nothing runs: DIR gets the plan (plan.json), one relslam run line per cell\n"
       "(commands.txt) and launchers for GNU parallel (parallel.sh) and Slurm (slurm.sbatch); once they\n"
       "ran, --aggregate DIR writes sweep.csv and aggregate.csv as a local sweep does, listing missing\n"
@@ -209,10 +209,12 @@ int run_sweep(const SweepArgs& args, const std::vector<std::string>& command_lin
   const bool interrupted = interrupt_requested();
   write_manifest(out, loaded.scenario, invocation, {{"sweep", sweep}},
                  interrupted ? kRunStatusInterrupted : kRunStatusOk);
-  if (!args.quiet)
-    for (const BatchResult& r : results)
-      if (!r.error.empty()) std::printf("run %s failed: %s\n", r.job.folder.c_str(), r.error.c_str());
-  return interrupted ? kInterruptedExit : 0;
+  // Listed even with --quiet, and exit 1 as --aggregate does: an incomplete table must not pass
+  // unnoticed (aggregate.csv names the seeds in not_ok_seeds).
+  for (const BatchResult& r : results)
+    if (!r.error.empty()) std::printf("run %s failed: %s\n", r.job.folder.c_str(), r.error.c_str());
+  if (interrupted) return kInterruptedExit;
+  return any_run_failed(results) ? 1 : 0;
 }
 
 }  // namespace relslam::eval

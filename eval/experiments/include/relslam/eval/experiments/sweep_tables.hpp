@@ -19,15 +19,22 @@ bool planar(const std::vector<BatchResult>& results);
 void write_runs_table(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
                       const std::vector<BatchResult>& results);
 
-// Per combination and algorithm: how many runs have a row, and the rows usable for statistics.
+// Per combination and algorithm: how many runs were planned, the rows usable for statistics,
+// and the seeds whose run is missing, failed or gave no usable row (so no mean hides them).
+// A run that failed as a whole counts against every algorithm its combination's other runs
+// report (every algorithm seen, if none of them got through).
 struct SweepCell {
   std::vector<std::string> labels;
   std::string algorithm;
   int runs = 0;
   std::vector<const SummaryRow*> ok;  // point into the results
+  std::vector<int> not_ok_seeds;
 };
 // In grid order (first appearance).
 std::vector<SweepCell> sweep_cells(const std::vector<BatchResult>& results);
+
+// Whether any run of the sweep is missing or failed as a whole (the sweep then exits 1).
+bool any_run_failed(const std::vector<BatchResult>& results);
 
 // aggregate.csv in `out`: per cell the mean, standard deviation and 95 % CI of each metric.
 void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxis>& axes,

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace relslam::eval {
@@ -47,8 +49,16 @@ struct Rawlog {
 };
 
 // Reads plain or gzip files of either MRPT format. Throws InputError (file, record number,
-// problem) for a missing, foreign, truncated or empty file.
+// field, problem) for a missing, foreign, truncated or empty file, a class we do not accept,
+// a count beyond what a record may hold, or a non-finite value. Accepted at the top level:
+// CActionCollection (of CActionRobotMovement2D/3D), CSensoryFrame (of CObservationBearingRange
+// and CObservationOdometry), CObservationBearingRange, CObservationOdometry; README.md lists
+// the versions.
 Rawlog read_rawlog(const std::filesystem::path& path);
+
+// The same reader over a plain (not gzip) rawlog already in memory, `name` standing for the
+// file in messages: what the fuzz target calls.
+Rawlog read_rawlog_bytes(std::string_view bytes, const std::string& name);
 
 // Robot-frame points (our axes: +x left, +y up, +z forward) of one frame, after applying
 // the sensor's pose on the robot. The algorithms' view of a rawlog.

@@ -57,6 +57,13 @@ struct VictoriaParkLog {
 // detection at a time no scan has, or a missing file.
 VictoriaParkLog read_victoria_park(const std::filesystem::path& dir);
 
+// The four files' text, for reading them from memory (the fuzz target).
+struct VictoriaParkText {
+  std::string sensors_manager, measurements, inputs, gps;
+};
+// read_victoria_park on text already read; `dir` names the files in messages.
+VictoriaParkLog parse_victoria_park(const VictoriaParkText& text, const std::filesystem::path& dir);
+
 // Where the data is: `flag` if given, else $RELSLAM_VICTORIA_PARK, else
 // ../shared/datasets/victoria_park (from the working directory, i.e. the repository root).
 std::filesystem::path victoria_park_dir(const std::string& flag = "");

@@ -1,0 +1,52 @@
+#pragma once
+// Our own bounds on MRPT's serialisation framing, applied before MRPT's deserialiser sees a byte.
+// Internal to eval/io (rawlog.cpp).
+//
+// MRPT 2.5's deserialiser trusts the file: element counts go straight to resize() (a 684-byte
+// file asked for 12.7 GB), a bool byte of 2 is undefined behaviour, and a mutated odometry
+// action segfaults. An MRPT object is `0x80 | name length`, the class name, a version byte,
+// the class's fields, then the end flag 0x88; there is no payload length. So we walk the
+// fields ourselves for the classes a landmark SLAM rawlog needs, in the versions MRPT 2.5
+// reads, checking every count against a sane maximum while copying the bytes into one record
+// buffer; only a record that walked cleanly is handed to MRPT, which then reads exactly those
+// bytes. Any other class is refused by name: without its layout its extent is unknown.
+
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+// What is wrong with a record and where inside it ("CSensoryFrame.observations[2].
+// CObservationBearingRange.sensedData"); the caller adds the file and record number.
+class RecordProblem : public std::runtime_error {
+ public:
+  RecordProblem(std::string field, const std::string& problem, bool truncated = false)
+      : std::runtime_error(problem), field_(std::move(field)), truncated_(truncated) {}
+  const std::string& field() const { return field_; }
+  bool truncated() const { return truncated_; }  // the input ended inside the record
+
+ private:
+  std::string field_;
+  bool truncated_;
+};
+
+// The most bytes one record (a sensory frame, an action collection, an observation) may hold:
+// four million bearing-range measurements. MRPT's objects take a few times their serialised
+// size in memory, so this keeps one record's decoding well under a gigabyte.
+inline constexpr std::size_t kMaxRecordBytes = std::size_t{64} << 20;
+
+// Reads up to n bytes into the buffer; fewer only at the end of the input.
+using ByteReader = std::function<std::size_t(void* buffer, std::size_t n)>;
+
+// The classes accepted at the top level of a rawlog, for messages and the README.
+const std::vector<std::string>& accepted_record_classes();
+
+// Copies the next top-level object of `read` into `record` (cleared first), checking it as the
+// header comment says. Returns false when the input ends before the object's first byte.
+// Throws RecordProblem otherwise.
+bool read_checked_record(const ByteReader& read, std::vector<unsigned char>& record);
+
+}  // namespace relslam::eval
