@@ -2,6 +2,8 @@
 
 #include "relslam/point/rlt_map.hpp"
 
+#include <cmath>
+
 namespace relslam::point {
 
 MapRelaxation build_relaxation(const RltMap& map, double loss_scale) {
@@ -29,8 +31,10 @@ MapRelaxation build_relaxation(const RltMap& map, double loss_scale) {
     const RltGroup& hub_group = map.groups[hub->group];
     for (const RltGroupRef& r : p.groups) {
       if (&r == hub || index[r.group] == kNone) continue;
-      out.problem.ties.push_back({index[hub->group], hub_group.relative(hub->member), index[r.group],
-                                  map.groups[r.group].relative(r.member)});
+      const RltGroup& other = map.groups[r.group];
+      const double weight = 1.0 / std::sqrt(1.0 / hub_group.iterations_used() + 1.0 / other.iterations_used());
+      out.problem.ties.push_back(
+          {index[hub->group], hub_group.relative(hub->member), index[r.group], other.relative(r.member), weight});
     }
   }
   return out;

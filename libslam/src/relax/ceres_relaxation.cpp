@@ -4,6 +4,7 @@
 #include <ceres/rotation.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace relslam::relax {
@@ -13,13 +14,14 @@ namespace {
 // storage order, matching EigenQuaternionManifold) and a translation.
 struct TieResidual {
   Eigen::Vector3d p_a, p_b;
+  double weight;
 
   template <typename T>
   bool operator()(const T* q_a, const T* t_a, const T* q_b, const T* t_b, T* residual) const {
     const Eigen::Map<const Eigen::Quaternion<T>> rotation_a(q_a), rotation_b(q_b);
     const Eigen::Map<const Eigen::Matrix<T, 3, 1>> translation_a(t_a), translation_b(t_b);
     Eigen::Map<Eigen::Matrix<T, 3, 1>> r(residual);
-    r = (rotation_a * p_a.cast<T>() + translation_a) - (rotation_b * p_b.cast<T>() + translation_b);
+    r = T(weight) * ((rotation_a * p_a.cast<T>() + translation_a) - (rotation_b * p_b.cast<T>() + translation_b));
     return true;
   }
 };
@@ -42,16 +44,20 @@ point::RelaxationReport solve_relaxation(point::RelaxationProblem& problem) {
                        problem.world_T_group[i].translation.z()};
   }
 
+  // One loss per tie: the weighted residual's scale is the loss scale weighted alike, so the
+  // scale stays a distance in map units whatever the weight.
+  std::vector<std::unique_ptr<ceres::LossFunction>> losses;
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem ceres_problem(problem_options);
-  ceres::CauchyLoss loss(problem.loss_scale);
   std::vector<bool> used(n, false);
   bool any_free = false;
   for (const point::GroupTie& tie : problem.ties) {
     if (problem.fixed[tie.a] && problem.fixed[tie.b]) continue;
-    auto* cost = new ceres::AutoDiffCostFunction<TieResidual, 3, 4, 3, 4, 3>(new TieResidual{tie.p_a, tie.p_b});
-    ceres_problem.AddResidualBlock(cost, &loss, quaternions[tie.a].data(), translations[tie.a].data(),
+    auto* cost =
+        new ceres::AutoDiffCostFunction<TieResidual, 3, 4, 3, 4, 3>(new TieResidual{tie.p_a, tie.p_b, tie.weight});
+    losses.push_back(std::make_unique<ceres::CauchyLoss>(problem.loss_scale * tie.weight));
+    ceres_problem.AddResidualBlock(cost, losses.back().get(), quaternions[tie.a].data(), translations[tie.a].data(),
                                    quaternions[tie.b].data(), translations[tie.b].data());
     used[tie.a] = used[tie.b] = true;
     any_free = true;

@@ -21,6 +21,10 @@ struct GroupTie {
   Eigen::Vector3d p_a = Eigen::Vector3d::Zero();  // in group a's basis frame
   int b = 0;
   Eigen::Vector3d p_b = Eigen::Vector3d::Zero();  // in group b's basis frame
+  // Inverse standard deviation of the residual in sensor sigmas: p_a and p_b are averages over
+  // n_a and n_b iterations, so 1/sqrt(1/n_a + 1/n_b). A short-lived temporary group's tie
+  // counts less than a final group's.
+  double weight = 1;
 };
 
 // Every group a rigid body; the fixed ones (the root) hold the map frame.
