@@ -101,11 +101,13 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   if (options_.global_relaxation == GlobalRelaxation::OnLoopClosure) {
     if (loop_closed && relax_at_ == kNone) {
       const GroupLevelOptions& level = options_.final_group.enabled ? options_.final_group : options_.temporary_group;
-      relax_at_ = k + level.look_ahead + 1;
+      relax_at_ = std::max(k + level.look_ahead + 1, next_relax_);
     }
     if (relax_at_ != kNone && k >= relax_at_) {
       relax(result);
+      // The next closure is relaxed no sooner than relaxation_period from now.
       relax_at_ = kNone;
+      next_relax_ = k + options_.relaxation_period;
     }
   } else if (options_.global_relaxation == GlobalRelaxation::Periodic) {
     if (k > map_.first_iteration && (k - map_.first_iteration) % options_.relaxation_period == 0) relax(result);

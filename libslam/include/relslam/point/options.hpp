@@ -190,8 +190,10 @@ struct PointSlamOptions {
   // Deviation (beyond the thesis, issue 19): a joint solve of all group-to-world transforms
   // (group_relaxation.hpp). Off: the thesis's algorithm, bit for bit.
   GlobalRelaxation global_relaxation = GlobalRelaxation::Off;
-  // Iterations between solves with `periodic` [C]: a figure eight's loop is ~3500 iterations,
-  // so a few solves per loop keep the chain corrected at a small share of the run's time.
+  // Iterations between solves with `periodic`, and the least between two with `on_loop_closure`
+  // [C]: a figure eight's loop is ~3800 iterations, so a few solves per loop keep the chain
+  // corrected at a small share of the run's time (on repeated loops every new stretch re-finds
+  // old points, and without a spacing the solves would follow each other).
   int relaxation_period = 500;
   // A global match of a point unseen for at least this many iterations closes a loop [C]: well
   // above a short occlusion (the local look-back and the temporary level's window).
@@ -262,7 +264,7 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
            "joint solve of the group-to-world transforms: off (thesis), on_loop_closure or periodic (beyond the "
            "thesis)",
            {GlobalRelaxation::Off, GlobalRelaxation::OnLoopClosure, GlobalRelaxation::Periodic});
-  f.field("relaxation_period", o.relaxation_period, "iterations between relaxations with periodic", at_least(1));
+  f.field("relaxation_period", o.relaxation_period, "iterations between relaxations with periodic, at least between two with on_loop_closure", at_least(1));
   f.field("relaxation_loop_gap", o.relaxation_loop_gap,
           "a global match of a point unseen this many iterations closes a loop (on_loop_closure)",
           above(o.match_look_back));

@@ -101,6 +101,7 @@ class RltMapper {
   std::string failure_;
   GroupRelaxer relaxer_;
   int relax_at_ = kNone;  // iteration of the solve a loop closure scheduled
+  int next_relax_ = kNone;  // the earliest iteration the next loop-closure solve may run
 
   // Per-iteration scratch.
   std::vector<PointId> scratch_ids_;
