@@ -1,5 +1,7 @@
 #include "mapper_run.hpp"
 
+#include "relslam/relax/ceres_relaxation.hpp"
+
 namespace relslam::point {
 
 // The true landmark an RltPoint stands for: the one behind most of its observations.
@@ -13,7 +15,7 @@ int majority(const std::map<int, int>& votes) {
 RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const PointSlamOptions& options,
               const Rigid3& sensor_T_robot, bool errors_every_iteration) {
   const sim::Simulator sim(sim_options, seed);
-  RltMapper mapper(options);
+  RltMapper mapper(options, relax::solve_relaxation);
   RunReport report;
   std::vector<std::map<int, int>> votes;
   std::map<int, int> seen;

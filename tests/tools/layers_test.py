@@ -3,7 +3,7 @@
 
     tests/tools/layers_test.py SOURCE_DIR
 
-The stack, bottom to top: libslam (core < spatial < point and the algorithm folders beside it),
+The stack, bottom to top: libslam (core < spatial < point and the algorithm folders beside it < relax),
 sim (by file, below), eval (config < io < metrics < sources < algorithms < experiments < cli,
 each a folder eval/<layer>/{include,src}).
 A file may include its own layer and those below it; folders of one rank (point, plane, em)
@@ -14,7 +14,8 @@ import sys
 from pathlib import Path
 
 # libslam: relslam/<folder>/..., ranked by folder.
-LIBSLAM = {"core": 0, "spatial": 1, "point": 2, "plane": 2, "em": 2}
+# relax (the Ceres solve of the Relative Point relaxation, issue 19) sits on point.
+LIBSLAM = {"core": 0, "spatial": 1, "point": 2, "plane": 2, "em": 2, "relax": 3}
 # sim: one concept per file, ranked by file stem (src/ and include/relslam/sim/ alike).
 SIM = {
     "random": 0, "checked": 0, "centerline": 0, "frustum": 0, "viewing_frustum": 0, "planar_world": 0,

@@ -4,6 +4,7 @@
 #include "relative_point.hpp"
 
 #include "relslam/point/rlt_mapper.hpp"
+#include "relslam/relax/ceres_relaxation.hpp"
 
 namespace relslam::eval {
 namespace {
@@ -66,6 +67,9 @@ const Columns<IterationRow> kIterationColumns = {
      [](const IterationRow& r) {
        return r.groups.alive > 0 ? csv_field(static_cast<double>(r.groups.alive_members) / r.groups.alive) : CsvField{};
      }},
+    // Global relaxation (beyond the thesis, issue 19): the solve's time, empty when none ran.
+    {"t_relax_ms",
+     [](const IterationRow& r) { return r.step.relaxed ? csv_field(r.step.timings.relax_ms) : CsvField{}; }},
 };
 
 // One RltPoint as landmarks.csv sees it; coordinates whenever it has a global position, even
@@ -99,7 +103,7 @@ const Columns<LandmarkRow> kLandmarkColumns = {
 
 class RelativePoint final : public Algorithm {
  public:
-  explicit RelativePoint(const point::PointSlamOptions& options) : mapper_(options) {}
+  explicit RelativePoint(const point::PointSlamOptions& options) : mapper_(options, relax::solve_relaxation) {}
 
   const std::string& name() const override { return name_; }
   void step(const ObservationFrame& observation, const TruthFrame&) override { last_ = mapper_.step(observation); }

@@ -26,8 +26,12 @@ const PointSlamOptions& checked(const PointSlamOptions& options) {
 
 }  // namespace
 
-RltMapper::RltMapper(const PointSlamOptions& options)
-    : options_(checked(options)), map_(options_), matcher_(options_) {}
+RltMapper::RltMapper(const PointSlamOptions& options, GroupRelaxer relaxer)
+    : options_(checked(options)), map_(options_), matcher_(options_), relaxer_(std::move(relaxer)) {
+  if (options_.global_relaxation != GlobalRelaxation::Off && !relaxer_)
+    throw std::logic_error("RltMapper: global_relaxation " + std::string(to_string(options_.global_relaxation)) +
+                           " needs a GroupRelaxer");
+}
 
 RltMapper::RltMapper(RltMapper&&) noexcept = default;
 RltMapper::~RltMapper() = default;
@@ -59,8 +63,10 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   result.assignment = match.assigned;
   result.local_matches = match.local;
   result.global_matches = match.global;
+  bool loop_closed = false;
   for (std::size_t i = 0; i < frame.points.size(); ++i) {
     PointId& id = result.assignment[i];
+    if (id != kNone && k - map_.points[id].last_iteration() >= options_.relaxation_loop_gap) loop_closed = true;
     const bool returned = id != kNone && map_.points[id].last_iteration() < k - options_.match_look_back;
     if (id == kNone) {
       id = create_point(frame.points[i], k);
@@ -88,6 +94,25 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   check_map_frame();
   if (k % options_.temporary_cleanup_period == 0) creation_.retire_redundant_temporary_groups(map_, k, options_);
   result.timings.create_ms = ms_since(clock);
+
+  // [relax] Beyond the thesis (issue 19): all group-to-world transforms at once. A loop closure
+  // schedules the solve once the groups tying the re-found points to the new ones exist (the
+  // final level's look-ahead later); further closures wait for it.
+  if (options_.global_relaxation == GlobalRelaxation::OnLoopClosure) {
+    if (loop_closed && relax_at_ == kNone) {
+      const GroupLevelOptions& level = options_.final_group.enabled ? options_.final_group : options_.temporary_group;
+      relax_at_ = std::max(k + level.look_ahead + 1, next_relax_);
+    }
+    if (relax_at_ != kNone && k >= relax_at_) {
+      relax(result);
+      // The next closure is relaxed no sooner than relaxation_period from now.
+      relax_at_ = kNone;
+      next_relax_ = k + options_.relaxation_period;
+    }
+  } else if (options_.global_relaxation == GlobalRelaxation::Periodic) {
+    if (k > map_.first_iteration && (k - map_.first_iteration) % options_.relaxation_period == 0) relax(result);
+  }
+  result.timings.relax_ms = ms_since(clock);
 
   // [pose] Current position (thesis 6.1): used for the next global matching and for metrics.
   update_pose(frame, result);
@@ -151,6 +176,14 @@ void RltMapper::compute_groups(int k) {
     if (group.alive()) map_.compute(group, k, k);
   }
   queued_groups_.clear();
+}
+
+void RltMapper::relax(StepResult& result) {
+  MapRelaxation relaxation = build_relaxation(map_, options_.relaxation_loss_scale);
+  result.relaxed = true;
+  result.relaxation = relaxer_(relaxation.problem);
+  // The current pose follows in update_pose, registered to the moved map positions.
+  if (result.relaxation.solved) apply_relaxation(map_, relaxation);
 }
 
 void RltMapper::check_map_frame() {

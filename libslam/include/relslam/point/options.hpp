@@ -98,6 +98,15 @@ void describe(OptionsOf<Level3Options> auto& l, auto& f) {
   f.field("binning", l.binning, "level 3: RltBinning removes dynamic members");
 }
 
+// Deviation (beyond the thesis, issue 19): when the group-to-world transforms are solved for
+// all at once, so a closed loop corrects the chain of groups (group_relaxation.hpp).
+enum class GlobalRelaxation : unsigned char {
+  Off,            // the thesis: each group registered once to its anchors, never corrected
+  OnLoopClosure,  // after global matching re-finds points unseen for relaxation_loop_gap iterations
+  Periodic,       // every relaxation_period iterations
+};
+std::string_view to_string(GlobalRelaxation relaxation);  // "off", "on_loop_closure", "periodic"
+
 struct PointSlamOptions {
   // Local matching compares with the latest observation of points seen in the last
   // match_look_back iterations ("a few", thesis 6.2.3) [C].
@@ -178,6 +187,23 @@ struct PointSlamOptions {
   // thesis's algorithm stalls: new points could never be grouped again. Off by default.
   bool provisional_root = false;
 
+  // Deviation (beyond the thesis, issue 19): a joint solve of all group-to-world transforms
+  // (group_relaxation.hpp). Off: the thesis's algorithm, bit for bit.
+  GlobalRelaxation global_relaxation = GlobalRelaxation::Off;
+  // Iterations between solves with `periodic`, and the least between two with `on_loop_closure`
+  // [C]: a figure eight's loop is ~3800 iterations, so a few solves per loop keep the chain
+  // corrected at a small share of the run's time (on repeated loops every new stretch re-finds
+  // old points, and without a spacing the solves would follow each other).
+  int relaxation_period = 500;
+  // A global match of a point unseen for at least this many iterations closes a loop [C]: well
+  // above a short occlusion (the local look-back and the temporary level's window).
+  int relaxation_loop_gap = 100;
+  // Robust (Cauchy) loss scale, units [C]: a correct tie's residual is the difference of two
+  // groups' averaged estimates of one point, a few sensor sigmas (0.1 on the thesis worlds) at
+  // most; beyond the scale a tie's pull stops growing (at most scale/2), so one wrong match
+  // cannot drag the map far.
+  double relaxation_loss_scale = 0.3;
+
   // Observations kept per RltPoint (ring buffer) and iterations kept by RltPointCharting;
   // both must cover the final level's look_back + look_ahead, and level 3's visible runs
   // (2048 then, spec A26) [C].
@@ -234,6 +260,16 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
                 "needs pose_from_unmapped (its groups register to provisional positions)"));
   f.field("use_odometry", o.use_odometry,
           "frames with odometry: predict local matches and bridge unregistrable frames with it (beyond the thesis)");
+  f.choice("global_relaxation", o.global_relaxation,
+           "joint solve of the group-to-world transforms: off (thesis), on_loop_closure or periodic (beyond the "
+           "thesis)",
+           {GlobalRelaxation::Off, GlobalRelaxation::OnLoopClosure, GlobalRelaxation::Periodic});
+  f.field("relaxation_period", o.relaxation_period, "iterations between relaxations with periodic, at least between two with on_loop_closure", at_least(1));
+  f.field("relaxation_loop_gap", o.relaxation_loop_gap,
+          "a global match of a point unseen this many iterations closes a loop (on_loop_closure)",
+          above(o.match_look_back));
+  f.field("relaxation_loss_scale", o.relaxation_loss_scale, "Cauchy loss scale of the relaxation, units",
+          above(0.0));
   f.choice("local_index", o.local_index, "local matching index (thesis 6.6.2)",
            {spatial::LocalIndexKind::Quadtree, spatial::LocalIndexKind::Octree, spatial::LocalIndexKind::KdTree});
   f.field("octree_cell_size", o.octree_cell_size, "octree cell, units", at_least(o.local_bound));

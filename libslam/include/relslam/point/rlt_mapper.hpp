@@ -5,6 +5,7 @@
 #include "relslam/core/observation.hpp"
 #include "relslam/core/rigid.hpp"
 #include "relslam/point/group_creation.hpp"
+#include "relslam/point/group_relaxation.hpp"
 #include "relslam/point/options.hpp"
 #include "relslam/point/point_matching.hpp"
 #include "relslam/point/rlt_group.hpp"
@@ -35,7 +36,8 @@ struct StepTimings {
   double create_ms = 0;   // group creation (and clean-up), binning included
   double binning_ms = 0;  // of which dynamic-point detection (thesis 6.5.3, Fig 117)
   double pose_ms = 0;     // current position
-  double total_ms() const { return init_ms + load_ms + compute_ms + merge_ms + create_ms + pose_ms; }
+  double relax_ms = 0;    // global relaxation (beyond the thesis): building, solving, applying
+  double total_ms() const { return init_ms + load_ms + compute_ms + merge_ms + create_ms + relax_ms + pose_ms; }
 };
 
 struct StepResult {
@@ -51,6 +53,8 @@ struct StepResult {
   int dynamic_flagged = 0;  // points RltBinning flagged this iteration
   int merges = 0;           // RltPoints merged into older ones this iteration
   int binning_comparisons = 0;
+  bool relaxed = false;   // a global relaxation ran this iteration (beyond the thesis)
+  RelaxationReport relaxation;  // its outcome, when relaxed
   StepTimings timings;
 };
 
@@ -59,7 +63,9 @@ struct StepResult {
 class RltMapper {
  public:
   // logic_error if check(options) finds a problem: callers validate user input first.
-  explicit RltMapper(const PointSlamOptions& options = {});
+  // A global_relaxation other than off needs `relaxer` (relax::solve_relaxation): logic_error
+  // without one.
+  explicit RltMapper(const PointSlamOptions& options = {}, GroupRelaxer relaxer = {});
 
   // One iteration (thesis 6.2–6.5 as ordered in spec 5.3). Iterations must increase; points
   // are robot-frame observations in any order. The first frame defines the world frame.
@@ -84,6 +90,7 @@ class RltMapper {
   void compute_groups(int k);
   void check_map_frame();
   void update_pose(const ObservationFrame& frame, StepResult& result);
+  void relax(StepResult& result);
 
   PointSlamOptions options_;
   RltMap map_;
@@ -92,6 +99,9 @@ class RltMapper {
   RltPointMerging merging_;
   Rigid3 pose_;
   std::string failure_;
+  GroupRelaxer relaxer_;
+  int relax_at_ = kNone;  // iteration of the solve a loop closure scheduled
+  int next_relax_ = kNone;  // the earliest iteration the next loop-closure solve may run
 
   // Per-iteration scratch.
   std::vector<PointId> scratch_ids_;

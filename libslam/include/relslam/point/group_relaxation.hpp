@@ -1,0 +1,63 @@
+#pragma once
+// Global relaxation of the Relative Point map (beyond the thesis, issue 19): the problem of
+// solving every group-to-world transform at once, built from and written back to an RltMap.
+// Eigen only: the solver itself (Ceres) lives in relslam/relax/ and is reached through
+// GroupRelaxer, so libslam never sees its headers.
+
+#include "relslam/core/rigid.hpp"
+#include "relslam/point/rlt_point.hpp"
+
+#include <functional>
+#include <vector>
+
+namespace relslam::point {
+
+struct RltMap;
+
+// One point known to two groups: world_T_group[a] * p_a and world_T_group[b] * p_b should be
+// the same world position. Indices are into RelaxationProblem::world_T_group.
+struct GroupTie {
+  int a = 0;
+  Eigen::Vector3d p_a = Eigen::Vector3d::Zero();  // in group a's basis frame
+  int b = 0;
+  Eigen::Vector3d p_b = Eigen::Vector3d::Zero();  // in group b's basis frame
+  // Inverse standard deviation of the residual in sensor sigmas: p_a and p_b are averages over
+  // n_a and n_b iterations, so 1/sqrt(1/n_a + 1/n_b). A short-lived temporary group's tie
+  // counts less than a final group's.
+  double weight = 1;
+};
+
+// Every group a rigid body; the fixed ones (the root) hold the map frame.
+struct RelaxationProblem {
+  std::vector<Rigid3> world_T_group;  // the start values; a solver overwrites them
+  std::vector<bool> fixed;            // one per group: held constant
+  std::vector<GroupTie> ties;
+  double loss_scale = 0.3;  // robust loss scale, units (PointSlamOptions::relaxation_loss_scale)
+};
+
+struct RelaxationReport {
+  bool solved = false;  // false: the transforms were left as given
+  int solver_iterations = 0;
+  double initial_cost = 0;
+  double final_cost = 0;
+};
+
+// Solves a RelaxationProblem in place (relax::solve_relaxation is the Ceres one).
+using GroupRelaxer = std::function<RelaxationReport(RelaxationProblem&)>;
+
+// The groups taking part (alive, computed and registrable), which map's group each entry
+// stands for, and the problem over them.
+struct MapRelaxation {
+  RelaxationProblem problem;
+  std::vector<GroupId> groups;  // problem index -> map group id
+};
+
+// The problem for `map`: one body per alive, registrable group at its current registration
+// (the root groups fixed), one tie per extra group a static point belongs to.
+MapRelaxation build_relaxation(const RltMap& map, double loss_scale);
+
+// After a solve: every point a taking-part group owns gets world_T_group * relative (and its
+// place in the global index). The groups' relative maps are untouched. Returns the points moved.
+int apply_relaxation(RltMap& map, const MapRelaxation& relaxation);
+
+}  // namespace relslam::point
