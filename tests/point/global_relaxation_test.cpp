@@ -10,13 +10,6 @@
 namespace relslam::point {
 namespace {
 
-sim::SimOptions one_loop(double noise) {
-  sim::SimOptions o;
-  o.density = 100;
-  o.noise_sigma = noise;
-  return o;
-}
-
 PointSlamOptions relaxing(GlobalRelaxation mode) {
   PointSlamOptions o;
   o.global_relaxation = mode;

@@ -64,4 +64,11 @@ RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const Poin
   return report;
 }
 
+sim::SimOptions one_loop(double noise) {
+  sim::SimOptions o;
+  o.density = 100;
+  o.noise_sigma = noise;
+  return o;
+}
+
 }  // namespace relslam::point

@@ -31,6 +31,9 @@ struct RunReport {
 // The true landmark an RltPoint stands for: the one behind most of its observations.
 int majority(const std::map<int, int>& votes);
 
+// The figure eight at density 100 with sensor noise `noise` (one loop, the simulator's defaults).
+sim::SimOptions one_loop(double noise);
+
 RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const PointSlamOptions& options,
               const Rigid3& sensor_T_robot = Rigid3::identity(), bool errors_every_iteration = false);
 

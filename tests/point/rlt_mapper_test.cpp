@@ -15,13 +15,6 @@
 namespace relslam::point {
 namespace {
 
-sim::SimOptions one_loop(double noise) {
-  sim::SimOptions o;
-  o.density = 100;
-  o.noise_sigma = noise;
-  return o;
-}
-
 // Noise-free data are exact, so any positive bound is right; small ones keep apart the few
 // landmarks that happen to lie within a unit of each other (~16 pairs at density 100), which
 // the noisy-data bounds (1.0 local after compensation, 2.0 global) cannot tell apart.
