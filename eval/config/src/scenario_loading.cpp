@@ -1,6 +1,7 @@
 #include "relslam/eval/config/scenario_loading.hpp"
 
 #include "relslam/eval/config/json_document.hpp"
+#include "relslam/eval/config/point_bounds.hpp"
 #include "relslam/eval/config/scenario_keys.hpp"
 
 #include <algorithm>
@@ -199,6 +200,7 @@ LoadedScenario build(const JsonDocument& doc, const std::vector<Override>& overr
   loader.apply_document(doc);
   for (const Override& o : overrides) loader.apply_override(o);
   loaded.origins = loader.origins();
+  derive_point_bounds(loaded.scenario, [&](const std::string& key) { return loaded.origins.contains(key); });
   check_semantics(loaded);
   return loaded;
 }

@@ -147,7 +147,7 @@ SummaryRow AlgorithmRecorder::summary_over(int iterations) const {
   row.status = status_;
   // An algorithm that gave up without throwing goes on stepping; its run is still a failure.
   if (running() && !algorithm_->failure().empty()) row.status = RunStatus::failed(-1, algorithm_->failure());
-  scorer_.fill(row, static_cast<std::size_t>(iterations));
+  scorer_.fill(row, static_cast<std::size_t>(iterations), algorithm_->steps_before_map_frame());
   row.input_digest = digest_.hex();
   return row;
 }

@@ -75,6 +75,8 @@ void write_manifest(const fs::path& dir, const Scenario& scenario, const Invocat
       {"engine", engine_info()},
       {"created_utc", utc_now()},
   };
+  // What a preset derived instead of reading it, and from what (issue 16: the bounds and the noise).
+  for (const auto& [key, d] : scenario.derived) manifest["derived"][key] = {{"value", d.value}, {"source", d.source}};
   if (extra.is_object()) manifest.update(extra);  // {} (null) is "nothing extra"
   manifest["status"] = status;
   // Written beside and renamed over: a kill mid-write leaves the previous manifest whole.

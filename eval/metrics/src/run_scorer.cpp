@@ -51,7 +51,7 @@ int RunScorer::duplicates(const std::vector<int>& ids) const {
   return extra;
 }
 
-void RunScorer::fill(SummaryRow& row, std::size_t iterations) const {
+void RunScorer::fill(SummaryRow& row, std::size_t iterations, std::size_t first) const {
   const std::size_t n = std::min(iterations, history_.size());
   row.iterations = static_cast<int>(n);
   if (n == 0) return;
@@ -62,9 +62,11 @@ void RunScorer::fill(SummaryRow& row, std::size_t iterations) const {
   for (std::size_t k = 0; k < n; ++k) mean_sum += history_[k].mean_landmark_error;
   row.mean_landmark_error = mean_sum / static_cast<double>(n);
   row.final_position_error = last.position_error;
+  first = std::min(first, n - 1);
   if (poses_known_) {
-    row.trajectory = trajectory_error({estimates_.begin(), estimates_.begin() + static_cast<std::ptrdiff_t>(n)},
-                                      {truths_.begin(), truths_.begin() + static_cast<std::ptrdiff_t>(n)});
+    const auto from = static_cast<std::ptrdiff_t>(first), to = static_cast<std::ptrdiff_t>(n);
+    row.trajectory = trajectory_error({estimates_.begin() + from, estimates_.begin() + to},
+                                      {truths_.begin() + from, truths_.begin() + to});
   } else {
     const double unknown = std::numeric_limits<double>::quiet_NaN();
     row.trajectory = {unknown, unknown, unknown, unknown};

@@ -9,6 +9,11 @@ const GroupLevelOptions& level_options(const PointSlamOptions& options, GroupLev
   return level == GroupLevel::Temporary ? options.temporary_group : options.final_group;
 }
 
+// Grouped at `level` already (then it has left the level's list for good).
+bool grouped_at(const RltPoint& p, GroupLevel level) {
+  return level == GroupLevel::Temporary ? p.temporary_grouped || p.final_grouped : p.final_grouped;
+}
+
 }  // namespace
 
 void GroupCreation::add_point(PointId id, const PointSlamOptions& options) {
@@ -25,7 +30,14 @@ CreationReport GroupCreation::create_groups(RltMap& map, int k, const PointSlamO
     while (!waiting.empty() && k >= waiting.front().start + look_ahead) {
       const RltUngroupedList::Entry entry = waiting.front();
       waiting.pop_front();
-      try_create(map, level, entry, k, options, report);
+      if (try_create(map, level, entry, k, options, report)) continue;
+      // The thesis gives a point one chance per visible run. Deviation (adaptive preset, issue
+      // 16): one still in view waits again from now, so a point whose first window lacked
+      // anchors (a sparse scene) is grouped once enough mapped points are around it.
+      const RltPoint& c = map.points[entry.id];
+      if (options.preset == Preset::Adaptive && !c.dynamic && !c.merged && !grouped_at(c, level) &&
+          c.last_iteration() >= k - options.match_look_back)
+        waiting.push(entry.id, k);
     }
   }
   if (options.level3.enabled) create_level3_groups(map, k, options, report);

@@ -25,6 +25,13 @@ int visible_run_end(const RltInterval& interval, int gap) {
   return end;
 }
 
+// Points seen per iteration over [a, b], on average (the adaptive preset's PrevGroupMin).
+double in_view(const RltPointCharting& charting, int a, int b) {
+  std::size_t seen = 0;
+  for (int t = a; t <= b; ++t) seen += charting.at(t).size();
+  return static_cast<double>(seen) / (b - a + 1);
+}
+
 }  // namespace
 
 // Most observed first. Many candidates tie (seen in the whole window); ties go by a hash of the
@@ -122,7 +129,9 @@ PlanOutcome GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& lev
   rank(plan.members);
   if (static_cast<int>(plan.members.size()) > o.prev_max) plan.members.resize(o.prev_max);
   const std::size_t anchors = plan.members.size();
-  if (!plan.root() && static_cast<int>(anchors) < o.prev_min) {
+  const int prev_min =
+      options.preset == Preset::Thesis ? o.prev_min : prev_group_min(o, options.preset, in_view(charting, c0, ahead));
+  if (!plan.root() && static_cast<int>(anchors) < prev_min) {
     // Too few mapped points in view: the thesis's algorithm cannot place a group here. A
     // provisional root places it on its members' provisional positions instead.
     if (!options.provisional_root || !level.lowest) return no_group();

@@ -1,5 +1,8 @@
 #include "relslam/point/options.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace relslam::point {
 
 std::string_view to_string(GlobalRelaxation relaxation) {
@@ -9,6 +12,22 @@ std::string_view to_string(GlobalRelaxation relaxation) {
     case GlobalRelaxation::Periodic: return "periodic";
   }
   return "?";
+}
+
+std::string_view to_string(Preset preset) {
+  switch (preset) {
+    case Preset::Thesis: return "thesis";
+    case Preset::Adaptive: return "adaptive";
+  }
+  return "?";
+}
+
+int prev_group_min(const GroupLevelOptions& level, Preset preset, double in_view) {
+  if (preset == Preset::Thesis) return level.prev_min;
+  // Three previously mapped points register a group (a rigid motion); fewer in view and no group
+  // can be placed at all.
+  const int derived = static_cast<int>(std::lround(level.prev_share * in_view));
+  return std::clamp(derived, std::min(3, level.prev_min), level.prev_min);
 }
 
 std::vector<OptionIssue> check(const PointSlamOptions& o) {

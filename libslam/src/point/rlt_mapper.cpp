@@ -91,7 +91,7 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   result.dynamic_flagged = created.dynamic_flagged;
   result.binning_comparisons = created.binning_comparisons;
   result.timings.binning_ms = created.binning_ms;
-  check_map_frame();
+  check_map_frame(k);
   if (k % options_.temporary_cleanup_period == 0) creation_.retire_redundant_temporary_groups(map_, k, options_);
   result.timings.create_ms = ms_since(clock);
 
@@ -186,16 +186,45 @@ void RltMapper::relax(StepResult& result) {
   if (result.relaxation.solved) apply_relaxation(map_, relaxation);
 }
 
-void RltMapper::check_map_frame() {
+void RltMapper::check_map_frame(int k) {
   // Every point of the first iteration has had its chance to root the map and none could: the
   // map frame (the first observations, thesis 6.3.3) can never be fixed.
   const RltUngroupedList& lowest =
       map_.list(options_.temporary_group.enabled ? GroupLevel::Temporary : GroupLevel::Final);
   const bool first_iteration_tried = lowest.empty() || lowest.front().start > map_.first_iteration;
-  if (!map_.any_mapped && failure_.empty() && first_iteration_tried && !options_.provisional_root)
+  if (map_.any_mapped || !failure_.empty() || !first_iteration_tried || options_.provisional_root) return;
+  if (options_.preset == Preset::Thesis) {
     failure_ =
         "no group could be anchored to the first iteration's observations (the map frame): fewer than 3 points "
         "were seen there often enough";
+    return;
+  }
+  // Adaptive (beyond the thesis, issue 16): a sparse start is no failure; the map frame moves on
+  // to the first iteration from here that shows three points, and so on until a root forms.
+  if (map_.charting.at(k).size() >= 3) move_map_frame(k);
+}
+
+void RltMapper::move_map_frame(int k) {
+  map_.first_iteration = k;
+  // Provisional positions were in the old frame: placed again from this iteration's pose on.
+  for (RltPoint& p : map_.points) {
+    if (!p.has_provisional) continue;
+    p.has_provisional = false;
+    if (map_.global_index->contains(p.id)) map_.global_index->remove(p.id);
+  }
+  // What is seen now roots the map, as a first iteration's points do: its observations here are
+  // the map frame's, and it waits to be grouped from here.
+  for (PointId id : map_.charting.at(k)) {
+    RltPoint& p = map_.points[id];
+    if (p.dynamic || p.merged) continue;
+    p.first_observation = *p.observations.at(k);
+    for (GroupLevel level : {GroupLevel::Temporary, GroupLevel::Final}) {
+      if (!(level == GroupLevel::Temporary ? options_.temporary_group : options_.final_group).enabled) continue;
+      RltUngroupedList& list = map_.list(level);
+      list.remove(id);
+      list.push(id, k);
+    }
+  }
 }
 
 void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {

@@ -31,6 +31,10 @@ struct GroupLevelOptions {
   int accuracy_reduction = 10;
   int prev_min = 20;  // fewer previously mapped candidates: c is not a good point, no group
   int prev_max = 20;  // the best (most observed) previously mapped candidates kept
+  // Deviation (beyond the thesis, issue 16), with the adaptive preset only: PrevGroupMin as
+  // this share of the points in view (mean over [c0, c0+A]), at least 3, at most prev_min. The
+  // thesis's 20 (final) and 6 (temporary) were tuned where about 100 points are in view [C].
+  double prev_share = 0.2;
   int next_min = 1;   // ungrouped members needed, c included; 1 is the thesis's best (Fig 125)
   // Run RltBinning on the members and leave out the dynamic ones (thesis 6.4.3 step 5).
   bool binning = true;
@@ -48,6 +52,9 @@ void describe(OptionsOf<GroupLevelOptions> auto& l, auto& f, std::string_view wh
   // Three anchors fix a rigid motion.
   f.field("prev_min", l.prev_min, level + ": PrevGroupMin, previously mapped members needed", at_least(3));
   f.field("prev_max", l.prev_max, level + ": PrevGroupMax, previously mapped members kept", at_least(l.prev_min));
+  f.field("prev_share", l.prev_share,
+          level + ": adaptive preset: PrevGroupMin as a share of the points in view (3 to prev_min)", above(0.0),
+          at_most(1.0));
   f.field("next_min", l.next_min, level + ": NextGroupMin, ungrouped members needed", at_least(1));
   f.field("binning", l.binning, level + ": RltBinning removes dynamic members (thesis 6.5.3)");
 }
@@ -61,6 +68,7 @@ inline GroupLevelOptions temporary_level_defaults() {
           .accuracy_reduction = 2,
           .prev_min = 6,
           .prev_max = 20,
+          .prev_share = 0.06,
           .next_min = 1,
           .binning = false};
 }
@@ -72,6 +80,7 @@ inline GroupLevelOptions final_level_defaults() {
           .accuracy_reduction = 10,
           .prev_min = 20,
           .prev_max = 20,
+          .prev_share = 0.2,
           .next_min = 1,
           .binning = true};
 }
@@ -107,7 +116,23 @@ enum class GlobalRelaxation : unsigned char {
 };
 std::string_view to_string(GlobalRelaxation relaxation);  // "off", "on_loop_closure", "periodic"
 
+// The thesis tuned its constants to one world: about 100 points in view, noise sigma 0.1
+// (thesis 6.6.1). Beyond it (issue 16) the adaptive preset derives group creation from what the
+// sensor shows; the scenario layer also scales the matching bounds with the noise (noise_bounds.hpp).
+enum class Preset : unsigned char {
+  Thesis,    // the thesis's constants as they stand, and a run fails when the map frame cannot be rooted
+  Adaptive,  // PrevGroupMin from the points in view (prev_share); a map frame that cannot be rooted
+             // moves on to a later frame with three points in view (map_frame_iteration)
+};
+std::string_view to_string(Preset preset);  // "thesis", "adaptive"
+
+// PrevGroupMin of `level` at a group whose window shows `in_view` points per iteration on average.
+int prev_group_min(const GroupLevelOptions& level, Preset preset, double in_view);
+
 struct PointSlamOptions {
+  // Thesis: the constants below as they stand. The library's default; the scenario layer's is
+  // adaptive (relslam keys).
+  Preset preset = Preset::Thesis;
   // Local matching compares with the latest observation of points seen in the last
   // match_look_back iterations ("a few", thesis 6.2.3) [C].
   int match_look_back = 3;
@@ -224,19 +249,30 @@ inline int history_window(const PointSlamOptions& o) {
          o.match_look_back + 2;
 }
 
+// The defaults under `preset` (the rest of the constants are the same under both).
+inline PointSlamOptions preset_options(Preset preset) {
+  PointSlamOptions o;
+  o.preset = preset;
+  return o;
+}
+
 // The scenario keys of PointSlamOptions (relative_point.*): help and checks per field, in the
 // order of the key table. A bound that is another field's value is read from `o`.
 void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
+  f.choice("preset", o.preset,
+           "thesis: the thesis's constants (Chapter 6 scenarios); adaptive: group creation from the points in view, "
+           "bounds from the noise, a late map frame when the first cannot be rooted (beyond the thesis)",
+           {Preset::Thesis, Preset::Adaptive});
   f.field("match_look_back", o.match_look_back, "local matching looks this many iterations back (thesis 6.2.3)",
           at_least(1));
-  f.field("local_bound", o.local_bound, "local matching bound, units (frame motion plus noise)", above(0.0));
+  f.field("local_bound", o.local_bound, "local matching bound, units (frame motion plus noise); adaptive: scaled with the noise", above(0.0));
   f.field("compensate_motion", o.compensate_motion,
           "predict local candidates by the fitted frame motion (beyond the thesis)");
-  f.field("compensated_bound", o.compensated_bound, "local bound after motion compensation, units (noise only)",
+  f.field("compensated_bound", o.compensated_bound, "local bound after motion compensation, units (noise only); adaptive: scaled with the noise",
           above(0.0), at_most(o.local_bound));
   f.field("motion_outlier_cut", o.motion_outlier_cut, "motion fit keeps pairs within this many median residuals",
           above(1.0));
-  f.field("global_bound", o.global_bound, "global matching bound, units (thesis 6.5.1)", above(0.0));
+  f.field("global_bound", o.global_bound, "global matching bound, units (thesis 6.5.1); adaptive: scaled with the noise", above(0.0));
   // The cell overlap must hold a whole matching bound.
   f.field("local_cell_size", o.local_cell_size, "local OVLPQuadTree cell, units; 1.5 = the thesis's small quads",
           at_least(o.local_bound));
@@ -279,7 +315,7 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
   f.nested("binning", o.binning);
   f.field("merge_points", o.merge_points, "merge new points into older ones found at the same place (thesis 6.5.2)");
   f.field("merge_delay", o.merge_delay, "iterations after creation a point is checked for merging", at_least(1));
-  f.field("merge_bound", o.merge_bound, "merging bound, units", above(0.0));
+  f.field("merge_bound", o.merge_bound, "merging bound, units; adaptive: scaled with the noise", above(0.0));
   f.field("ring_capacity", o.ring_capacity, "observations kept per RltPoint", at_least(history_window(o)));
   f.field("charting_capacity", o.charting_capacity, "iterations kept by RltPointCharting (2048 with level 3)",
           at_least(history_window(o)), at_most(kMaxChartingCapacity));

@@ -55,8 +55,8 @@ struct BinningOptions {
 void describe(OptionsOf<BinningOptions> auto& o, auto& f) {
   f.choice("pairing", o.pairing, "bins meet disjointly per round, or every bin initiates (spec 5.7)",
            {BinPairing::Disjoint, BinPairing::EveryBin});
-  f.field("abs_gap", o.abs_gap, "threshold gap, absolute part, units", at_least(0.0));
-  f.field("rel_gap", o.rel_gap, "threshold gap, relative part", at_least(0.0));
+  f.field("abs_gap", o.abs_gap, "threshold gap, absolute part, units; adaptive: scaled with the noise", at_least(0.0));
+  f.field("rel_gap", o.rel_gap, "threshold gap, relative part; adaptive: scaled with the noise", at_least(0.0));
   f.field("threshold_margin", o.threshold_margin, "threshold gets half the minimum gap as a margin");
   f.field("min_pair_samples", o.min_pair_samples, "common observations a pair needs", at_least(2));
   f.field("majority_fraction", o.majority_fraction, "a bin holding more than this share ends the pairing (thesis: 0.5)",

@@ -78,6 +78,8 @@ class RltMapper {
   const std::vector<RltGroup>& groups() const { return map_.groups; }
   const Rigid3& pose() const { return pose_; }
   GroupStats group_stats() const { return map_.stats; }
+  // The iteration whose robot frame is the map frame: the first, or with the adaptive preset a
+  // later one when the first could not root the map.
   int first_iteration() const { return map_.first_iteration; }
   // Empty while the run is healthy; otherwise why no map can ever be built.
   const std::string& failure() const { return failure_; }
@@ -88,7 +90,8 @@ class RltMapper {
   void record(PointId id, const Eigen::Vector3d& p, int k, bool returned);
   PointId create_point(const Eigen::Vector3d& p, int k);
   void compute_groups(int k);
-  void check_map_frame();
+  void check_map_frame(int k);
+  void move_map_frame(int k);
   void update_pose(const ObservationFrame& frame, StepResult& result);
   void relax(StepResult& result);
 

@@ -52,6 +52,9 @@ class Algorithm {
   virtual std::optional<Eigen::Vector3d> position(int id) const = 0;
   // The estimates on the map now, ascending.
   virtual std::vector<int> map_ids() const = 0;
+  // Steps at the start before the map frame: no pose existed there (Relative Point's adaptive
+  // preset moves the map frame past a sparse start), so trajectory errors count from it on.
+  virtual std::size_t steps_before_map_frame() const { return 0; }
   // Why the algorithm gave up without throwing ("" while it has not).
   virtual std::string failure() const { return ""; }
   virtual std::optional<TimeBudget> time_budget() const { return std::nullopt; }

@@ -69,6 +69,11 @@ struct Variant {
   std::vector<std::pair<std::string, nlohmann::json>> settings;  // scenario key -> value
 };
 
+struct DerivedValue {
+  double value = 0;
+  std::string source;  // "given" when the file or --set set it, else what it was derived from
+};
+
 struct Scenario {
   std::string name;         // defaults to the file name without extension
   std::string description;  // what the experiment is for (thesis figures)
@@ -77,7 +82,9 @@ struct Scenario {
   sim::SimOptions sim;                     // the point world (kind simulation)
   PlanarOptions planar;                    // the planar world (kind planar)
   std::vector<std::string> algorithms;
-  point::PointSlamOptions relative_point;  // the Relative Point algorithm's constants
+  // The Relative Point algorithm's constants; a scenario's preset is adaptive unless it says
+  // "thesis" (the Chapter 6 scenarios do), the library's is the thesis.
+  point::PointSlamOptions relative_point = point::preset_options(point::Preset::Adaptive);
   plane::RelativePlaneOptions relative_plane;  // the Relative Plane algorithm's (kind planar)
   Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
   Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
@@ -86,6 +93,9 @@ struct Scenario {
   OutputOptions output;
   std::vector<SweepAxis> sweep;
   std::vector<Variant> variants;
+  // Values a preset derived rather than read (key -> value and where it came from), for
+  // manifest.json; not keys themselves (point_bounds.hpp).
+  std::map<std::string, DerivedValue> derived;
 };
 
 }  // namespace relslam::eval

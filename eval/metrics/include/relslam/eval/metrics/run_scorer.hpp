@@ -40,7 +40,8 @@ class RunScorer {
   // Fills the row's scores (everything but algorithm, status and landmarks_on_map) over the
   // first `iterations` scored iterations (all of them by default): a run can then be compared
   // with one that stopped earlier, at the same point.
-  void fill(SummaryRow& row, std::size_t iterations = SIZE_MAX) const;
+  // Trajectory errors over the scored iterations from `first` on (the ones before had no pose).
+  void fill(SummaryRow& row, std::size_t iterations = SIZE_MAX, std::size_t first = 0) const;
   std::size_t scored() const { return history_.size(); }
   const std::vector<Rigid3>& estimates() const { return estimates_; }
 
