@@ -46,7 +46,10 @@ bool RltGroup::accumulate(const std::vector<RltPoint>& points, int from, int to,
 
 std::optional<Rigid3> RltGroup::registration(const std::vector<RltPoint>& points, int first_iteration) const {
   if (used_ == 0) return std::nullopt;
-  std::vector<Eigen::Vector3d> from, to;
+  // Reused between calls: every anchored group registers each iteration it is computed.
+  thread_local std::vector<Eigen::Vector3d> from, to;
+  from.clear();
+  to.clear();
   for (std::size_t i = 0; i < members_.size(); ++i) {
     const RltPoint& p = points[members_[i]];
     if (registration_ == Registration::FirstObservations) {

@@ -10,7 +10,7 @@ constexpr double kCollinear = 1e-9;
 
 }  // namespace
 
-std::optional<Rigid3> rlt_icp(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
+std::optional<Rigid3> rlt_icp(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
   if (a.size() != b.size() || a.size() < 3) return std::nullopt;
   Eigen::Vector3d mean_a = Eigen::Vector3d::Zero(), mean_b = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < a.size(); ++i) {
