@@ -5,6 +5,17 @@
 #include <stdexcept>
 
 namespace relslam::point {
+namespace {
+
+// ObservationRing::at's two usual answers without the call: a group is computed at the current
+// iteration (thesis 6.3.3), where each member was either just observed or not since.
+const Point* observation_at(const ObservationRing& ring, int t) {
+  if (ring.empty() || ring.latest().iteration < t) return nullptr;
+  if (ring.latest().iteration == t) return &ring.latest();
+  return ring.at(t);
+}
+
+}  // namespace
 
 RltGroup::RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vector<PointId> members,
                    std::vector<bool> anchor, std::array<int, 3> basis, Registration registration)
@@ -29,7 +40,7 @@ bool RltGroup::accumulate(const std::vector<RltPoint>& points, int from, int to,
     if (!computed_on_.empty() && t <= computed_on_.last() && computed_on_.contains(t)) continue;
     bool all_present = true;
     for (std::size_t i = 0; i < members_.size() && all_present; ++i) {
-      scratch_[i] = points[members_[i]].observations.at(t);
+      scratch_[i] = observation_at(points[members_[i]].observations, t);
       all_present = scratch_[i] != nullptr;
     }
     if (!all_present) continue;  // thesis 6.3.3: only iterations with every member observed
