@@ -36,11 +36,26 @@ RltGroup::RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vect
 bool RltGroup::accumulate(const std::vector<RltPoint>& points, int from, int to, double basis_epsilon) {
   bool added = false;
   scratch_.resize(members_.size());
+  // Over a range (a new group, a merge: up to look-ahead + 1 iterations), each member's ring is
+  // walked forward once instead of searched for every iteration.
+  thread_local std::vector<int> next;  // per member: its first observation at or after t
+  const bool range = to > from;
+  if (range) {
+    next.resize(members_.size());
+    for (std::size_t i = 0; i < members_.size(); ++i) next[i] = points[members_[i]].observations.lower_bound(from);
+  }
   for (int t = from; t <= to; ++t) {
     if (!computed_on_.empty() && t <= computed_on_.last() && computed_on_.contains(t)) continue;
     bool all_present = true;
     for (std::size_t i = 0; i < members_.size() && all_present; ++i) {
-      scratch_[i] = observation_at(points[members_[i]].observations, t);
+      const ObservationRing& ring = points[members_[i]].observations;
+      if (range) {
+        int& j = next[i];
+        while (j < ring.size() && ring[j].iteration < t) ++j;
+        scratch_[i] = j < ring.size() && ring[j].iteration == t ? &ring[j] : nullptr;
+      } else {
+        scratch_[i] = observation_at(ring, t);
+      }
       all_present = scratch_[i] != nullptr;
     }
     if (!all_present) continue;  // thesis 6.3.3: only iterations with every member observed
