@@ -77,7 +77,7 @@ void PointMatcher::prepare(const std::vector<LocalCandidate>& candidates, int k,
 void PointMatcher::assign_greedily(int& counter) {
   // A pair that is both its observation's only pair and its point's only pair meets no rival:
   // closest-first assignment takes it whenever its turn comes, unless the point was taken by
-  // an earlier pass. Only the contested rest needs the order (most pairs are uncontested).
+  // an earlier pass. Only the contested rest needs the order.
   // pairs_ arrive grouped by observation.
   for (const Pair& c : pairs_) {
     if (c.id >= static_cast<PointId>(claims_.size())) claims_.resize(static_cast<std::size_t>(c.id) * 2 + 16, 0);
