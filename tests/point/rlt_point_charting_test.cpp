@@ -60,5 +60,37 @@ TEST(RltPointCharting, ReplaceRedirectsWithoutDuplicates) {
   EXPECT_EQ(charting.at(1), std::vector<PointId>{1});
 }
 
+// Windows that end at the newest iteration come from the recency list, the others from the
+// slots: both must list what the slots hold, merges (replace) included.
+TEST(RltPointCharting, WindowsEndingNowMatchTheSlotsAfterMerges) {
+  test::SeededRandom rng(402);
+  RltPointCharting charting(64);
+  int next_id = 0;
+  std::vector<int> alive;
+  for (int k = 0; k < 300; ++k) {
+    charting.begin_iteration(k == 150 ? 160 : k < 150 ? k : k + 10);  // one gap of skipped iterations
+    for (int n = 0; n < 3; ++n) alive.push_back(next_id++);
+    std::set<int> seen;
+    for (int id : alive)
+      if (rng.below(4) != 0) seen.insert(id);
+    for (int id : seen) charting.add(id);
+    if (alive.size() > 40) alive.erase(alive.begin(), alive.begin() + 3);
+    if (k % 7 == 6 && alive.size() > 2) {  // a newer point merged into an older one
+      const int newer = alive.back(), older = alive.front();
+      charting.replace(newer, older);
+      alive.pop_back();
+    }
+    const int now = charting.newest();
+    for (int back : {0, 1, 5, 30, 63, 80}) {
+      std::set<int> expected;
+      for (int t = now - back; t <= now; ++t) expected.insert(charting.at(t).begin(), charting.at(t).end());
+      std::vector<PointId> out;
+      charting.enumerate_unique(now - back, now, out);
+      EXPECT_EQ(std::set<int>(out.begin(), out.end()), expected) << "iteration " << now << " back " << back;
+      EXPECT_EQ(out.size(), expected.size()) << "iteration " << now << " back " << back << ": no duplicates";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace relslam::point

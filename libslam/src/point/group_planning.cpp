@@ -39,13 +39,19 @@ double in_view(const RltPointCharting& charting, int a, int b) {
 // enumeration order, while staying independent of input order. Ordering ties by id instead
 // picks the oldest points, all near the robot: the new points, far ahead, are then
 // extrapolated from a tight cluster and the map's roll and pitch errors grow group by group.
-void GroupPlanner::rank(std::vector<PointId>& out) {
-  std::sort(ranked_.begin(), ranked_.end(), [](const auto& a, const auto& b) {
-    if (a.first != b.first) return a.first > b.first;
-    const auto ha = tie_break(a.second), hb = tie_break(b.second);
-    return ha != hb ? ha < hb : a.second < b.second;
-  });
-  for (const auto& [count, id] : ranked_) out.push_back(id);
+void GroupPlanner::rank(std::vector<PointId>& out, std::size_t limit) {
+  // A total order (ids are distinct), so only the first `limit` need sorting.
+  const auto order = [](const Ranked& a, const Ranked& b) {
+    if (a.count != b.count) return a.count > b.count;
+    return a.tie != b.tie ? a.tie < b.tie : a.id < b.id;
+  };
+  const auto end = ranked_.begin() + static_cast<std::ptrdiff_t>(std::min(limit, ranked_.size()));
+  std::partial_sort(ranked_.begin(), end, ranked_.end(), order);
+  for (auto r = ranked_.begin(); r != end; ++r) out.push_back(r->id);
+}
+
+void GroupPlanner::candidate(int count, PointId id) {
+  ranked_.push_back({count, tie_break(id), id});  // the hash once, not per comparison
 }
 
 bool GroupPlanner::previously_mapped(const RltPoint& p, const LevelContext& level, int c0) const {
@@ -124,10 +130,9 @@ PlanOutcome GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& lev
   for (PointId id : scratch_) {
     const RltPoint& p = points[id];
     if (previously_mapped(p, level, c0) && count_new(p) >= need)
-      ranked_.push_back({p.interval.count(c0 - o.look_back, ahead), id});
+      candidate(p.interval.count(c0 - o.look_back, ahead), id);
   }
-  rank(plan.members);
-  if (static_cast<int>(plan.members.size()) > o.prev_max) plan.members.resize(o.prev_max);
+  rank(plan.members, static_cast<std::size_t>(o.prev_max));
   const std::size_t anchors = plan.members.size();
   const int prev_min =
       options.preset == Preset::Thesis ? o.prev_min : prev_group_min(o, options.preset, in_view(charting, c0, ahead));
@@ -150,7 +155,7 @@ PlanOutcome GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& lev
     const int n = count_new(p);
     if (n < need) continue;
     has_c = has_c || id == c;
-    ranked_.push_back({n, id});
+    candidate(n, id);
   }
   if (!has_c || static_cast<int>(ranked_.size()) < o.next_min) return no_group();
   rank(plan.members);
@@ -200,14 +205,14 @@ PlanOutcome GroupPlanner::plan_level3(PointId c, int k, const std::vector<RltPoi
     const RltPoint& p = points[id];
     if (id == c || !p.on_map()) continue;
     const int level = p.level3_grouped ? 2 : p.final_grouped ? 1 : 0;
-    ranked_.push_back({level * (span_of(s, e) + 1) + p.interval.count(s, e), id});
+    candidate(level * (span_of(s, e) + 1) + p.interval.count(s, e), id);
   }
   rank(known);
   ranked_.clear();
   for (PointId id : scratch_) {
     const RltPoint& p = points[id];
     if (id != c && !p.on_map() && !p.dynamic && !p.merged && !p.level3_grouped)
-      ranked_.push_back({p.interval.count(s, e), id});
+      candidate(p.interval.count(s, e), id);
   }
   rank(fresh);
   if (static_cast<int>(known.size()) < o.prev_min) return outcome;

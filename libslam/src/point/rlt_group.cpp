@@ -5,6 +5,17 @@
 #include <stdexcept>
 
 namespace relslam::point {
+namespace {
+
+// ObservationRing::at's two usual answers without the call: a group is computed at the current
+// iteration (thesis 6.3.3), where each member was either just observed or not since.
+const Point* observation_at(const ObservationRing& ring, int t) {
+  if (ring.empty() || ring.latest().iteration < t) return nullptr;
+  if (ring.latest().iteration == t) return &ring.latest();
+  return ring.at(t);
+}
+
+}  // namespace
 
 RltGroup::RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vector<PointId> members,
                    std::vector<bool> anchor, std::array<int, 3> basis, Registration registration)
@@ -25,11 +36,26 @@ RltGroup::RltGroup(GroupId id, GroupLevel level, int c0, int built_at, std::vect
 bool RltGroup::accumulate(const std::vector<RltPoint>& points, int from, int to, double basis_epsilon) {
   bool added = false;
   scratch_.resize(members_.size());
+  // Over a range (a new group, a merge: up to look-ahead + 1 iterations), each member's ring is
+  // walked forward once instead of searched for every iteration.
+  thread_local std::vector<int> next;  // per member: its first observation at or after t
+  const bool range = to > from;
+  if (range) {
+    next.resize(members_.size());
+    for (std::size_t i = 0; i < members_.size(); ++i) next[i] = points[members_[i]].observations.lower_bound(from);
+  }
   for (int t = from; t <= to; ++t) {
     if (!computed_on_.empty() && t <= computed_on_.last() && computed_on_.contains(t)) continue;
     bool all_present = true;
     for (std::size_t i = 0; i < members_.size() && all_present; ++i) {
-      scratch_[i] = points[members_[i]].observations.at(t);
+      const ObservationRing& ring = points[members_[i]].observations;
+      if (range) {
+        int& j = next[i];
+        while (j < ring.size() && ring[j].iteration < t) ++j;
+        scratch_[i] = j < ring.size() && ring[j].iteration == t ? &ring[j] : nullptr;
+      } else {
+        scratch_[i] = observation_at(ring, t);
+      }
       all_present = scratch_[i] != nullptr;
     }
     if (!all_present) continue;  // thesis 6.3.3: only iterations with every member observed
@@ -46,7 +72,10 @@ bool RltGroup::accumulate(const std::vector<RltPoint>& points, int from, int to,
 
 std::optional<Rigid3> RltGroup::registration(const std::vector<RltPoint>& points, int first_iteration) const {
   if (used_ == 0) return std::nullopt;
-  std::vector<Eigen::Vector3d> from, to;
+  // Reused between calls: every anchored group registers each iteration it is computed.
+  thread_local std::vector<Eigen::Vector3d> from, to;
+  from.clear();
+  to.clear();
   for (std::size_t i = 0; i < members_.size(); ++i) {
     const RltPoint& p = points[members_[i]];
     if (registration_ == Registration::FirstObservations) {

@@ -10,7 +10,7 @@ constexpr double kCollinear = 1e-9;
 
 }  // namespace
 
-std::optional<Rigid3> rlt_icp(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
+std::optional<Rigid3> rlt_icp(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b) {
   if (a.size() != b.size() || a.size() < 3) return std::nullopt;
   Eigen::Vector3d mean_a = Eigen::Vector3d::Zero(), mean_b = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -19,8 +19,17 @@ std::optional<Rigid3> rlt_icp(const std::vector<Eigen::Vector3d>& a, const std::
   }
   mean_a /= static_cast<double>(a.size());
   mean_b /= static_cast<double>(b.size());
-  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
-  for (std::size_t i = 0; i < a.size(); ++i) h += (a[i] - mean_a) * (b[i] - mean_b).transpose();
+  // The cross-covariance column by column: the very sums of h += da * db^T (each element adds
+  // da(r) * db(c) in pair order), with the nine accumulators in registers, not in memory.
+  Eigen::Vector3d h0 = Eigen::Vector3d::Zero(), h1 = Eigen::Vector3d::Zero(), h2 = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Eigen::Vector3d da = a[i] - mean_a, db = b[i] - mean_b;
+    h0 += da * db.x();
+    h1 += da * db.y();
+    h2 += da * db.z();
+  }
+  Eigen::Matrix3d h;
+  h << h0, h1, h2;
 
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::Vector3d s = svd.singularValues();

@@ -231,7 +231,9 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   const int k = frame.iteration;
   const std::vector<PointId>& seen = map_.charting.at(k);
   auto register_to = [&](bool provisional) -> std::optional<Rigid3> {
-    std::vector<Eigen::Vector3d> robot, world;
+    std::vector<Eigen::Vector3d>&robot = robot_scratch_, &world = world_scratch_;
+    robot.clear();
+    world.clear();
     for (PointId id : seen) {
       const RltPoint& p = map_.points[id];
       if (p.dynamic || p.merged) continue;

@@ -39,7 +39,8 @@ int ObservationRing::lower_bound(int iteration) const {
 }
 
 const Point* ObservationRing::at(int iteration) const {
-  if (size_ > 0 && latest().iteration == iteration) return &latest();  // the usual question
+  if (size_ == 0 || latest().iteration < iteration) return nullptr;  // not seen since
+  if (latest().iteration == iteration) return &latest();               // the usual question
   const int i = lower_bound(iteration);
   return i < size_ && (*this)[i].iteration == iteration ? &(*this)[i] : nullptr;
 }

@@ -17,6 +17,36 @@ void RltPointCharting::begin_iteration(int k) {
   started_ = true;
 }
 
+void RltPointCharting::add(PointId id) {
+  slots_[slot(newest_)].push_back(id);
+  grow(id);
+  if (latest_[id] != kNone) unlink(id);
+  link_after(id, kNone);
+  latest_[id] = newest_;
+}
+
+void RltPointCharting::grow(PointId id) {
+  if (static_cast<std::size_t>(id) < latest_.size()) return;
+  const std::size_t size = static_cast<std::size_t>(id) * 2 + 16;
+  latest_.resize(size, kNone);
+  newer_.resize(size, kNone);
+  older_.resize(size, kNone);
+}
+
+void RltPointCharting::unlink(PointId id) {
+  (newer_[id] == kNone ? front_ : older_[newer_[id]]) = older_[id];
+  if (older_[id] != kNone) newer_[older_[id]] = newer_[id];
+  newer_[id] = older_[id] = kNone;
+}
+
+void RltPointCharting::link_after(PointId id, PointId before) {
+  PointId& next = before == kNone ? front_ : older_[before];
+  older_[id] = next;
+  newer_[id] = before;
+  if (next != kNone) newer_[next] = id;
+  next = id;
+}
+
 const std::vector<PointId>& RltPointCharting::at(int k) const {
   static const std::vector<PointId> none;
   if (!started_ || k > newest_ || k < oldest() || k < 0) return none;
@@ -27,6 +57,13 @@ void RltPointCharting::enumerate_unique(int a, int b, std::vector<PointId>& out)
   if (!started_) return;
   a = std::max({a, oldest(), 0});
   b = std::min(b, newest_);
+  if (a > b) return;
+  bool seen_after_b = false;
+  for (int k = std::max(b + 1, oldest()); k <= newest_ && !seen_after_b; ++k) seen_after_b = !slots_[slot(k)].empty();
+  if (!seen_after_b) {
+    for (PointId id = front_; id != kNone && latest_[id] >= a; id = older_[id]) out.push_back(id);
+    return;
+  }
   if (++enumeration_ == 0) {  // wrapped after 4 billion enumerations: restart the stamps
     std::fill(stamp_.begin(), stamp_.end(), 0u);
     enumeration_ = 1;
@@ -41,6 +78,19 @@ void RltPointCharting::enumerate_unique(int a, int b, std::vector<PointId>& out)
 }
 
 void RltPointCharting::replace(PointId from, PointId to) {
+  // `to` is now seen wherever `from` was: it takes from's place in the recency list if that is
+  // newer than its own.
+  const auto listed = [&](PointId id) { return static_cast<std::size_t>(id) < latest_.size() && latest_[id] != kNone; };
+  if (listed(from)) {
+    if (!listed(to) || latest_[to] < latest_[from]) {
+      if (listed(to)) unlink(to);
+      grow(to);
+      link_after(to, newer_[from]);
+      latest_[to] = latest_[from];
+    }
+    unlink(from);
+    latest_[from] = kNone;
+  }
   for (auto& ids : slots_) {
     const bool has_to = std::find(ids.begin(), ids.end(), to) != ids.end();
     for (std::size_t i = 0; i < ids.size(); ++i)

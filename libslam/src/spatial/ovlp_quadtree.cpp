@@ -81,13 +81,27 @@ void OverlappingGrid<Axes>::build(const std::vector<IndexedPoint>& points) {
     total *= static_cast<std::size_t>(extent_[a]);
   }
 
-  // Counting sort into compressed rows: count, prefix sum, fill.
+  // Counting sort into compressed rows: count, prefix sum, fill. Each point's cells are found
+  // once; the fill replays them (-1 ends a point's list).
   start_.assign(total + 1, 0);
-  for (const IndexedPoint& e : points) for_each_cell_of(e.p, [&](int c) { ++start_[c + 1]; });
+  cells_.clear();
+  for (const IndexedPoint& e : points) {
+    for_each_cell_of(e.p, [&](int c) {
+      ++start_[c + 1];
+      cells_.push_back(c);
+    });
+    cells_.push_back(-1);
+  }
   for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
   entries_.resize(static_cast<std::size_t>(start_.back()));
   fill_.assign(start_.begin(), start_.end() - 1);
-  for (const IndexedPoint& e : points) for_each_cell_of(e.p, [&](int c) { entries_[fill_[c]++] = e; });
+  auto e = points.begin();
+  for (const int c : cells_) {
+    if (c < 0)
+      ++e;
+    else
+      entries_[fill_[c]++] = *e;
+  }
 }
 
 template <int Axes>

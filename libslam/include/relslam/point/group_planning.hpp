@@ -7,6 +7,7 @@
 #include "relslam/point/rlt_ungrouped_list.hpp"
 
 #include <chrono>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -56,10 +57,17 @@ class GroupPlanner {
                    const std::vector<RltPoint>& points, const BinningOptions& binning, PlanOutcome& outcome) const;
   std::vector<Eigen::Vector3d> basis_positions(const std::vector<PointId>& members, const std::vector<RltPoint>& points,
                                                int c0, int k) const;
-  // Orders ranked_ (count, id) most first, ties by a fixed hash of the id, into `out`.
-  void rank(std::vector<PointId>& out);
+  struct Ranked {
+    int count;
+    std::uint64_t tie;  // fixed hash of the id
+    PointId id;
+  };
+  void candidate(int count, PointId id);  // appends to ranked_
+  // Orders ranked_ most counted first, ties by the hash, then the id, and appends the first
+  // `limit` to `out`.
+  void rank(std::vector<PointId>& out, std::size_t limit = SIZE_MAX);
   std::vector<PointId> scratch_;
-  std::vector<std::pair<int, PointId>> ranked_;
+  std::vector<Ranked> ranked_;
 };
 
 }  // namespace relslam::point

@@ -55,9 +55,17 @@ class PointMatcher {
     PointId id;
   };
   Rigid3 predicted_motion(int from, int to) const;  // robot_to_T_robot_from from stored motions
-  void match_local(const std::vector<Eigen::Vector3d>& observations, double bound);
-  std::optional<Rigid3> robust_motion(const std::vector<Eigen::Vector3d>& observations) const;
+  // With candidates_T_built, the candidates have moved by it since the local index was built.
+  void match_local(const std::vector<Eigen::Vector3d>& observations, double bound,
+                   const Rigid3* candidates_T_built = nullptr);
+  // The same pass over the pairs the first, unmoved pass found (first_pairs_).
+  void rematch_local(const std::vector<Eigen::Vector3d>& observations, double bound);
+  void begin_local_pass(std::size_t observations);
+  // Pairs observation i with candidate id, found at `candidate`, if within bound.
+  void add_pair(const Eigen::Vector3d& observation, int i, PointId id, const Eigen::Vector3d& candidate, double bound);
+  std::optional<Rigid3> robust_motion(const std::vector<Eigen::Vector3d>& observations);
   void assign_greedily(int& counter);
+  void take(const Pair& pair, int& counter);  // assigns the pair unless either side is taken
   bool taken(PointId id) const { return id < static_cast<PointId>(taken_.size()) && taken_[id] == stamp_; }
 
   PointSlamOptions options_;
@@ -69,7 +77,12 @@ class PointMatcher {
   int current_ = 0;                               // the iteration being matched
   MatchResult result_;
   std::vector<Pair> pairs_;
+  std::vector<Pair> first_pairs_;  // the first local pass's pairs, before assignment
   std::vector<unsigned> taken_;  // per point: the stamp of the iteration that took it
+  std::vector<Eigen::Vector3d> from_, to_;  // robust_motion's pairs
+  std::vector<double> residuals_, sorted_residuals_;
+  std::vector<int> claims_;      // per point: pairs naming it in the batch being assigned (else 0)
+  std::vector<std::optional<Rigid3>> motion_from_;  // prepare(): prediction from k - index
   unsigned stamp_ = 0;
 };
 

@@ -4,7 +4,7 @@
 #include "relslam/core/rigid.hpp"
 
 #include <optional>
-#include <vector>
+#include <span>
 
 namespace relslam::point {
 
@@ -14,6 +14,7 @@ namespace relslam::point {
 // rotated mean difference. Planar sets (all z = 0, as in Victoria Park) are handled; returns
 // nothing for fewer than 3 pairs or (near-)collinear points, whose rotation about their line
 // is undetermined.
-std::optional<Rigid3> rlt_icp(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b);
+// Spans, so callers can pass scratch buffers they keep between iterations.
+std::optional<Rigid3> rlt_icp(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b);
 
 }  // namespace relslam::point

@@ -111,6 +111,7 @@ class RltMapper {
   std::vector<LocalCandidate> local_candidates_;
   std::vector<GroupId> queued_groups_;  // groups notified this iteration (thesis 6.3.3)
   std::vector<int> group_queued_at_;
+  std::vector<Eigen::Vector3d> robot_scratch_, world_scratch_;  // update_pose's registration pairs
 };
 
 }  // namespace relslam::point

@@ -41,7 +41,8 @@ class OverlappingGrid final : public LocalIndex {
   std::array<int, Axes> extent_{};  // cells per axis
   std::vector<int> start_;          // CSR offsets into entries_, one per cell plus one
   std::vector<IndexedPoint> entries_;
-  std::vector<int> fill_;  // scratch for build
+  std::vector<int> fill_;   // scratch for build
+  std::vector<int> cells_;  // scratch for build: each point's cells, -1 after each point
 };
 
 using OVLPQuadTree = OverlappingGrid<2>;
