@@ -137,5 +137,31 @@ TEST(EmRun, UnknownExtractorIsAnInputError) {
   EXPECT_NE(r.err.find("relative_plane.extractor"), std::string::npos) << r.err;
 }
 
+// E30: the test bench writes a row per case, seed and extractor; EM finds the corner and the
+// attached wall at the default settings, and a gap below EM's merge reach (2·e_exp) is bridged.
+TEST(EmBench, WritesEveryCaseAndFindsTheDefaultScenes) {
+  test::ScratchDir dir;
+  const auto r = run_relslam({"em-bench", test::source_path("scenarios/p-em-office.json").string(), "--out",
+                              (dir / "bench").string(), "--seeds", "1", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Table t = read_csv(dir / "bench/bench.csv");
+  const std::size_t extractors = eval::extractor_available(eval::PlaneExtractorKind::RansacOpen3d) ? 3 : 2;
+  EXPECT_EQ(t.rows.size(), 17 * extractors);  // 17 cases (scene and variant)
+  int checked = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    if (t.text(i, "extractor") == "ransac_open3d") continue;
+    const std::string scene = t.text(i, "scene"), variant = t.text(i, "variant");
+    const std::string where = scene + " " + variant + " " + t.text(i, "extractor");
+    if ((scene == "corner" && variant == "exclusivity=on") || (scene == "attached_smaller" && variant == "default") ||
+        (scene == "over_gap" && variant == "gap=1")) {
+      EXPECT_EQ(t.number(i, "recall"), 1.0) << where;
+      EXPECT_EQ(t.number(i, "precision"), 1.0) << where;
+      ++checked;
+    }
+    if (scene == "over_gap" && variant == "gap=0.2") EXPECT_EQ(t.number(i, "under_segmented"), 1) << where;
+  }
+  EXPECT_EQ(checked, 6);
+}
+
 }  // namespace
 }  // namespace relslam
