@@ -10,6 +10,10 @@
 #include <limits>
 
 namespace relslam::eval {
+
+// Test names and failure messages spell the extractor ("em2", not a 4-byte object).
+void PrintTo(PlaneExtractorKind kind, std::ostream* out) { *out << to_string(kind); }
+
 namespace {
 
 class Extractor : public testing::TestWithParam<PlaneExtractorKind> {
