@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The plane-extraction table of README "Plane extraction" (issue 14 §6): EM2, EM1 and the Open3D
-# baseline on the identical point frames of p-em-office (Map D, small frustum) and p-em-room
-# (Map E, large frustum), σ_pt 0.05, seed 1, and the whole pipeline's time (extraction plus
-# Relative Plane per iteration, simulator excluded).
+# baseline on the identical point frames of p-em-office-noise (E24: Map D, small frustum) and
+# p-em-room-noise (E26: Map E, large frustum), σ_pt 0.05, seed 1, and the whole pipeline's time
+# (extraction plus Relative Plane with parts 2-3 per iteration, simulator excluded).
 # Usage: scripts/em_table.sh [out folder, default runs/em-table] [extra relslam --set ...]
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
@@ -11,7 +11,7 @@ shift || true
 relslam="${RELSLAM:-$here/build/relslam}"
 for scene in office room; do
   for extractor in em2 em1 ransac_open3d; do
-    "$relslam" run "$here/scenarios/p-em-$scene.json" --out "$out/$scene-$extractor" --force -q \
+    "$relslam" run "$here/scenarios/p-em-$scene-noise.json" --out "$out/$scene-$extractor" --force -q \
       --set relative_plane.extractor="$extractor" "$@"
   done
 done

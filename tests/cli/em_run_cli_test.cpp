@@ -92,10 +92,10 @@ INSTANTIATE_TEST_SUITE_P(E23E25, NoiseFreeFrames,
                                          FramesCase{"p-em-room.json", kBaselineFrames, "ransac_open3d"}),
                          [](const auto& info) { return scene(std::get<0>(info.param)) + "_" + std::get<2>(info.param); });
 
-// Issue 14 §5: the noise-free pipeline maps every wall. Part 1 alone (key points off, the
-// scenarios' default) maps what the plane sensor's runs map (p-office 6 of 36 walls, p-room 3 of
-// 10); with key points (parts 2–3) EM2's planes map all of Map D with the small frustum and all
-// of Map E (one loop here).
+// Issue 14 §5: the noise-free pipeline maps every wall. Part 1 alone (key points off) maps what
+// the plane sensor's runs map (p-office 6 of 36 walls, p-room 3 of 10); with key points (parts
+// 2–3, the scenarios' setting) EM2's planes map all of Map D with the small frustum and all of
+// Map E (one loop here).
 using PipelineCase = std::tuple<std::string, std::string>;  // scenario, walls
 class NoiseFreePipeline : public testing::TestWithParam<PipelineCase> {};
 
@@ -119,8 +119,8 @@ INSTANTIATE_TEST_SUITE_P(E23E25, NoiseFreePipeline,
 TEST(EmRun, SameSeedSameEmFrames) {
   test::ScratchDir dir;
   const std::vector<std::string> quick = {"planar.iterations=15"};
-  ASSERT_EQ(run_relslam(run_args("p-em-room.json", dir / "a", quick)).exit_code, 0);
-  ASSERT_EQ(run_relslam(run_args("p-em-room.json", dir / "b", quick)).exit_code, 0);
+  ASSERT_EQ(run_relslam(run_args("p-em-room-noise.json", dir / "a", quick)).exit_code, 0);
+  ASSERT_EQ(run_relslam(run_args("p-em-room-noise.json", dir / "b", quick)).exit_code, 0);
   const Table a = read_csv(dir / "a/em_frames.csv"), b = read_csv(dir / "b/em_frames.csv");
   ASSERT_EQ(a.rows.size(), b.rows.size());
   const int ms = a.column("ms");
@@ -141,7 +141,7 @@ TEST(EmRun, UnknownExtractorIsAnInputError) {
 // attached wall at the default settings, and a gap below EM's merge reach (2·e_exp) is bridged.
 TEST(EmBench, WritesEveryCaseAndFindsTheDefaultScenes) {
   test::ScratchDir dir;
-  const auto r = run_relslam({"em-bench", test::source_path("scenarios/p-em-office.json").string(), "--out",
+  const auto r = run_relslam({"em-bench", test::source_path("scenarios/p-em-office-noise.json").string(), "--out",
                               (dir / "bench").string(), "--seeds", "1", "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Table t = read_csv(dir / "bench/bench.csv");

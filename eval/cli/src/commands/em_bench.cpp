@@ -18,7 +18,7 @@ void add_em_bench(CLI::App& app, EmBenchArgs& args) {
       "inlier distances, EM1's assignment modes) with EM1, EM2 and the Open3D baseline, for several\n"
       "seeds, with the scenario's relative_plane.em / ransac settings and planar.noise.point_sigma.\n"
       "Writes bench.csv (one row per case, seed and extractor; SegComp at 0.8).",
-      "scenarios/p-em-office.json");
+      "scenarios/p-em-office-noise.json");
   command->add_option("--seeds", args.seeds, "seeds per case (from the scenario's seed on)")->check(CLI::Range(1, 1000));
 }
 
