@@ -7,6 +7,7 @@ packages=(
   build-essential cmake git pkg-config
   libeigen3-dev libmrpt-dev mrpt-apps mrpt-common libopencv-dev nlohmann-json3-dev libcli11-dev libnanoflann-dev
   libceres-dev
+  libopen3d-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-pandas python3-numpy
   parallel

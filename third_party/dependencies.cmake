@@ -9,6 +9,7 @@
 #   nanoflann 1.4     libnanoflann-dev    k-d tree for scoring (eval only)
 #   GTest 1.12        libgtest-dev        tests
 #   benchmark 1.7     libbenchmark-dev    benchmarks
+#   Open3D 0.16       libopen3d-dev       the RANSAC plane baseline (eval/sources only; optional)
 
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.11 REQUIRED)
@@ -19,6 +20,18 @@ find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs videoio)
 foreach(module IN ITEMS mrpt-slam mrpt-obs mrpt-io mrpt-serialization mrpt-poses)
   find_package(${module} REQUIRED)
 endforeach()
+
+# Optional: without it relative_plane.extractor ransac_open3d says it is not built.
+# -DRELSLAM_WITH_OPEN3D=OFF leaves it out even when installed.
+option(RELSLAM_WITH_OPEN3D "Build the Open3D RANSAC plane baseline when Open3D is found" ON)
+set(RELSLAM_OPEN3D OFF)
+if(RELSLAM_WITH_OPEN3D)
+  find_package(Open3D QUIET)  # its version file accepts only an exact version
+  if(Open3D_FOUND)
+    set(RELSLAM_OPEN3D ON)
+  endif()
+endif()
+message(STATUS "relslam: Open3D RANSAC baseline ${RELSLAM_OPEN3D}")
 
 add_library(relslam_mrpt INTERFACE)
 target_link_libraries(relslam_mrpt INTERFACE mrpt::slam mrpt::obs mrpt::io mrpt::serialization mrpt::poses)

@@ -2,6 +2,7 @@
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/cli/commands/bench_binning.hpp"
+#include "relslam/eval/cli/commands/em_bench.hpp"
 #include "relslam/eval/cli/commands/rawlog_info.hpp"
 #include "relslam/eval/cli/commands/render.hpp"
 #include "relslam/eval/cli/commands/run.hpp"
@@ -90,6 +91,8 @@ int run_cli(int argc, const char* const* argv) {
   add_convert(app, convert);
   BenchBinningArgs bench_binning;
   add_bench_binning(app, bench_binning);
+  EmBenchArgs em_bench;
+  add_em_bench(app, em_bench);
   RenderArgs render;
   add_render(app, render);
   app.add_subcommand("algorithms", "List the algorithms a scenario's \"algorithms\" key may name");
@@ -114,6 +117,7 @@ int run_cli(int argc, const char* const* argv) {
     if (app.got_subcommand("scenario")) return run_scenario(scenario);
     if (app.got_subcommand("rawlog")) return run_rawlog(rawlog);
     if (app.got_subcommand("bench-binning")) return run_bench_binning(bench_binning, command_line);
+    if (app.got_subcommand("em-bench")) return run_em_bench_command(em_bench, command_line);
     if (app.got_subcommand("render")) return run_render(render);
     if (app.got_subcommand("algorithms")) {
       std::cout << "On point landmarks (kind simulation, rawlogs, Victoria Park):\n";

@@ -307,6 +307,7 @@ std::vector<ScenarioKey> build_keys() {
   add_keys<&Scenario::output>(keys, "output");
   add_keys<&Scenario::relative_point>(keys, "relative_point");
   add_keys<&Scenario::relative_plane>(keys, "relative_plane");
+  add_keys<&Scenario::extraction>(keys, "relative_plane");
   add_keys<&Scenario::ekf6d>(keys, "ekf6d");
   add_keys<&Scenario::ekf2d>(keys, "ekf2d");
   add_keys<&Scenario::victoria_park>(keys, "victoria_park");
@@ -327,6 +328,20 @@ const ScenarioKey* find_scenario_key(const std::string& key) {
   return nullptr;
 }
 
+namespace {
+
+// A table cell's text with its pipes escaped ("|n_y|" would end the cell).
+std::string cell(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string scenario_keys_markdown() {
   const Scenario defaults;
   std::ostringstream out;
@@ -334,7 +349,7 @@ std::string scenario_keys_markdown() {
   for (const ScenarioKey& k : scenario_keys()) {
     std::string value = k.read(defaults).dump();
     if (k.key == "name") value = "file name";
-    out << "| `" << k.key << "` | " << k.type << " | `" << value << "` | " << k.help << " |\n";
+    out << "| `" << k.key << "` | " << k.type << " | `" << value << "` | " << cell(k.help) << " |\n";
   }
   out << "| `sweep` | object | `{}` | parameter grid for `relslam sweep`: key → list of values |\n";
   out << "| `variants` | object | `{}` | named settings for `relslam sweep` (axis `variant`): name → {key: value} |\n";

@@ -1,5 +1,7 @@
 #include "relslam/eval/config/scenario_loading.hpp"
 
+#include "relslam/em/options.hpp"
+
 #include "relslam/eval/config/json_document.hpp"
 #include "relslam/eval/config/point_bounds.hpp"
 #include "relslam/eval/config/scenario_keys.hpp"
@@ -178,6 +180,8 @@ void check_semantics(const LoadedScenario& loaded) {
   add("relative_point", point::check(s.relative_point));
   add("planar", check_fields(s.planar));
   add("relative_plane", plane::check(s.relative_plane));
+  add("relative_plane.ransac", check_fields(s.extraction.ransac));
+  add("relative_plane.em", em::check(s.extraction.em));
   add("ekf6d", check_fields(s.ekf6d));
   add("ekf2d", check_fields(s.ekf2d));
   add("victoria_park", check_fields(s.victoria_park));

@@ -136,7 +136,7 @@ PlanarScene PlanarReplay::scene_at(int k) {
     throw InputError("", 0, "--iteration",
                      "must be in 0.." + std::to_string(iterations() - 1) + (k < s.next - 1 ? " and not go back" : "") +
                          ", got " + std::to_string(k));
-  while (s.next <= k) s.feed(s.source.simulator().frame(s.next++));
+  while (s.next <= k) s.feed(s.source.frame(s.next++));
 
   PlanarScene scene = world_outline(-1);
   scene.true_path = s.true_path;

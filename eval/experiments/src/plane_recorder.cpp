@@ -33,13 +33,16 @@ const std::vector<std::string>& PlaneRecorder::score_columns() {
   return columns;
 }
 
-PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const std::vector<PlaneObject>& walls,
+PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const PlaneFrameSource& source,
                              const std::filesystem::path& dir)
     : algorithm_(std::move(algorithm)),
-      walls_(walls),
+      source_(source),
+      walls_(source.walls()),
       dir_(created(dir)),
       iterations_(dir_ / "iterations.csv",
-                  with_own(with_own(score_columns(), algorithm_->iteration_columns()), {"kp_checked", "kp_wrong"})),
+                  with_own(with_own(with_own(score_columns(), algorithm_->iteration_columns()),
+                                    {"kp_checked", "kp_wrong"}),
+                           source.frame_columns())),
       trajectory_(dir_ / "trajectory.tum") {
   if (algorithm_->claims_key_points())
     keypoints_.emplace(dir_ / "keypoints.csv",
@@ -109,6 +112,7 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   key_points_wrong_ += wrong;
   wrong_key_point_iterations_ += wrong > 0;
   fields_.insert(fields_.end(), {CsvField{checked}, CsvField{wrong}});
+  source_.frame_fields(fields_);
   iterations_.row_fields(fields_);
 }
 

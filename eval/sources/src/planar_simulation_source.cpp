@@ -82,6 +82,20 @@ sim::PlanarMap build_planar_map(const LoadedScenario& loaded, const fs::path& fi
   return map;
 }
 
+namespace {
+
+// The simulator with the point sensor when the scenario asks for points.
+sim::PlanarSimulator planar_simulator(const LoadedScenario& loaded, const sim::PlanarMap& map) {
+  if (loaded.scenario.planar.sensor != PlanarSensorKind::Points) return sim::PlanarSimulator(map, loaded.scenario.seed);
+  try {
+    return sim::PlanarSimulator(map, loaded.scenario.seed, point_sensor_options(loaded, map.sensor));
+  } catch (const OptionError& e) {
+    throw loaded.error("planar.sensor", "the point sensor: " + e.field() + ": " + e.problem());
+  }
+}
+
+}  // namespace
+
 struct PlanarSimulationSource::Recorder {
   explicit Recorder(const fs::path& dir)
       : path(dir / "ground_truth_path.tum"),
@@ -95,13 +109,15 @@ PlanarSimulationSource::PlanarSimulationSource(const LoadedScenario& loaded)
     : name_(loaded.scenario.name),
       map_file_(resolve_planar_map(loaded)),
       map_(build_planar_map(loaded, map_file_)),
-      simulator_(map_, loaded.scenario.seed) {
+      simulator_(planar_simulator(loaded, map_)) {
   const int limit = loaded.scenario.planar.iterations;
   frames_ = limit > 0 ? std::min(limit, simulator_.iterations()) : simulator_.iterations();
   int max_id = -1;
   for (const sim::Wall& w : map_.world.walls) max_id = std::max(max_id, w.id);
   walls_.assign(static_cast<std::size_t>(max_id + 1), PlaneObject{});
   for (const sim::Wall& w : map_.world.walls) walls_[static_cast<std::size_t>(w.id)] = {w.a, w.b, 0.0, w.height, 0};
+  if (simulator_.has_point_sensor())
+    extraction_ = std::make_unique<PointExtraction>(loaded, walls_, simulator_.point_sensor().options());
 }
 
 PlanarSimulationSource::~PlanarSimulationSource() = default;
@@ -114,6 +130,11 @@ void PlanarSimulationSource::record_into(const fs::path& dir) {
               w.one_sided);
   walls.close();
   recorder_ = std::make_unique<Recorder>(dir);
+  if (extraction_) extraction_->record_into(dir);
+}
+
+sim::PlaneSimFrame PlanarSimulationSource::frame(int k) {
+  return extraction_ ? extraction_->extract(simulator_.point_frame(k)) : simulator_.frame(k);
 }
 
 void PlanarSimulationSource::stream(const Consumer& consume) {
@@ -122,7 +143,7 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
   summary_.walls = static_cast<int>(map_.world.walls.size());
   summary_.visible_min = frames_ > 0 ? std::numeric_limits<int>::max() : 0;
   for (int k = 0; k < frames_; ++k) {
-    const sim::PlaneSimFrame frame = simulator_.frame(k);
+    const sim::PlaneSimFrame frame = this->frame(k);
     const int seen = static_cast<int>(frame.observation.planes.size());
     summary_.observations += seen;
     summary_.visible_min = std::min(summary_.visible_min, seen);
@@ -146,6 +167,7 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
     recorder_->path.close();
     recorder_->observations.close();
   }
+  if (extraction_) extraction_->finish();
 }
 
 nlohmann::json PlanarSimulationSource::describe() const {
@@ -156,7 +178,20 @@ nlohmann::json PlanarSimulationSource::describe() const {
             {"walls", summary_.walls},
             {"observations", summary_.observations},
             {"visible_mean", summary_.visible_mean},
-            {"distance_travelled", summary_.distance_travelled}}}};
+            {"distance_travelled", summary_.distance_travelled},
+            {"sensor", std::string(to_string(extraction_ ? PlanarSensorKind::Points : PlanarSensorKind::Planes))},
+            {"extraction", extraction_ ? extraction_->describe() : nlohmann::json()}}}};
+}
+
+std::vector<std::string> PlanarSimulationSource::frame_columns() const {
+  if (!extraction_) return {};
+  return {"t_extract_ms", "extracted_planes"};
+}
+
+void PlanarSimulationSource::frame_fields(std::vector<CsvField>& out) const {
+  if (!extraction_) return;
+  out.emplace_back(extraction_->last_ms());
+  out.emplace_back(static_cast<long long>(extraction_->last_score().planes));
 }
 
 }  // namespace relslam::eval

@@ -22,6 +22,9 @@ struct PlanarNoiseSettings {
   double position_sigma = 0.01;                                  // σ_p per axis, units [R]
   double rotation_sigma_rad = 0.3 * std::numbers::pi / 180.0;    // σ_r about the wall midpoint [R]
   double end_sigma = 0.0;                                        // jitter of each end along the wall [R]
+  // σ_pt of the point sensor (planar.sensor "points"): Gaussian noise per axis of each
+  // reported point, units; 0 is noise-free (spec §3.5, §3.8) [R 0.05].
+  double point_sigma = 0.05;
 };
 
 bool is_noise_model_name(const std::string& name);
@@ -35,12 +38,17 @@ void describe(OptionsOf<PlanarNoiseSettings> auto& n, auto& f) {
             at_least(0.0), at_most(45.0));
   f.field("end_sigma", n.end_sigma, "independent jitter of each wall end along the wall, units (Fig 88)",
           at_least(0.0));
+  f.field("point_sigma", n.point_sigma, "point sensor: Gaussian noise per axis of each point, units (0: none)",
+          at_least(0.0), at_most(1.0));
 }
 
-// The sensor's output kind: plane observations now; point clouds (EM, Chapter 5) come later.
-enum class PlanarSensorKind { Planes };
-inline constexpr PlanarSensorKind kPlanarSensorKinds[] = {PlanarSensorKind::Planes};
-inline std::string_view to_string(PlanarSensorKind) { return "planes"; }
+// The sensor's output kind: plane observations (Chapter 4) or points on the walls, from which
+// relative_plane.extractor finds the planes (Chapter 5; spec §3.5, §4).
+enum class PlanarSensorKind { Planes, Points };
+inline constexpr PlanarSensorKind kPlanarSensorKinds[] = {PlanarSensorKind::Planes, PlanarSensorKind::Points};
+inline std::string_view to_string(PlanarSensorKind kind) {
+  return kind == PlanarSensorKind::Points ? "points" : "planes";
+}
 
 struct PlanarOptions {
   // A map name from scenarios/maps/ (a_four_planes, b_hallway_unit, c_hallway_back,
@@ -55,7 +63,7 @@ struct PlanarOptions {
   // Walls seen from behind are dropped [T]; off, each is seen with the face towards the robot
   // (the thesis's early simulator, Fig 72).
   bool backface_cull = true;
-  PlanarSensorKind sensor = PlanarSensorKind::Planes;
+  PlanarSensorKind sensor = PlanarSensorKind::Planes;  // [T Chapter 4]
   PlanarNoiseSettings noise;
 };
 
@@ -76,7 +84,7 @@ void describe(OptionsOf<PlanarOptions> auto& o, auto& f) {
   f.field("visibility", o.visibility, "map, frustum, full_size, always_visible (Map A) or scripted (Map B)",
           holds(is_visibility_name(o.visibility), "expected map, frustum, full_size, always_visible or scripted"));
   f.field("backface_cull", o.backface_cull, "drop walls seen from behind (off: the early simulator of Fig 72)");
-  f.choice("sensor", o.sensor, "what the robot reports: planes (points come with EM, Chapter 5)", kPlanarSensorKinds);
+  f.choice("sensor", o.sensor, "what the robot reports: planes, or points (planes found by relative_plane.extractor)", kPlanarSensorKinds);
   f.nested("noise", o.noise);
 }
 

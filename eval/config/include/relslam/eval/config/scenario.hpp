@@ -6,6 +6,7 @@
 #include "relslam/eval/config/binning_bench_options.hpp"
 #include "relslam/eval/config/ekf2d_options.hpp"
 #include "relslam/eval/config/ekf6d_options.hpp"
+#include "relslam/eval/config/extraction_options.hpp"
 #include "relslam/eval/config/planar_options.hpp"
 #include "relslam/eval/config/victoria_park_options.hpp"
 #include "relslam/plane/options.hpp"
@@ -86,6 +87,7 @@ struct Scenario {
   // "thesis" (the Chapter 6 scenarios do), the library's is the thesis.
   point::PointSlamOptions relative_point = point::preset_options(point::Preset::Adaptive);
   plane::RelativePlaneOptions relative_plane;  // the Relative Plane algorithm's (kind planar)
+  ExtractionOptions extraction;  // its plane extractor (planar.sensor points), keys relative_plane.*
   Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
   Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
   VictoriaParkOptions victoria_park;       // kind victoria_park only

@@ -2,7 +2,8 @@
 // The recorder of a plane algorithm's run (the counterpart of algorithm_recorder.hpp for the
 // Relative Plane half): it times each step, scores the pose and the map of planes against the
 // frame's truth (spec relative_plane_em.md §7.1–7.2), writes iterations.csv (the shared score
-// columns, the algorithm's own, then the key-point scores), keypoints.csv when the algorithm
+// columns, the algorithm's own, the key-point scores, then the source's own such as the
+// extraction time), keypoints.csv when the algorithm
 // claims key points, trajectory.tum, planes.csv and the algorithm's tables,
 // hashes the frames, and turns an exception or a non-finite estimate into a recorded status.
 
@@ -12,6 +13,7 @@
 #include "relslam/eval/io/tum_writer.hpp"
 #include "relslam/eval/metrics/plane_map_error.hpp"
 #include "relslam/eval/metrics/run_summary.hpp"
+#include "relslam/eval/sources/plane_frame_source.hpp"
 
 #include <filesystem>
 #include <memory>
@@ -26,8 +28,9 @@ class PlaneRecorder {
   // Shared columns of iterations.csv, before the algorithm's own.
   static const std::vector<std::string>& score_columns();
 
-  // `walls`: the true walls by id (world frame). Writes into dir (created).
-  PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const std::vector<PlaneObject>& walls,
+  // The true walls (by id, world frame) and the source's own columns come from `source`, which
+  // must outlive the recorder. Writes into dir (created).
+  PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const PlaneFrameSource& source,
                 const std::filesystem::path& dir);
 
   const std::string& name() const { return algorithm_->name(); }
@@ -43,6 +46,7 @@ class PlaneRecorder {
   bool running() const { return status_.kind == RunStatus::Kind::NotRun || status_.kind == RunStatus::Kind::Ok; }
 
   std::unique_ptr<PlaneAlgorithm> algorithm_;
+  const PlaneFrameSource& source_;
   const std::vector<PlaneObject>& walls_;
   std::filesystem::path dir_;
   CsvWriter iterations_;

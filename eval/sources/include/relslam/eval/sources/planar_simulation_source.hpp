@@ -1,12 +1,14 @@
 #pragma once
 // The simulated planar world as a plane frame source (scenario kind "planar"): the scenario's
 // map file with its planar.* settings applied, simulated frame by frame; given a run folder,
-// the files of `relslam simulate` are written there as frames pass.
+// the files of `relslam simulate` are written there as frames pass. With planar.sensor
+// "points" each frame is the point sensor's, through the plane extractor (point_extraction.hpp).
 
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/io/tum_writer.hpp"
 #include "relslam/eval/sources/plane_frame_source.hpp"
+#include "relslam/eval/sources/point_extraction.hpp"
 #include "relslam/sim/planar_simulator.hpp"
 
 #include <filesystem>
@@ -39,8 +41,8 @@ class PlanarSimulationSource final : public PlaneFrameSource {
  public:
   explicit PlanarSimulationSource(const LoadedScenario& loaded);
   ~PlanarSimulationSource() override;
-  // Before stream(): write ground_truth_walls.csv now, and ground_truth_path.tum and
-  // plane_observations.csv as frames pass.
+  // Before stream(): write ground_truth_walls.csv now, and ground_truth_path.tum,
+  // plane_observations.csv and (points) em_frames.csv as frames pass.
   void record_into(const std::filesystem::path& dir);
 
   std::string label() const override { return "run " + name_; }
@@ -49,10 +51,17 @@ class PlanarSimulationSource final : public PlaneFrameSource {
   PlanarPose start() const override { return simulator_.path().world_T_robot(0); }
   void stream(const Consumer& consume) override;
   nlohmann::json describe() const override;
+  // With the point sensor: t_extract_ms and extracted_planes.
+  std::vector<std::string> frame_columns() const override;
+  void frame_fields(std::vector<CsvField>& out) const override;
 
   const sim::PlanarMap& map() const { return map_; }
   const sim::PlanarSimulator& simulator() const { return simulator_; }
   const PlanarSimulationSummary& summary() const { return summary_; }
+  // Frame k as stream() gives it (the plane sensor's, or the points' extracted planes).
+  sim::PlaneSimFrame frame(int k);
+  // The point sensor's extraction (planar.sensor "points"), else null.
+  const PointExtraction* extraction() const { return extraction_.get(); }
 
  private:
   struct Recorder;
@@ -62,6 +71,7 @@ class PlanarSimulationSource final : public PlaneFrameSource {
   sim::PlanarSimulator simulator_;
   int frames_ = 0;
   std::vector<PlaneObject> walls_;
+  std::unique_ptr<PointExtraction> extraction_;
   std::unique_ptr<Recorder> recorder_;
   PlanarSimulationSummary summary_;
 };

@@ -1,11 +1,12 @@
 #pragma once
 // A source of plane frames for the Relative Plane half (thesis Chapter 4): the planar
-// simulator now, EM on simulated point clouds next (Chapter 5). Like FrameSource for the point
+// simulator's plane sensor, or its point sensor with a plane extractor (Chapter 5). Like FrameSource for the point
 // half, each frame pairs what the algorithm may see (PlaneFrame) with the truth only scoring
 // may read (PlaneTruthFrame), so the truth travels with the frames (style.md 2.3).
 
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"
+#include "relslam/eval/io/csv_writer.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -33,6 +34,10 @@ class PlaneFrameSource {
   virtual void stream(const Consumer& consume) = 0;
   // What the frames were, for manifest.json's "source" (complete after stream()).
   virtual nlohmann::json describe() const = 0;
+  // The source's own columns of every algorithm's iterations.csv (after the algorithm's), such
+  // as the plane extraction's time, and their fields for the frame being consumed.
+  virtual std::vector<std::string> frame_columns() const { return {}; }
+  virtual void frame_fields(std::vector<CsvField>&) const {}
 };
 
 }  // namespace relslam::eval

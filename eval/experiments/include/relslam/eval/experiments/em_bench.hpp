@@ -1,0 +1,36 @@
+#pragma once
+// The plane-extraction test bench of thesis Figs 55–61 (E30; issue 14 §4): small scenes of
+// walls in front of a robot at the origin, seen by the point sensor (large frustum), each
+// extracted by EM1, EM2 and the Open3D baseline (when built) and scored like em_frames.csv
+// (SegComp at 0.8, metrics/extraction_score.hpp). Cases: random walls (Fig 55), two close
+// parallel walls (Fig 56), a smaller wall attached to a larger one (Fig 57), a wall over a gap
+// (Fig 58), a corner with the exclusivity cull on and off (Fig 59), inlier distances on the
+// attached wall (Fig 60), and EM1's assignment modes on the corner (Fig 61), each over seeds.
+
+#include "relslam/eval/config/extraction_options.hpp"
+#include "relslam/eval/metrics/extraction_score.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+struct EmBenchRow {
+  std::string scene;    // random_walls, close_parallel, attached_smaller, over_gap, corner
+  std::string variant;  // the setting varied ("gap=0.3", "exclusivity=off", ...), or "default"
+  std::string extractor;
+  std::uint64_t seed = 0;
+  ExtractionFrameScore score;
+  double ms = 0;
+};
+
+// Every case for seeds seed, seed + 1, ..., seed + seeds - 1, with the scenario's extraction
+// settings as the defaults and points of noise point_sigma.
+std::vector<EmBenchRow> run_em_bench(const ExtractionOptions& extraction, double point_sigma, std::uint64_t seed,
+                                     int seeds);
+// bench.csv: one row per case, seed and extractor.
+void write_em_bench(const std::filesystem::path& file, const std::vector<EmBenchRow>& rows);
+
+}  // namespace relslam::eval

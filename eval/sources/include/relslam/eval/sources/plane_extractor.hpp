@@ -1,0 +1,39 @@
+#pragma once
+// A plane extractor: one point frame in (robot frame), the planes the Relative Plane algorithm
+// takes out, each with the points behind it (thesis Chapter 5; spec relative_plane_em.md §4).
+// make_plane_extractor() is the one place that maps relative_plane.extractor to an
+// implementation: EM2 and EM1 of libslam, and the Open3D RANSAC baseline when relslam was
+// built with Open3D.
+
+#include "relslam/core/planar_points.hpp"
+#include "relslam/em/options.hpp"
+#include "relslam/em/plane_conversion.hpp"
+#include "relslam/eval/config/extraction_options.hpp"
+
+#include <cstdint>
+#include <memory>
+
+namespace relslam::eval {
+
+class PlaneExtractor {
+ public:
+  virtual ~PlaneExtractor() = default;
+  // The frame's planes converted by spec §4.5 (em::to_plane_objects), and their supports.
+  // `seed`: this frame's random stream (em::em_frame_seed of the scenario seed). Non-finite
+  // points are ignored; too few points give no planes.
+  virtual em::ExtractedPlanes extract(const PlanarPointFrame& frame, std::uint64_t seed) = 0;
+};
+
+// What every extractor is built from: EM's constants (also the §4.5 conversion's, shared by
+// all) and the baseline's.
+struct ExtractorSettings {
+  em::EmOptions em;
+  RansacOptions ransac;
+};
+
+// Whether this build has the extractor (ransac_open3d needs Open3D).
+bool extractor_available(PlaneExtractorKind kind);
+// The extractor; throws std::invalid_argument when this build does not have it.
+std::unique_ptr<PlaneExtractor> make_plane_extractor(PlaneExtractorKind kind, const ExtractorSettings& settings);
+
+}  // namespace relslam::eval
