@@ -126,7 +126,9 @@ TEST(EmRun, SameSeedSameEmFrames) {
   const int ms = a.column("ms");
   for (std::size_t i = 0; i < a.rows.size(); ++i)
     for (std::size_t c = 0; c < a.header.size(); ++c)
-      if (static_cast<int>(c) != ms) EXPECT_EQ(a.rows[i][c], b.rows[i][c]) << a.header[c] << " row " << i;
+      if (static_cast<int>(c) != ms) {
+        EXPECT_EQ(a.rows[i][c], b.rows[i][c]) << a.header[c] << " row " << i;
+      }
   EXPECT_EQ(read_csv(dir / "a/relative_plane/planes.csv").rows, read_csv(dir / "b/relative_plane/planes.csv").rows);
 }
 
@@ -158,7 +160,9 @@ TEST(EmBench, WritesEveryCaseAndFindsTheDefaultScenes) {
       EXPECT_EQ(t.number(i, "precision"), 1.0) << where;
       ++checked;
     }
-    if (scene == "over_gap" && variant == "gap=0.2") EXPECT_EQ(t.number(i, "under_segmented"), 1) << where;
+    if (scene == "over_gap" && variant == "gap=0.2") {
+      EXPECT_EQ(t.number(i, "under_segmented"), 1) << where;
+    }
   }
   EXPECT_EQ(checked, 6);
 }
