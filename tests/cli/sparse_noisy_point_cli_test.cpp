@@ -122,6 +122,27 @@ TEST(SparseNoisyPoint, TheManifestSaysWhichBoundsWereUsedAndWhereTheyCameFrom) {
             std::string::npos);
 }
 
+TEST(SparseNoisyPoint, ARawlogRunTakesItsBoundsFromTheRawlogsSensorModel) {
+  test::ScratchDir dir;
+  // The simulator writes its noise (0.2) as the rawlog's range std; the rawlog run knows nothing
+  // of the scenario that made it.
+  ASSERT_EQ(test::run_relslam({"run", test::source_path("scenarios/s-ekf-f8.json").string(), "--out",
+                               (dir / "sim").string(), "--quiet", "--set", "algorithms=relative_point", "--set",
+                               "sim.iterations=30", "--set", "sim.noise_sigma=0.2"})
+                .exit_code,
+            0);
+  const test::CliResult r =
+      test::run_relslam({"run", "--rawlog", (dir / "sim/observations.rawlog").string(), "--out",
+                         (dir / "log").string(), "--quiet", "--set", "algorithms=relative_point"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string manifest = test::read_file(dir / "log/manifest.json");
+  EXPECT_NE(manifest.find(R"x("source": "rawlog sensor model (std_range 0.2, bearing std x max_range 0)")x"),
+            std::string::npos)
+      << manifest;
+  // The rawlog stores its stds as floats: 2·0.2f, not 2·0.2.
+  EXPECT_NE(manifest.find(R"("value": 2.0000000298023224)"), std::string::npos);
+}
+
 TEST(SparseNoisyPoint, TheThesisPresetKeepsTheThesisBoundsAtAnyNoise) {
   test::ScratchDir dir;
   const test::CliResult r = test::run_relslam({"scenario", test::source_path("scenarios/s-f8.json").string(),

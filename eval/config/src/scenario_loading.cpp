@@ -204,7 +204,9 @@ LoadedScenario build(const JsonDocument& doc, const std::vector<Override>& overr
   loader.apply_document(doc);
   for (const Override& o : overrides) loader.apply_override(o);
   loaded.origins = loader.origins();
-  derive_point_bounds(loaded.scenario, [&](const std::string& key) { return loaded.origins.contains(key); });
+  if (loaded.scenario.kind == ScenarioKind::Simulation)  // a rawlog run re-derives them from its sensor
+    derive_point_bounds(loaded.scenario, simulated_noise(loaded.scenario.sim),
+                        [&](const std::string& key) { return loaded.origins.contains(key); });
   check_semantics(loaded);
   return loaded;
 }

@@ -3,14 +3,17 @@
 #include "stream_to_recorders.hpp"
 
 #include "relslam/eval/algorithms/registry.hpp"
+#include "relslam/eval/config/point_bounds.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/io/progress.hpp"
+#include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/sources/simulation_source.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <sstream>
 
 namespace relslam::eval {
 
@@ -70,16 +73,40 @@ ExperimentResult simulate_and_run(const LoadedScenario& loaded, const std::files
   return experiment.run(progress);
 }
 
+namespace {
+
+// The adaptive preset's bounds from the rawlog's own sensor model (the scenario's simulator
+// noise says nothing about recorded data): the larger of the range noise and the bearing
+// noise at the far range; without one, the thesis's bounds.
+LoadedScenario with_rawlog_noise(const LoadedScenario& loaded, const RangeBearingSensor& sensor) {
+  LoadedScenario adapted = loaded;
+  const double bearing = std::max(sensor.std_yaw_rad, sensor.std_pitch_rad) * sensor.max_range;
+  NoiseModel noise{std::max(sensor.std_range, bearing), ""};
+  std::ostringstream source;
+  if (noise.sigma > 0)
+    source << "rawlog sensor model (std_range " << sensor.std_range << ", bearing std x max_range " << bearing << ")";
+  else
+    source << "thesis bounds: the rawlog gives no sensor noise";
+  noise.source = source.str();
+  derive_point_bounds(adapted.scenario, noise, [&](const std::string& key) { return loaded.origins.contains(key); });
+  return adapted;
+}
+
+}  // namespace
+
 ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& files, const std::filesystem::path& out,
                                bool progress) {
   require_algorithms(loaded);
   RawlogSource source(files);
-  const Scenario& scenario = loaded.scenario;
+  const LoadedScenario adapted = with_rawlog_noise(loaded, source.sensor());
+  const Scenario& scenario = adapted.scenario;
   if (std::find(scenario.algorithms.begin(), scenario.algorithms.end(), "ekf6d") != scenario.algorithms.end() &&
       scenario.ekf6d.association == EkfAssociation::Known && !source.ids_everywhere())
     throw loaded.error("ekf6d.association", "the rawlog does not give every landmark an id; use jcbb or nn");
-  Experiment experiment(loaded, source, out);
-  return experiment.run(progress);
+  Experiment experiment(adapted, source, out);
+  ExperimentResult result = experiment.run(progress);
+  if (!adapted.scenario.derived.empty()) result.source["derived"] = derived_json(adapted.scenario);
+  return result;
 }
 
 void print_results(const ExperimentResult& result, const std::string& title) {

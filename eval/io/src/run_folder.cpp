@@ -59,6 +59,12 @@ std::string utc_now() {
 
 }  // namespace
 
+nlohmann::json derived_json(const Scenario& scenario) {
+  nlohmann::json derived = nlohmann::json::object();
+  for (const auto& [key, d] : scenario.derived) derived[key] = {{"value", d.value}, {"source", d.source}};
+  return derived;
+}
+
 void write_manifest(const fs::path& dir, const Scenario& scenario, const Invocation& invocation,
                     const nlohmann::json& extra, const std::string& status) {
   nlohmann::json manifest = {
@@ -75,8 +81,7 @@ void write_manifest(const fs::path& dir, const Scenario& scenario, const Invocat
       {"engine", engine_info()},
       {"created_utc", utc_now()},
   };
-  // What a preset derived instead of reading it, and from what (issue 16: the bounds and the noise).
-  for (const auto& [key, d] : scenario.derived) manifest["derived"][key] = {{"value", d.value}, {"source", d.source}};
+  if (!scenario.derived.empty()) manifest["derived"] = derived_json(scenario);
   if (extra.is_object()) manifest.update(extra);  // {} (null) is "nothing extra"
   manifest["status"] = status;
   // Written beside and renamed over: a kill mid-write leaves the previous manifest whole.

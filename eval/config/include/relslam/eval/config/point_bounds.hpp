@@ -1,7 +1,8 @@
 #pragma once
 // The adaptive preset's matching bounds (issue 16): Relative Point's local, compensated, global
-// and merge bounds scaled from the scenario's sensor noise (libslam's noise_bounds.hpp), unless
-// the file or --set gives them. Where each came from goes to manifest.json ("derived").
+// and merge bounds and RltBinning's gaps scaled from the sensor noise (libslam's
+// noise_bounds.hpp), unless the file or --set gives them. Where each came from goes to
+// manifest.json ("derived").
 
 #include "relslam/eval/config/scenario.hpp"
 
@@ -10,7 +11,18 @@
 
 namespace relslam::eval {
 
+// Per-axis noise at the sensor's far range, and what it was read from.
+struct NoiseModel {
+  double sigma = 0;
+  std::string source;
+};
+
+// The simulator's: sigma·(1 + range/far) with range_noise, largest at the far range.
+NoiseModel simulated_noise(const sim::SimOptions& sim);
+
+// Sets the bounds of `scenario.relative_point` from `noise` when its preset is adaptive.
 // `given(key)`: the key was set explicitly (file, --set), so it stays as given.
-void derive_point_bounds(Scenario& scenario, const std::function<bool(const std::string&)>& given);
+void derive_point_bounds(Scenario& scenario, const NoiseModel& noise,
+                         const std::function<bool(const std::string&)>& given);
 
 }  // namespace relslam::eval

@@ -32,6 +32,10 @@ struct Invocation {
 // a run writes the manifest first as kRunStatusRunning and again at its end as kRunStatusOk,
 // kRunStatusInterrupted (SIGINT/SIGTERM) or "failed: <why>"; one left "running" was killed
 // (SIGKILL, power loss). The file is replaced by rename, so it is never seen half written.
+// What a preset derived instead of reading it, and from what (issue 16: the bounds and the
+// noise): manifest.json's "derived".
+nlohmann::json derived_json(const Scenario& scenario);
+
 void write_manifest(const std::filesystem::path& dir, const Scenario& scenario, const Invocation& invocation,
                     const nlohmann::json& extra = nlohmann::json::object(), const std::string& status = "ok");
 
