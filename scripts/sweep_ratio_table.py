@@ -40,7 +40,8 @@ def main():
         cells = [r[a] for a in axes]
         for key, _ in METRICS:
             mean, ci = r.get(key + "_mean", ""), r.get(key + "_ci95", "")
-            text = f"{float(mean):.2f} ± {float(ci):.2f}" if mean not in ("", "nan") and ci not in ("", "nan") else "—"
+            known = mean not in ("", "nan") and ci not in ("", "nan")
+            text = f"{float(mean):.3g} ± {float(ci):.2g}" if known else "—"
             if key == "ate_rmse" and mean not in ("", "nan") and float(mean) > args.goal:
                 text += " ✗"
                 missed += 1
