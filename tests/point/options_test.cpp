@@ -1,6 +1,7 @@
 #include "relslam/point/options.hpp"
 
 #include "described_fields.hpp"
+#include "relslam/point/noise_bounds.hpp"
 #include "relslam/point/rlt_mapper.hpp"
 
 #include <gtest/gtest.h>
@@ -17,6 +18,48 @@ TEST(PointSlamOptions, DefaultsAreValidAndFollowTheThesis) {
   EXPECT_EQ(o.final_group.accuracy_reduction, 10);
   EXPECT_EQ(o.final_group.prev_min, 20);
   EXPECT_EQ(o.final_group.next_min, 1);
+}
+
+// Issue 16: PrevGroupMin from the points in view, between a rigid registration's 3 and the
+// level's own prev_min; the thesis preset ignores what is in view.
+TEST(PointSlamOptions, AdaptivePrevGroupMinFollowsThePointsInView) {
+  const GroupLevelOptions final_level = final_level_defaults();  // prev_min 20, share 0.2
+  EXPECT_EQ(prev_group_min(final_level, Preset::Thesis, 4.0), 20);
+  EXPECT_EQ(prev_group_min(final_level, Preset::Adaptive, 4.0), 3);
+  EXPECT_EQ(prev_group_min(final_level, Preset::Adaptive, 26.0), 5);
+  EXPECT_EQ(prev_group_min(final_level, Preset::Adaptive, 99.0), 20);
+  EXPECT_EQ(prev_group_min(final_level, Preset::Adaptive, 550.0), 20);
+  EXPECT_EQ(prev_group_min(temporary_level_defaults(), Preset::Adaptive, 100.0), 6);
+}
+
+TEST(NoiseBounds, ThesisBoundsUpToSigmaTenthThenInProportion) {
+  const PointSlamOptions thesis;
+  for (double sigma : {0.0, 0.05, 0.1}) {
+    const NoiseBounds b = noise_scaled_bounds(sigma);
+    EXPECT_EQ(b.local_bound, thesis.local_bound);
+    EXPECT_EQ(b.compensated_bound, thesis.compensated_bound);
+    EXPECT_EQ(b.global_bound, thesis.global_bound);
+    EXPECT_EQ(b.merge_bound, thesis.merge_bound);
+    EXPECT_EQ(b.binning_rel_gap, thesis.binning.rel_gap);
+  }
+  const NoiseBounds b = noise_scaled_bounds(0.3);
+  EXPECT_DOUBLE_EQ(b.compensated_bound, 3.0);
+  EXPECT_DOUBLE_EQ(b.local_bound, 3.2);  // the motion share (1.2 - 1.0) stays
+  EXPECT_DOUBLE_EQ(b.global_bound, 6.0);
+  EXPECT_DOUBLE_EQ(b.binning_abs_gap, 0.15);
+}
+
+TEST(NoiseBounds, AppliedBoundsKeepWhatWasGivenAndWidenTheCells) {
+  PointSlamOptions o;
+  o.global_bound = 2.5;
+  apply_noise_bounds(noise_scaled_bounds(0.4), {.global = true}, o);
+  EXPECT_DOUBLE_EQ(o.compensated_bound, 4.0);
+  EXPECT_DOUBLE_EQ(o.local_bound, 4.2);
+  EXPECT_EQ(o.global_bound, 2.5);
+  EXPECT_DOUBLE_EQ(o.merge_bound, 8.0);
+  EXPECT_GE(o.local_cell_size, o.local_bound);
+  EXPECT_GE(o.global_cell_size, o.merge_bound);
+  EXPECT_TRUE(check(o).empty());
 }
 
 TEST(PointSlamOptions, ViolationsNameTheirFields) {

@@ -113,6 +113,41 @@ TEST(RltMapper, TooFewPointsAtTheFirstIterationIsReportedAsAFailure) {
   EXPECT_EQ(mapper.group_stats().created, 0);
 }
 
+// The adaptive preset (issue 16) on a start the thesis cannot root: one point in view for 40
+// iterations, then a static scene of five. The map frame moves to the first iteration with
+// three points in view, and noise-free observations then map the five exactly in that frame.
+TEST(RltMapper, AdaptivePresetMovesTheMapFramePastASparseStart) {
+  const std::vector<Eigen::Vector3d> scene = {{0, 0, 10}, {3, 1, 12}, {-2, 2, 9}, {1, -3, 11}, {4, 4, 14}};
+  auto frame_at = [&](int k) {
+    ObservationFrame frame;
+    frame.iteration = k;
+    if (k < 40) frame.points = {scene[0]};
+    else frame.points = scene;  // the robot stands still: the same observations every frame
+    return frame;
+  };
+  RltMapper thesis;
+  RltMapper adaptive(preset_options(Preset::Adaptive));
+  for (int k = 0; k < 200; ++k) {
+    thesis.step(frame_at(k));
+    const StepResult r = adaptive.step(frame_at(k));
+    if (k == 40) {
+      EXPECT_EQ(r.pose_source, PoseSource::Start);
+    }
+  }
+  EXPECT_FALSE(thesis.failure().empty()) << "the thesis needs three points at the first iteration";
+  EXPECT_TRUE(adaptive.failure().empty()) << adaptive.failure();
+  EXPECT_EQ(adaptive.first_iteration(), 40);
+  int mapped = 0;
+  for (const RltPoint& p : adaptive.points()) {
+    if (!p.on_map()) continue;
+    ++mapped;
+    // Robot frame at iteration 40 = map frame; the point with id i was seen as scene[i].
+    EXPECT_LT((p.global - scene[static_cast<std::size_t>(p.id)]).norm(), 1e-9) << "point " << p.id;
+  }
+  EXPECT_EQ(mapped, 5);
+  EXPECT_LT(adaptive.pose().translation.norm(), 1e-9);
+}
+
 TEST(RltMapper, EmptyAndSparseFramesDoNotDisturbTheRun) {
   sim::SimOptions o = one_loop(0.1);
   o.iterations = 300;
