@@ -143,6 +143,27 @@ TEST(SparseNoisyPoint, ARawlogRunTakesItsBoundsFromTheRawlogsSensorModel) {
   EXPECT_NE(manifest.find(R"("value": 2.0000000298023224)"), std::string::npos);
 }
 
+// Density 5, seed 1: one point in view at iteration 0, so the map frame moves (to 138). The
+// replay of render must place it as the run's scoring did: it checks its pose against the
+// recorded trajectory and warns when they differ (41.6 units before both used one gauge).
+TEST(SparseNoisyPoint, RenderPlacesAMovedMapFrameAsTheRunDid) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_relslam({"run", test::source_path("scenarios/s-ekf-f8.json").string(), "--out",
+                               (dir / "run").string(), "--quiet", "--set", "algorithms=relative_point", "--set",
+                               "relative_point.preset=adaptive", "--set", "sim.density=5", "--set",
+                               "sim.iterations=300"})
+                .exit_code,
+            0);
+  const test::CsvTable iterations = test::read_csv(dir / "run/relative_point/iterations.csv");
+  int starts = 0;
+  for (std::size_t i = 0; i < iterations.rows.size(); ++i) starts += iterations.text(i, "pose_source") == "start";
+  ASSERT_EQ(starts, 2) << "the map frame is expected to move once on this seed";
+  const test::CliResult r =
+      test::run_relslam({"render", (dir / "run").string(), "--iteration", "299", "--out", (dir / "map.png").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("another build"), std::string::npos) << r.err;
+}
+
 TEST(SparseNoisyPoint, TheThesisPresetKeepsTheThesisBoundsAtAnyNoise) {
   test::ScratchDir dir;
   const test::CliResult r = test::run_relslam({"scenario", test::source_path("scenarios/s-f8.json").string(),

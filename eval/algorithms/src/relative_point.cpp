@@ -4,10 +4,8 @@
 #include "relative_point.hpp"
 
 #include "relslam/point/rlt_mapper.hpp"
+#include "relslam/eval/algorithms/map_frame_gauge.hpp"
 #include "relslam/relax/ceres_relaxation.hpp"
-
-#include <algorithm>
-#include <limits>
 
 namespace relslam::eval {
 namespace {
@@ -81,12 +79,11 @@ struct LandmarkRow {
   const RltPoint& point;
   const RltMapper& mapper;
   const LandmarkScore& score;
-  const std::optional<Rigid3>& world_T_map;  // see RelativePoint::step
+  const MapFrameGauge& gauge;
 };
 
 CsvField coordinate(const LandmarkRow& r, int axis) {
-  if (!r.point.has_global) return {};
-  return csv_field(r.world_T_map ? (*r.world_T_map * r.point.global)[axis] : r.point.global[axis]);
+  return r.point.has_global ? csv_field(r.gauge.point(r.point.global)[axis]) : CsvField{};
 }
 
 const Columns<LandmarkRow> kLandmarkColumns = {
@@ -113,26 +110,17 @@ class RelativePoint final : public Algorithm {
   const std::string& name() const override { return name_; }
   void step(const ObservationFrame& observation, const TruthFrame& truth) override {
     last_ = mapper_.step(observation);
-    // The map frame is the robot's frame at the mapper's first iteration (thesis 6.3.3), where
-    // the truth's world frame also starts. When the adaptive preset moves it to a later frame
-    // (a sparse start), the evaluation places it at the robot's true pose there: the same
-    // gauge, one frame later. The algorithm never sees it.
-    if (mapper_.first_iteration() == observation.iteration && observation.iteration > start_) {
-      if (truth.pose_known) world_T_map_ = truth.world_T_robot;
-      steps_before_map_frame_ = steps_;
-    }
-    start_ = std::min(start_, observation.iteration);
-    ++steps_;
+    gauge_.observe(observation.iteration, mapper_.first_iteration(), truth);
   }
-  std::size_t steps_before_map_frame() const override { return steps_before_map_frame_; }
+  std::size_t steps_before_map_frame() const override { return gauge_.steps_before(); }
 
-  Rigid3 pose() const override { return world_T_map_ ? *world_T_map_ * last_.world_T_robot : last_.world_T_robot; }
+  Rigid3 pose() const override { return gauge_.pose(last_.world_T_robot); }
   const std::vector<int>& assignment() const override { return last_.assignment; }
   const std::vector<int>& changed() const override { return last_.changed; }
   std::optional<Eigen::Vector3d> position(int id) const override {
     const RltPoint& p = mapper_.points()[id];
     if (!p.on_map()) return std::nullopt;
-    return world_T_map_ ? *world_T_map_ * p.global : p.global;
+    return gauge_.point(p.global);
   }
   std::vector<int> map_ids() const override {
     std::vector<int> ids;
@@ -154,7 +142,7 @@ class RelativePoint final : public Algorithm {
     for (const RltPoint& p : mapper_.points()) {
       const LandmarkScore s = score(p.id);
       fields.clear();
-      append_fields(kLandmarkColumns, {p, mapper_, s, world_T_map_}, fields);
+      append_fields(kLandmarkColumns, {p, mapper_, s, gauge_}, fields);
       row(fields);
     }
   }
@@ -163,9 +151,7 @@ class RelativePoint final : public Algorithm {
   std::string name_ = "relative_point";
   RltMapper mapper_;
   point::StepResult last_;
-  std::optional<Rigid3> world_T_map_;  // set when the map frame is not the first iteration's
-  int start_ = std::numeric_limits<int>::max();
-  std::size_t steps_ = 0, steps_before_map_frame_ = 0;
+  MapFrameGauge gauge_;
 };
 
 }  // namespace

@@ -1,9 +1,11 @@
 #include "relslam/eval/experiments/run_replay.hpp"
 
+#include "relslam/eval/algorithms/map_frame_gauge.hpp"
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/sources/simulated_world.hpp"
 #include "relslam/point/rlt_mapper.hpp"
+#include "relslam/relax/ceres_relaxation.hpp"
 
 #include <algorithm>
 
@@ -18,6 +20,7 @@ struct RunReplay::State {
   sim::Simulator simulator;
   RangeBearingSensor sensor;
   std::optional<point::RltMapper> mapper;  // relative_point
+  MapFrameGauge gauge;                     // its map frame in the world, as the run scored it
   std::unique_ptr<Algorithm> filter;       // ekf6d
   bool filter_failed = false;              // it threw: its last good state is shown from then on
   int next = 0;                            // the next iteration to feed
@@ -34,7 +37,8 @@ struct RunReplay::State {
   void feed(const sim::SimFrame& frame) {
     if (mapper) {
       mapper->step(frame.observation);
-      estimated_pose = mapper->pose();
+      gauge.observe(frame.observation.iteration, mapper->first_iteration(), frame.truth);
+      estimated_pose = gauge.pose(mapper->pose());
     } else if (!filter_failed) {
       try {
         filter->step(frame.observation, frame.truth);
@@ -58,9 +62,10 @@ struct RunReplay::State {
     std::vector<int> count(mapper->groups().size(), 0);
     for (const point::RltPoint& p : mapper->points()) {
       if (!p.has_global || p.merged) continue;
-      scene.landmarks.push_back({p.global, p.id, p.owner, p.final_grouped || p.level3_grouped, p.dynamic});
+      const Eigen::Vector3d world = gauge.point(p.global);
+      scene.landmarks.push_back({world, p.id, p.owner, p.final_grouped || p.level3_grouped, p.dynamic});
       if (p.owner >= 0 && !p.dynamic) {
-        sum[p.owner] += p.global;
+        sum[p.owner] += world;
         ++count[p.owner];
       }
     }
@@ -89,7 +94,7 @@ RunReplay::RunReplay(ReplayManifest manifest, const std::string& requested) {
   state_ = std::make_unique<State>(run_dir, algorithm, std::move(loaded));
   const Scenario& scenario = state_->loaded.scenario;
   if (algorithm == "relative_point") {
-    state_->mapper.emplace(scenario.relative_point);
+    state_->mapper.emplace(scenario.relative_point, relax::solve_relaxation);
   } else {
     state_->filter = make_algorithm(algorithm, {scenario, state_->sensor});
   }
