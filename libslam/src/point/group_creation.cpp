@@ -3,18 +3,20 @@
 #include <algorithm>
 
 namespace relslam::point {
-namespace {
-
 const GroupLevelOptions& level_options(const PointSlamOptions& options, GroupLevel level) {
   return level == GroupLevel::Temporary ? options.temporary_group : options.final_group;
 }
 
-// Grouped at `level` already (then it has left the level's list for good).
-bool grouped_at(const RltPoint& p, GroupLevel level) {
-  return level == GroupLevel::Temporary ? p.temporary_grouped || p.final_grouped : p.final_grouped;
+void wait_for_group(RltMap& map, PointId id, GroupLevel level, int start, const PointSlamOptions& options,
+                    bool restart) {
+  const RltPoint& p = map.points[id];
+  // A final member is mapped by final groups only, and needs no temporary group (6.5.5).
+  const bool grouped = level == GroupLevel::Temporary ? p.temporary_grouped || p.final_grouped : p.final_grouped;
+  if (!level_options(options, level).enabled || grouped) return;
+  RltUngroupedList& list = map.list(level);
+  if (restart) list.remove(id);
+  list.push(id, start);
 }
-
-}  // namespace
 
 void GroupCreation::add_point(PointId id, const PointSlamOptions& options) {
   if (options.level3.enabled) level3_waiting_.push_back(id);
@@ -35,9 +37,8 @@ CreationReport GroupCreation::create_groups(RltMap& map, int k, const PointSlamO
       // 16): one still in view waits again from now, so a point whose first window lacked
       // anchors (a sparse scene) is grouped once enough mapped points are around it.
       const RltPoint& c = map.points[entry.id];
-      if (options.preset == Preset::Adaptive && !c.dynamic && !c.merged && !grouped_at(c, level) &&
-          c.last_iteration() >= k - options.match_look_back)
-        waiting.push(entry.id, k);
+      if (options.preset == Preset::Adaptive && !c.dynamic && !c.merged && c.last_iteration() >= k - options.match_look_back)
+        wait_for_group(map, entry.id, level, k, options);
     }
   }
   if (options.level3.enabled) create_level3_groups(map, k, options, report);

@@ -154,11 +154,8 @@ void RltMapper::record(PointId id, const Eigen::Vector3d& p, int k, bool returne
   map_.charting.add(id);
   // A point starting a visible run while still ungrouped at a level waits in that level's list,
   // its run's start standing in for the creation iteration. New points always enter both.
-  if (returned && !point.dynamic) {
-    if (options_.temporary_group.enabled && !point.temporary_grouped && !point.final_grouped)
-      map_.temporary_list.push(id, k);
-    if (options_.final_group.enabled && !point.final_grouped) map_.final_list.push(id, k);
-  }
+  if (returned && !point.dynamic)
+    for (GroupLevel level : {GroupLevel::Temporary, GroupLevel::Final}) wait_for_group(map_, id, level, k, options_);
   // Notify its groups (thesis 6.3.3): each is computed once this iteration.
   if (group_queued_at_.size() < map_.groups.size()) group_queued_at_.resize(map_.groups.size(), kNone);
   for (const RltGroupRef& ref : point.groups) {
@@ -218,12 +215,7 @@ void RltMapper::move_map_frame(int k) {
     RltPoint& p = map_.points[id];
     if (p.dynamic || p.merged) continue;
     p.first_observation = *p.observations.at(k);
-    for (GroupLevel level : {GroupLevel::Temporary, GroupLevel::Final}) {
-      if (!(level == GroupLevel::Temporary ? options_.temporary_group : options_.final_group).enabled) continue;
-      RltUngroupedList& list = map_.list(level);
-      list.remove(id);
-      list.push(id, k);
-    }
+    for (GroupLevel level : {GroupLevel::Temporary, GroupLevel::Final}) wait_for_group(map_, id, level, k, options_, true);
   }
 }
 

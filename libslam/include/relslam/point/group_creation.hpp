@@ -52,6 +52,15 @@ class GroupCreation {
   std::deque<GroupId> temporary_to_review_;  // temporary groups in creation order
 };
 
+// The constants of the temporary or the final level.
+const GroupLevelOptions& level_options(const PointSlamOptions& options, GroupLevel level);
+
+// Puts `id` in the RltUngroupedList of `level` to wait for grouping from `start`, if that level is on and has not grouped it yet (thesis 6.4.2):
+// a new visible run, a moved map frame, the adaptive preset's retry. `restart`: an entry it
+// already has starts again at `start` (else it keeps its place).
+void wait_for_group(RltMap& map, PointId id, GroupLevel level, int start, const PointSlamOptions& options,
+                    bool restart = false);
+
 // Flags a point dynamic (thesis 6.5.3): off the map and out of every ungrouped list, anchor set
 // and global match (spec A22), and every alive group with it in its basis is retired (a moving
 // basis point gives the group no consistent frame). It stays locally matchable, so a mover
