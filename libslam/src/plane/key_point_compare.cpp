@@ -4,8 +4,6 @@
 #include "relslam/plane/key_points.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -37,13 +35,12 @@ struct ConsistentRange {
   double sigma = 0;                 // the pair's σ over it
 };
 
-ConsistentRange consistent_range(std::span<const PlaneObject> in1, std::span<const PlaneObject> in2,
-                                 const KeyPointPairs& pairs, KeyPoint a, KeyPoint b,
+// `offsets`: key_point_pairs' series over the piece; `pair` = 2(a − 1) + (b − 1).
+ConsistentRange consistent_range(const std::vector<KeyPointOffsets>& offsets, int pair,
                                  const RelativePlaneOptions& options) {
-  const std::size_t n = in1.size();
+  const std::size_t n = offsets.size();
   std::vector<Eigen::Vector2d> series(n);
-  for (std::size_t t = 0; t < n; ++t)
-    series[t] = key_point_offset(in1[t], in2[t], pairs.length1, pairs.length2, a, b, options.rules.rotate_to_first);
+  for (std::size_t t = 0; t < n; ++t) series[t] = offsets[t][pair];
   const Eigen::Vector2d median = median_of(series);
   std::vector<double> deviation(n);
   for (std::size_t t = 0; t < n; ++t) deviation[t] = (series[t] - median).norm();
@@ -86,7 +83,8 @@ CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::s
   if (!piece) return result;  // size 0: the reference is invalid [T]
   std::span<const PlaneObject> in1 = std::span(both1).subspan(piece->first, piece->samples);
   std::span<const PlaneObject> in2 = std::span(both2).subspan(piece->first, piece->samples);
-  KeyPointPairs pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first);
+  std::vector<KeyPointOffsets> offsets;
+  KeyPointPairs pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first, &offsets);
   KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties);
   RltInterval interval = piece->interval;
   if (options.trim_piece_ends && in1.size() > static_cast<std::size_t>(options.growth_phase.min_samples)) {
@@ -95,20 +93,10 @@ CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::s
     // over it.
     ConsistentRange best;
     bool any = false;
-    for (KeyPoint a : {KeyPoint::Left, KeyPoint::Right})
-      for (KeyPoint b : {KeyPoint::Left, KeyPoint::Right}) {
-        const ConsistentRange r = consistent_range(in1, in2, pairs, a, b, options);
-        if (!any || r.sigma < best.sigma) best = r;
-        any = true;
-      }
-    if (best.last - best.first < in1.size() && std::getenv("KPDBG") && in1.back().iteration == std::atoi(std::getenv("KPDBG"))) {
-      fprintf(stderr, "trim [%d..%d] -> [%zu,%zu) sigma %g; original sigmas %g %g %g %g\n", in1.front().iteration, in1.back().iteration, best.first, best.last, best.sigma, pairs.sigma[0][0], pairs.sigma[0][1], pairs.sigma[1][0], pairs.sigma[1][1]);
-      for (KeyPoint a : {KeyPoint::Left, KeyPoint::Right})
-        for (KeyPoint b : {KeyPoint::Left, KeyPoint::Right}) {
-          const ConsistentRange r = consistent_range(in1, in2, pairs, a, b, options);
-          fprintf(stderr, "   pair %d%d range [%zu,%zu) sigma %g\n", (int)a, (int)b, r.first, r.last, r.sigma);
-        }
-      for (std::size_t t = 0; t < in1.size(); ++t) fprintf(stderr, "   t %d len %.4f %.4f\n", in1[t].iteration, in1[t].length(), in2[t].length());
+    for (int pair = 0; pair < 4; ++pair) {  // (1,1), (1,2), (2,1), (2,2)
+      const ConsistentRange r = consistent_range(offsets, pair, options);
+      if (!any || r.sigma < best.sigma) best = r;
+      any = true;
     }
     // Only a clearly better pair counts: a tie with the whole piece's lowest σ keeps the piece.
     const double lowest = pairs.sigma_of(choice.anchor1, choice.anchor2);

@@ -31,7 +31,7 @@ bool KeyPointTies::close(double x, double y) const {
 }
 
 KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
-                              bool rotate_to_first) {
+                              bool rotate_to_first, std::vector<KeyPointOffsets>* offsets_out) {
   if (first.size() != second.size()) throw std::invalid_argument("key_point_pairs: the two series differ in length");
   KeyPointPairs pairs;
   pairs.samples = static_cast<int>(first.size());
@@ -42,15 +42,22 @@ KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<cons
     pairs.length1 = std::max(pairs.length1, first[t].length());
     pairs.length2 = std::max(pairs.length2, second[t].length());
   }
-  // The N × 4 array of the thesis walkthrough (4.5, ComparePlanes), kept for the two-pass σ.
-  std::vector<std::array<Eigen::Vector2d, 4>> offsets(first.size());
+  // The N × 4 array of the thesis walkthrough (4.5, ComparePlanes), kept for the two-pass σ. Each
+  // entry is key_point_offset's value; the two assumed midpoints of each plane are built once.
+  std::vector<KeyPointOffsets> own;
+  std::vector<KeyPointOffsets>& offsets = offsets_out != nullptr ? *offsets_out : own;
+  offsets.resize(first.size());
   double cos_sum = 0, sin_sum = 0;
   for (std::size_t t = 0; t < first.size(); ++t) {
     const Eigen::Vector2d u1 = first[t].tangent(), u2 = second[t].tangent();
+    const Eigen::Vector2d m1[2] = {assumed_midpoint(first[t], pairs.length1, kEnds[0]),
+                                   assumed_midpoint(first[t], pairs.length1, kEnds[1])};
+    const Eigen::Vector2d m2[2] = {assumed_midpoint(second[t], pairs.length2, kEnds[0]),
+                                   assumed_midpoint(second[t], pairs.length2, kEnds[1])};
     for (int a = 0; a < 2; ++a)
       for (int b = 0; b < 2; ++b) {
-        offsets[t][2 * a + b] =
-            key_point_offset(first[t], second[t], pairs.length1, pairs.length2, kEnds[a], kEnds[b], rotate_to_first);
+        const Eigen::Vector2d d = m2[b] - m1[a];
+        offsets[t][2 * a + b] = rotate_to_first ? in_first_frame(u1, d) : d;
         pairs.mean[a][b] += offsets[t][2 * a + b];
       }
     cos_sum += u1.dot(u2);

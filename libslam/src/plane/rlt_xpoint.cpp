@@ -20,6 +20,21 @@ void stored_observations(const RltPlane& plane, const RltPlaneInterval* within, 
     if (within == nullptr || within->in_interval(plane[i].iteration)) out.push_back(plane[i]);
 }
 
+// The last iteration both planes have a stored observation of (-1: none), by a backward walk that
+// jumps with binary searches: cheap when the two were seen together recently.
+int last_common_iteration(const RltPlane& a, const RltPlane& b) {
+  int i = a.size() - 1, j = b.size() - 1;
+  while (i >= 0 && j >= 0) {
+    const int ia = a[i].iteration, ib = b[j].iteration;
+    if (ia == ib) return ia;
+    if (ia > ib)
+      i = a.lower_bound(ib + 1) - 1;  // a's last observation at or before ib
+    else
+      j = b.lower_bound(ia + 1) - 1;
+  }
+  return -1;
+}
+
 // A plane's canonical size in the group (spec §5.7.2, A18): the largest length any of its chain
 // edges saw it at, and the key point of that edge.
 struct Canonical {
@@ -127,15 +142,33 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
   }
 }
 
+const std::vector<PlaneObject>& RltXPoint::observations(const std::vector<RltPlane>& planes, std::size_t k,
+                                                         const RltPlaneInterval* within) {
+  if (!observations_filled_[k]) {
+    stored_observations(planes[chain_[k]], within, scratch_observations_[k]);
+    observations_filled_[k] = 1;
+  }
+  return scratch_observations_[k];
+}
+
 void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
                                         const RltPlaneInterval* within) {
   const std::size_t n = chain_.size();
   scratch_observations_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) stored_observations(planes[chain_[k]], within, scratch_observations_[k]);
+  observations_filled_.assign(n, 0);
+  edge_sources_.resize(n - 1);
   // Each edge by ComparePlanes with key points: one growth phase (Rule 18), the pair of assumed
-  // midpoints with the lowest σ (Rules 13–15).
-  for (std::size_t k = 1; k < n; ++k)
-    edges_[k - 1] = compare_with_key_points(scratch_observations_[k - 1], scratch_observations_[k], options);
+  // midpoints with the lowest σ (Rules 13–15); an edge whose common observations did not change
+  // keeps its result (IntervalMode::Group narrows them by the whole group: always recomputed).
+  for (std::size_t k = 1; k < n; ++k) {
+    const RltPlane& from = planes[chain_[k - 1]];
+    const RltPlane& to = planes[chain_[k]];
+    const EdgeSource source{from.id(), to.id(), from[0].iteration, to[0].iteration, last_common_iteration(from, to)};
+    if (within == nullptr && edge_sources_[k - 1] == source) continue;
+    edge_sources_[k - 1] = source;
+    edges_[k - 1] = compare_with_key_points(observations(planes, k - 1, within), observations(planes, k, within),
+                                            options);
+  }
 
   // Canonical size and key point of each plane (spec §5.7.2, A18): the largest length among
   // the edges touching it, with that edge's key point; the other edge's key point when that
@@ -145,8 +178,8 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
   const auto key_point_in = [&](std::size_t k, int iteration) {
     std::vector<std::span<const PlaneObject>> others;
     for (std::size_t o = 0; o < n; ++o)
-      if (o != k) others.emplace_back(scratch_observations_[o]);
-    const auto missing = calculate_missing_key_points(scratch_observations_[k], others, iteration, options);
+      if (o != k) others.emplace_back(observations(planes, o, within));
+    const auto missing = calculate_missing_key_points(observations(planes, k, within), others, iteration, options);
     return missing ? missing->key_point : KeyPoint::None;
   };
   std::vector<Canonical> canonical(n);

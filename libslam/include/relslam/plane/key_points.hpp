@@ -12,7 +12,9 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <span>
+#include <vector>
 
 namespace relslam::plane {
 
@@ -56,11 +58,17 @@ struct KeyPointPairs {
 Eigen::Vector2d key_point_offset(const PlaneObject& first, const PlaneObject& second, double length1, double length2,
                                  KeyPoint a, KeyPoint b, bool rotate_to_first = true);
 
+// One iteration's four offsets of Rule 13, pair (a, b) at [2(a − 1) + (b − 1)]: the N × 4 array
+// of the thesis walkthrough (4.5, ComparePlanes).
+using KeyPointOffsets = std::array<Eigen::Vector2d, 4>;
+
 // The four series of Rule 13 over observations `first[i]`, `second[i]` of the same iteration
 // (equal sizes; invalid_argument otherwise). Empty input gives samples = 0. With
 // `rotate_to_first` false (Rule 3 off) the offsets are the raw differences m₂ − m₁ (Fig 66).
+// `offsets`, when given, receives the series themselves (key_point_offset's values, each assumed
+// midpoint computed once per iteration), for a caller that judges them further.
 KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
-                              bool rotate_to_first = true);
+                              bool rotate_to_first = true, std::vector<KeyPointOffsets>* offsets = nullptr);
 
 // What the pair with the lowest σ says (spec §5.6.4).
 struct KeyPointChoice {

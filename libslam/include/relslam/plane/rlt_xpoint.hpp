@@ -84,7 +84,23 @@ class RltXPoint {
                                const RltPlaneInterval* within);
 
   RltPlaneInterval scratch_common_;                             // reused by compute() in IntervalMode::Group
-  std::vector<std::vector<PlaneObject>> scratch_observations_;  // per chain plane, part 2
+  std::vector<std::vector<PlaneObject>> scratch_observations_;  // per chain plane, part 2, filled on demand
+  std::vector<char> observations_filled_;
+
+  // What an edge's comparison was computed from (part 2). Stored observations never change and
+  // only come and go at the ends of the circular array, so two planes' common iterations are
+  // the same set while their oldest kept iterations and their last common iteration are: the
+  // edge's CompareResult is then the same, and a group with one plane in view recomputes only
+  // the edges that got a common sample (thesis 4.2.2, 4.3.8: time follows the planes in view).
+  struct EdgeSource {
+    PlaneId from = -1, to = -1;
+    int oldest_from = 0, oldest_to = 0;
+    int last_common = 0;
+    bool operator==(const EdgeSource&) const = default;
+  };
+  std::vector<EdgeSource> edge_sources_;
+  const std::vector<PlaneObject>& observations(const std::vector<RltPlane>& planes, std::size_t k,
+                                               const RltPlaneInterval* within);
 };
 
 }  // namespace relslam::plane
