@@ -2,6 +2,7 @@
 
 #include "relslam/plane/calculate_missing_key_points.hpp"
 #include "relslam/plane/key_point_compare.hpp"
+#include "relslam/plane/reorder_planes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -95,6 +96,51 @@ void RltXPoint::set_chain(std::vector<PlaneId> order) {
   if (now != next) throw std::logic_error("RltXPoint::set_chain: X" + std::to_string(id_) + " gets other planes");
   chain_ = std::move(order);
   needs_compute_ = true;
+}
+
+bool RltXPoint::reorder_if_due(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                               int iteration) {
+  const int n = static_cast<int>(chain_.size());
+  if (n < 3 || motion_model()) return false;  // two planes have one edge either way
+  const bool due = last_reorder_ < 0 ? iteration - created_iteration_ >= options.reorder.first_age
+                                     : iteration - last_reorder_ >= options.reorder.period;
+  if (!due) return false;
+  last_reorder_ = iteration;
+  const RltPlaneInterval* within = nullptr;
+  if (options.interval_mode == IntervalMode::Group) {
+    common_interval(planes, scratch_common_);
+    within = &scratch_common_;
+  }
+  scratch_observations_.resize(n);
+  observations_filled_.assign(n, 0);
+  // W[i][j] (spec §5.7.3): the iterations ComparePlanes(i, j) used when both planes get a key
+  // point from it (or are static there); −1 otherwise: the pair cannot place one from the other.
+  std::vector<std::vector<int>> weight(n, std::vector<int>(n, -1));
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const CompareResult r = compare_with_key_points(observations(planes, i, within), observations(planes, j, within),
+                                                      options);
+      const bool usable = r.valid && !r.ambiguous && (r.key_point1 != KeyPoint::None || r.static1) &&
+                          (r.key_point2 != KeyPoint::None || r.static2);
+      weight[i][j] = weight[j][i] = usable ? r.samples : -1;
+    }
+  const std::optional<std::vector<int>> path = best_comparison_path(weight, options.reorder.exact_max_planes);
+  if (!path) return false;  // no chain of usable pairs: keep the one there is [R]
+  // Only a strictly better chain replaces the current one (its weight counts unusable edges as 0).
+  const auto total = [&](const std::vector<int>& order) {
+    long long sum = 0;
+    for (std::size_t k = 1; k < order.size(); ++k) sum += std::max(0, weight[order[k - 1]][order[k]]);
+    return sum;
+  };
+  std::vector<int> current(n);
+  for (int k = 0; k < n; ++k) current[k] = k;
+  bool current_usable = true;
+  for (int k = 1; k < n; ++k) current_usable = current_usable && weight[k - 1][k] >= 0;
+  if (current_usable && total(*path) <= total(current)) return false;
+  std::vector<PlaneId> order(n);
+  for (int k = 0; k < n; ++k) order[k] = chain_[(*path)[k]];
+  set_chain(std::move(order));
+  return true;
 }
 
 void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options) {

@@ -402,8 +402,10 @@ bool RltXPointsS::switch_to_group_holding_all() {
 }
 
 void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
+  const bool reorder = options_.key_points && options_.rules.reorder_planes;
   for (RltXPoint& x : xpoints_)
     if (x.needs_compute() && !x.motion_model()) {
+      if (reorder) x.reorder_if_due(planes_, options_, iteration_);  // Rule 30 (spec §5.7.1)
       x.compute(planes_, options_);
       ++result.groups_computed;
     }

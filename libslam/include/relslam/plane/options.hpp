@@ -78,6 +78,15 @@ struct RuleSwitches {
   // Rule 29: when two or more planes are in view during a motion model and a group holds them
   // all, that group becomes current again. Off: the motion model ends only by a new group.
   bool return_to_visited_group = true;
+  // Rule 30 (ReorderPlanes, spec §5.7.3): a group's comparison chain is re-ordered so it pairs
+  // the planes sharing the longest intervals with valid key points. Off: the chain stays in the
+  // order the planes joined, and a collinear shrink + grow pair (Fig 97) can leave a plane
+  // unplaced. [T: on; C: off for now] Measured, noise-free Map D with the small frustum: the
+  // same errors either way (the mixed anchor at 831, and from 838 plane 17 ties with both of its
+  // partners, so no chain places it); on E23 (points + EM2) the longer edges it picks carry wrong
+  // key points (final mean map error 0.24 → 1.96). Off until part 3's interval checks (Rules
+  // 31–34) guard the edges it chooses.
+  bool reorder_planes = false;
 };
 
 // The motion model (Rules 23–27, thesis 4.3.6; spec §5.10, §5.14).
@@ -92,6 +101,17 @@ struct MotionModelOptions {
   // Rule 23: an end grows the plane only when it comes into view this far beyond the known
   // extent, units. 0 is the thesis (no filter: noise may over-grow a plane, Fig 88) [R: 0.02].
   double grow_threshold = 0.02;
+};
+
+// When Rule 30 re-orders a group's comparison chain (spec §5.7.3; the thesis: "after some time"
+// and "periodically") and how hard it searches.
+struct ReorderOptions {
+  // First at this group age, iterations [R, T_reorder] ...
+  int first_age = 40;
+  // ... then again every this many iterations while the group is updated [R, T_reorder_period].
+  int period = 200;
+  // The best path is searched exactly up to this many planes, greedily beyond [R].
+  int exact_max_planes = 12;
 };
 
 struct RelativePlaneOptions {
@@ -149,6 +169,8 @@ struct RelativePlaneOptions {
   // Runs with key_points only [C]: it grows planes from their static end. So do Rules 21 and 22
   // (part 2): key_points switches the algorithm from part 1 to parts 2 and 3.
   MotionModelOptions motion_model;
+  // Part 3 (thesis 4.3.7): Rule 30's re-ordering of comparison chains; with key_points only.
+  ReorderOptions reorder;
   RuleSwitches rules;
 };
 
@@ -197,6 +219,8 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
   f.field("motion_model", r.motion_model, "Rules 23-27: a motion model carries the pose through one partial plane");
   f.field("return_to_visited_group", r.return_to_visited_group,
           "Rule 29: leaving a motion model where a group holds every plane in view returns to it");
+  f.field("reorder_planes", r.reorder_planes,
+          "Rule 30: a group's comparison chain re-ordered to the longest intervals with valid key points");
 }
 
 // The scenario keys of MotionModelOptions (relative_plane.motion_model.*).
@@ -209,6 +233,16 @@ void describe(OptionsOf<MotionModelOptions> auto& m, auto& f) {
             at_most(90.0));
   f.field("grow_threshold", m.grow_threshold, "Rule 23: an end grows the plane past this margin, units (0: thesis)",
           at_least(0.0));
+}
+
+// The scenario keys of ReorderOptions (relative_plane.reorder.*).
+void describe(OptionsOf<ReorderOptions> auto& r, auto& f) {
+  f.field("first_age", r.first_age, "Rule 30: a group's chain is first re-ordered at this age, iterations",
+          at_least(1));
+  f.field("period", r.period, "... then every this many iterations while the group is updated", at_least(1));
+  // 2^n·n² work: 20 planes is already ~4e8 steps.
+  f.field("exact_max_planes", r.exact_max_planes, "the best chain is searched exactly up to this many planes",
+          at_least(2), at_most(20));
 }
 
 // The scenario keys of KeyPointTies (relative_plane.key_point_ties.*).
@@ -259,6 +293,7 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.choice("rule21_order", o.rule21_order,
            "Rule 21: walkthrough (current, neighbours, new group) or new_group_first", kRule21Orders);
   f.nested("motion_model", o.motion_model);
+  f.nested("reorder", o.reorder);
   f.nested("rules", o.rules);
 }
 

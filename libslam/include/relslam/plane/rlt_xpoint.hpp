@@ -51,6 +51,11 @@ class RltXPoint {
   // chain is composed with size correction (Rule 28, spec §5.7.2).
   void compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
 
+  // ReorderPlanes (Rule 30, spec §5.7.3) when it is due at `iteration` (options.reorder): the
+  // chain becomes the best path by the planes' pairwise comparison intervals with valid key
+  // points (reorder_planes.hpp). True when the chain changed (the group is then recomputed).
+  bool reorder_if_due(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration);
+
   // Set when one of the planes got an observation or the chain changed: the group is then
   // recomputed; groups that saw nothing new cost nothing (thesis 4.2.2).
   bool needs_compute() const { return needs_compute_; }
@@ -77,6 +82,7 @@ class RltXPoint {
   std::vector<XPointId> adjacent_;
   std::vector<CompareResult> edges_;
   bool needs_compute_ = true;
+  int last_reorder_ = -1;  // iteration of the last Rule 30 search, -1: none yet
   PlanarPose world_pose_;
   bool placed_ = false;
   std::optional<PlanarPose> anchor_;
