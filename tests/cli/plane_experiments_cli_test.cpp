@@ -160,7 +160,7 @@ TEST(PlaneExperiments, E12Rule28OffMisplacesThePlanesChainedAfterASizeMismatch) 
   EXPECT_TRUE(mismatch);
 }
 
-TEST(PlaneExperiments, E15Rule19OffLosesTheMapAfterTheLoopCloses) {
+TEST(PlaneExperiments, E15Rule19OffLosesTheMapAndRule4ResizeOffAddsADuplicate) {
   test::ScratchDir dir;
   const auto r = run_relslam({"sweep", scenario("p-e15-loop-closure-map-e.json").string(), "--out",
                               (dir / "sweep").string(), "-q"});
@@ -171,6 +171,10 @@ TEST(PlaneExperiments, E15Rule19OffLosesTheMapAfterTheLoopCloses) {
   EXPECT_EQ(all_on.text(0, "walls_mapped"), all_on.text(0, "walls_seen"));
   EXPECT_LT(rule19_off.number(0, "walls_mapped"), all_on.number(0, "walls_mapped"));
   EXPECT_GT(rule19_off.number(0, "final_mean_map_error"), 2 * all_on.number(0, "final_mean_map_error"));
+  // Without Rule 4's resize X0 is anchored on a first reading smaller than the plane: the map is
+  // placed off, and a wall seen again on the second loop no longer matches its plane.
+  const Table rule4_off = read_csv(variants.at("rule4_resize_off") / "summary.csv");
+  EXPECT_GT(rule4_off.number(0, "duplicates"), all_on.number(0, "duplicates"));
 }
 
 }  // namespace
