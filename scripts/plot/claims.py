@@ -294,8 +294,8 @@ def e02(run):
     series, sig, chosen, right = fg.key_point_pair(run.path)
     others = [s for k, s in enumerate(sig["sigma"]) if k != chosen]
     name = fg.PAIR_NAMES[(int(sig["kp_a"][chosen]), int(sig["kp_b"][chosen]))]
-    return (f"lowest σ {sig['sigma'][chosen]:.3g} ({name}) vs {min(others):.3g}-{max(others):.3g} for the other three, "
-            f"over {sig['samples'][0]:.0f} iterations; the chosen ends are real wall ends in {100 * right[0]:.0f} % "
+    return (f"lowest σ {sig['sigma'][chosen]:.3g} ({name}) vs {min(others):.3g}-{max(others):.3g} for the other "
+            f"three, over {sig['samples'][0]:.0f} iterations; the chosen ends are real wall ends in {100 * right[0]:.0f} % "
             f"and {100 * right[1]:.0f} % of them")
 
 

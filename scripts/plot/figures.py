@@ -1072,8 +1072,8 @@ def bad_key_points_figure(fig, sweep, panel):
                    label=f"thesis: corrected after the {HEAL_ITERATIONS}th iteration")
         finish(ax, "iteration", "map error, sum of e_ends (units)")
         healed = "never" if event is None or event[2] is None else f"after {event[2]} iterations"
-        return (f"{name}: at iteration {d['iteration'][k]:.0f} a plane joins the map ({d['planes_in_map'][k - 1]:.0f} → "
-                f"{d['planes_in_map'][k]:.0f}) and the map error jumps {d['map_error'][k - 1]:.3g} → "
+        return (f"{name}: at iteration {d['iteration'][k]:.0f} a plane joins the map "
+                f"({d['planes_in_map'][k - 1]:.0f} → {d['planes_in_map'][k]:.0f}) and the map error jumps {d['map_error'][k - 1]:.3g} → "
                 f"{d['map_error'][k]:.3g}; healed (within {100 * EVENT_SETTLED:.0f} % of the jump) {healed}")
     ax = fig.subplots()
     for vname, vrun in runs:

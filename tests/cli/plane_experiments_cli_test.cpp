@@ -126,7 +126,8 @@ TEST(PlaneExperiments, E09Rule21NewGroupMapsTheReacquiredWallWhole) {
   // Wall 22 (inner bottom, x 13.5-17.5) is seen only in part while the robot turns at the start of
   // d_office_loop_e09 and whole on the return, where global matching re-acquires it.
   test::ScratchDir dir;
-  const auto r = run_relslam({"sweep", scenario("p-e09-plane5.json").string(), "--out", (dir / "sweep").string(), "-q"});
+  const auto r =
+      run_relslam({"sweep", scenario("p-e09-plane5.json").string(), "--out", (dir / "sweep").string(), "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto variants = sweep_variants(dir / "sweep");
   ASSERT_EQ(variants.size(), 3u);
@@ -140,7 +141,8 @@ TEST(PlaneExperiments, E09Rule21NewGroupMapsTheReacquiredWallWhole) {
 
 TEST(PlaneExperiments, E12Rule28OffMisplacesThePlanesChainedAfterASizeMismatch) {
   test::ScratchDir dir;
-  const auto r = run_relslam({"sweep", scenario("p-e12-rule28.json").string(), "--out", (dir / "sweep").string(), "-q"});
+  const auto r =
+      run_relslam({"sweep", scenario("p-e12-rule28.json").string(), "--out", (dir / "sweep").string(), "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto variants = sweep_variants(dir / "sweep");
   const auto on = walls_of(variants.at("rule28_on"));
@@ -162,8 +164,8 @@ TEST(PlaneExperiments, E12Rule28OffMisplacesThePlanesChainedAfterASizeMismatch) 
 
 TEST(PlaneExperiments, E15Rule19OffLosesTheMapAndRule4ResizeOffAddsADuplicate) {
   test::ScratchDir dir;
-  const auto r = run_relslam({"sweep", scenario("p-e15-loop-closure-map-e.json").string(), "--out",
-                              (dir / "sweep").string(), "-q"});
+  const auto r = run_relslam(
+      {"sweep", scenario("p-e15-loop-closure-map-e.json").string(), "--out", (dir / "sweep").string(), "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto variants = sweep_variants(dir / "sweep");
   const Table all_on = read_csv(variants.at("all_on") / "summary.csv");

@@ -50,10 +50,10 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(PlanarMapFile, EveryShippedMapLoads) {
-  const std::pair<const char*, std::size_t> maps[] = {
-      {"a_four_planes.json", 4},  {"b_hallway_unit.json", 16},  {"c_hallway_back.json", 19}, {"d_office_loop.json", 36},
-      {"e_motion_room.json", 10}, {"e1_first_corner.json", 10}, {"e01_two_walls.json", 2},
-      {"d_office_loop_e09.json", 36}};
+  const std::pair<const char*, std::size_t> maps[] = {{"a_four_planes.json", 4},   {"b_hallway_unit.json", 16},
+                                                      {"c_hallway_back.json", 19}, {"d_office_loop.json", 36},
+                                                      {"e_motion_room.json", 10},  {"e1_first_corner.json", 10},
+                                                      {"e01_two_walls.json", 2},   {"d_office_loop_e09.json", 36}};
   std::size_t files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenarios/maps")))
     files += entry.path().extension() == ".json";
@@ -173,8 +173,8 @@ TEST(PlanarMapFile, MapDE09HasMapDsWallsAndFirstSeesWall2OnlyInPart) {
   e09.sensor.frustum = sim::ViewingFrustum::large();
   const sim::PlanarSimulator simulator(e09, 1);
   const sim::PlaneSimFrame first = simulator.frame(0);
-  const auto wall2 = std::find_if(first.truth.planes.begin(), first.truth.planes.end(),
-                                  [](const auto& p) { return p.wall_id == 2; });
+  const auto wall2 =
+      std::find_if(first.truth.planes.begin(), first.truth.planes.end(), [](const auto& p) { return p.wall_id == 2; });
   ASSERT_NE(wall2, first.truth.planes.end()) << "wall 2 is in view at the start";
   EXPECT_NE(wall2->a_is_wall_end, wall2->b_is_wall_end) << "one end real, one cut by the frustum";
   const int turned = simulator.path().operation_ends()[0];

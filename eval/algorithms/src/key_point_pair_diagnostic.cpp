@@ -73,8 +73,11 @@ std::optional<Candidate> candidate(const plane::RltPlane& p, const plane::RltPla
   const int t1 = trend(s.sizes[begin].length1, s.sizes[end - 1].length1, piece->length1);
   const int t2 = trend(s.sizes[begin].length2, s.sizes[end - 1].length2, piece->length2);
   if (t1 * t2 != -1) return std::nullopt;  // one grows while the other shrinks
-  Candidate c{p.id(), q.id(), {s.first.begin() + begin, s.first.begin() + end},
-              {s.second.begin() + begin, s.second.begin() + end}, *piece};
+  Candidate c{p.id(),
+              q.id(),
+              {s.first.begin() + begin, s.first.begin() + end},
+              {s.second.begin() + begin, s.second.begin() + end},
+              *piece};
   const plane::KeyPointPairs pairs = plane::key_point_pairs(c.first, c.second, options.rules.rotate_to_first);
   if (plane::choose_key_points(pairs, options.key_point_ties).ambiguous) return std::nullopt;  // Rule 15's tie
   std::vector<double> sigmas = {pairs.sigma[0][0], pairs.sigma[0][1], pairs.sigma[1][0], pairs.sigma[1][1]};
@@ -105,9 +108,9 @@ void write_key_point_pair_diagnostic(const std::filesystem::path& dir, const std
   for (const char* ab : {"11", "12", "21", "22"})
     for (const char* axis : {"_x", "_z"}) columns.push_back(std::string("off") + ab + axis);
   CsvWriter series(dir / "pairs.csv", columns);
-  CsvWriter sigma(dir / "pair_sigma.csv", {"plane1", "plane2", "interval_start", "interval_end", "samples",
-                                           "length1", "length2", "kp_a", "kp_b", "mean_x", "mean_z", "sigma",
-                                           "chosen", "key_point1", "key_point2", "static1", "static2"});
+  CsvWriter sigma(dir / "pair_sigma.csv",
+                  {"plane1", "plane2", "interval_start", "interval_end", "samples", "length1", "length2", "kp_a",
+                   "kp_b", "mean_x", "mean_z", "sigma", "chosen", "key_point1", "key_point2", "static1", "static2"});
   if (best) {
     const Candidate& c = *best;
     const double l1 = c.piece.length1, l2 = c.piece.length2;
@@ -115,8 +118,19 @@ void write_key_point_pair_diagnostic(const std::filesystem::path& dir, const std
     std::vector<CsvField> row;
     for (std::size_t k = 0; k < c.first.size(); ++k) {
       const PlaneObject &o1 = c.first[k], &o2 = c.second[k];
-      row = {static_cast<long long>(o1.iteration), static_cast<long long>(c.plane1), static_cast<long long>(c.plane2),
-             o1.length(), o2.length(), o1.a.x(), o1.a.y(), o1.b.x(), o1.b.y(), o2.a.x(), o2.a.y(), o2.b.x(), o2.b.y()};
+      row = {static_cast<long long>(o1.iteration),
+             static_cast<long long>(c.plane1),
+             static_cast<long long>(c.plane2),
+             o1.length(),
+             o2.length(),
+             o1.a.x(),
+             o1.a.y(),
+             o1.b.x(),
+             o1.b.y(),
+             o2.a.x(),
+             o2.a.y(),
+             o2.b.x(),
+             o2.b.y()};
       for (KeyPoint a : kEnds)
         for (KeyPoint b : kEnds) {
           const Eigen::Vector2d off = plane::key_point_offset(o1, o2, l1, l2, a, b, rotate);
