@@ -67,7 +67,7 @@ set_each() { local a=(); for kv in "$@"; do a+=(--set "$kv"); done; echo "${a[@]
 
 echo "reproduce: thesis Chapters 4 and 6 into $out ($([ $quick -eq 1 ] && echo quick || echo full) mode); log in $log"
 
-# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01, E03-E06, E10, E21, E31).
+# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01-E10, E12, E15, E18, E21, E31, E32).
 # Seconds each, so quick mode runs them in full; the variant files go through sweep.
 step p-e01-invariance    run p-e01-invariance p-e01-invariance
 step p-four-planes       run p-four-planes p-four-planes
@@ -79,6 +79,18 @@ step p-e31-chain-order   sweep p-e31-chain-order
 step p-office            run p-office p-office
 step p-e21-completed-map run p-e21-completed-map p-e21-completed-map
 step p-e10-rule21-22     sweep p-e10-rule21-22
+# issue 13 experiments (Relative Plane part 2: E02, E07-E09, E12, E15, E18, E32). Seconds each too;
+# quick mode runs fewer noise seeds, and E32 (whose times are the result: one run at a time) 1 and 2 loops.
+seeds() { if [ $quick -eq 1 ]; then echo "--seeds 2"; else echo "--seeds 5"; fi; }
+step p-e02-key-point-pairs run p-e02-key-point-pairs p-e02-key-point-pairs
+step p-e07-interval-mode sweep p-e07-interval-mode $(seeds)
+step p-e08-bad-key-points sweep p-e08-bad-key-points $(seeds)
+step p-e09-plane5        sweep p-e09-plane5
+step p-e12-rule28        sweep p-e12-rule28
+step p-e15-loop-closure-map-e sweep p-e15-loop-closure-map-e $(seeds)
+step p-e18-collinear     run p-e18-collinear p-e18-collinear
+step p-e32-runtime       relslam sweep scenarios/p-e32-runtime.json --out "$out/p-e32-runtime" --force -q --jobs 1 \
+                           $([ $quick -eq 1 ] && echo "--param planar.loops=1,2")
 step p-room              run p-room p-room
 
 # 6.5 - 6.6: the figure eight, its variants and the run-time experiments.

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Thesis charts from the run folders `relslam` writes: Chapter 4's Relative Plane figures (Figs 64-73,
-the paper's Figs 1-3) and Chapter 6's Relative Point figures (Figs 110-171).
+"""Thesis charts from the run folders `relslam` writes: Chapter 4's Relative Plane figures (Figs 64-82,
+87, 90-92, 97, the paper's Figs 1-4) and Chapter 6's Relative Point figures (Figs 110-171).
 
 Every figure reads only CSV/JSON files below RUNS (the folder names of scripts/reproduce.sh, listed
 in FIGURES) and writes one PNG, OUT/fig<N>.png (extras: OUT/components.png, OUT/vp-timing.png), of
@@ -824,6 +824,509 @@ FIGURES = sorted([
     Figure("components", "run-time components, one figure-eight loop", ("s-f8",), components),
     Figure("vp-timing", "Victoria Park ms per scan by grouping levels", ("vp-timing.json",), vp_timing),
 ]
+# ---- issue 13 experiments: Relative Plane part 2 (spec relative_plane_em.md §6.1 E02, E07-E10, E12,
+# E15, E18, E32; thesis 4.3.3-4.3.7.1). Every helper reads one sweep's or run's CSVs; claims.py calls the
+# same helpers for report/claims.md, so each number is computed in one place.
+
+HEAL_ITERATIONS = 4  # thesis 4.3.4: a wrong key point "self corrected after the fourth iteration"
+PAIR_NAMES = {(1, 1): "KP1–KP1", (1, 2): "KP1–KP2", (2, 1): "KP2–KP1", (2, 2): "KP2–KP2"}
+UNDER_SIZED = 0.95  # a mapped plane shorter than this share of its wall is under-sized (E09) [R]
+
+
+def plane_sweep(sweep, axes=("variant",)):
+    """[(axis values tuple, [run folders over the seeds])] of a planar sweep, in sweep.csv order."""
+    path = os.path.join(sweep, "sweep.csv")
+    t = rp.read_table(path, [*axes, "folder", "algorithm"], text=(*axes, "folder", "algorithm"))
+    out = {}
+    for k in range(len(t["folder"])):
+        if t["algorithm"][k] == PLANE:
+            out.setdefault(tuple(t[a][k] for a in axes), []).append(os.path.join(sweep, t["folder"][k]))
+    if not out:
+        raise rp.DataError(f"{path}: column algorithm: no {PLANE} rows")
+    return list(out.items())
+
+
+def variant_folder_of(sweep, name):
+    """The first seed's folder of variant `name` of a planar sweep."""
+    for (value,), folders in plane_sweep(sweep):
+        if value == name:
+            return folders[0]
+    raise rp.DataError(f"{os.path.join(sweep, 'sweep.csv')}: column variant: no {name!r}")
+
+
+def seed_mean(folders, column):
+    """{iteration, column}: the per-iteration mean over the seeds' runs (cut to the shortest)."""
+    runs = [iterations(f, [column], PLANE) for f in folders]
+    n = min(len(r["iteration"]) for r in runs)
+    values = np.array([r[column][:n] for r in runs])
+    seen = np.isfinite(values).sum(axis=0)  # before the first pose no seed has a value: NaN, silently
+    return runs[0]["iteration"][:n], np.where(seen > 0, np.nansum(values, axis=0) / np.maximum(seen, 1), np.nan)
+
+
+# E02 (Fig 68, paper Fig 4) ---------------------------------------------------------------------
+
+def key_point_pair(run):
+    """pairs.csv, pair_sigma.csv and the truth of the chosen key points: the share of the pair's
+    iterations in which each chosen end is a real wall end (plane_observations.csv joined on the
+    iteration and the observation's first end)."""
+    cols = ["iteration", "plane1", "plane2", "a1_x", "a1_z", "a2_x", "a2_z"] + [
+        f"off{a}{b}_{c}" for a in (1, 2) for b in (1, 2) for c in "xz"]
+    series = plane_table(run, "pairs.csv", cols)
+    sig = plane_table(run, "pair_sigma.csv", ["kp_a", "kp_b", "sigma", "mean_x", "mean_z", "chosen", "key_point1",
+                                              "key_point2", "samples", "interval_start", "interval_end"])
+    if len(series["iteration"]) == 0 or len(sig["sigma"]) != 4:
+        raise rp.DataError(f"{os.path.join(run, PLANE, 'pairs.csv')}: no pair in which one plane grows while the "
+                           f"other shrinks")
+    obs = rp.read_table(os.path.join(run, "plane_observations.csv"),
+                        ["iteration", "kp1_x", "kp1_z", "kp1_true_end", "kp2_true_end"])
+    ends = {(i, x, z): (e1, e2) for i, x, z, e1, e2 in
+            zip(obs["iteration"], obs["kp1_x"], obs["kp1_z"], obs["kp1_true_end"], obs["kp2_true_end"])}
+    chosen = int(np.nonzero(sig["chosen"] == 1)[0][0])
+    right = []
+    for plane, key in ((1, "key_point1"), (2, "key_point2")):
+        kp = int(sig[key][chosen])
+        flags = [ends.get((i, x, z)) for i, x, z in zip(series["iteration"], series[f"a{plane}_x"],
+                                                        series[f"a{plane}_z"])]
+        right.append(float(np.mean([f[kp - 1] for f in flags if f is not None])) if kp in (1, 2) else float("nan"))
+    return series, sig, chosen, right
+
+
+def key_point_pairs_figure(fig, run):
+    """Fig 68 / paper Fig 4 (E02): the four offset series of Rule 13 for one growing and one shrinking
+    plane, and their standard deviations; the chosen pair is the lowest."""
+    series, sig, chosen, right = key_point_pair(run)
+    top, bottom = fig.subplots(1, 2, width_ratios=[2.2, 1])
+    t = series["iteration"]
+    for k, (a, b) in enumerate(zip(sig["kp_a"].astype(int), sig["kp_b"].astype(int))):
+        name = PAIR_NAMES[(a, b)] + (" (chosen)" if k == chosen else "")
+        colour = f"C{k}"
+        for axis, style in (("x", "-"), ("z", "--")):
+            top.plot(t, series[f"off{a}{b}_{axis}"], style, color=colour, lw=2.2 if k == chosen else 1,
+                     label=f"{name}, {axis}")
+    finish(top, "iteration", "offset in plane 1's frame turned to 0° (units)")
+    top.legend(fontsize=7, ncol=2)
+    labels = [PAIR_NAMES[(int(a), int(b))] for a, b in zip(sig["kp_a"], sig["kp_b"])]
+    bars = bottom.bar(labels, sig["sigma"], color=["tab:green" if k == chosen else "tab:grey" for k in range(4)])
+    bottom.bar_label(bars, fmt="%.2g", fontsize=7)
+    bottom.set_yscale("log")
+    finish(bottom, "assumed-midpoint pair", "σ over the piece (units)", legend=False)
+    others = [s for k, s in enumerate(sig["sigma"]) if k != chosen]
+    return (f"RltPlanes {series['plane1'][0]:.0f} and {series['plane2'][0]:.0f}, iterations "
+            f"{sig['interval_start'][0]:.0f}-{sig['interval_end'][0]:.0f} ({sig['samples'][0]:.0f}): lowest σ "
+            f"{sig['sigma'][chosen]:.3g} ({labels[chosen]}), the other three {min(others):.3g}-{max(others):.3g}; "
+            f"its key points are real wall ends in {100 * right[0]:.0f} % / {100 * right[1]:.0f} % of the "
+            f"iterations")
+
+
+# E07 (Figs 74, 75) -----------------------------------------------------------------------------
+
+E07_AXES = ("variant", "planar.noise.model")
+
+
+def interval_mode_errors(sweep):
+    """{(mode, noise model): (iterations, mean map error per iteration over the seeds, mean over the run,
+    seeds)}."""
+    out = {}
+    for (mode, noise), folders in plane_sweep(sweep, E07_AXES):
+        it, err = seed_mean(folders, "mean_map_error")
+        out[(mode, noise)] = (it, err, float(np.nanmean(err)), len(folders))
+    return out
+
+
+def interval_mode_figure(fig, sweep, mode):
+    """Figs 74 (group) and 75 (pair), E07: map error over the run under both noise models, and the
+    run means of all four combinations as bars."""
+    errors = interval_mode_errors(sweep)
+    top, bottom = fig.subplots(2, 1, height_ratios=[1.6, 1])
+    for (m, noise), (it, err, _, seeds) in errors.items():
+        if m == mode:
+            top.plot(it, err, lw=1, label=f"{mode} interval, {noise} rotation noise (mean of {seeds} seeds)")
+    finish(top, "iteration", MAP_ERROR)
+    names = [f"{m}\n{n}" for m, n in errors]
+    bars = bottom.bar(names, [v[2] for v in errors.values()],
+                      color=["tab:blue" if m == mode else "lightgrey" for m, _ in errors])
+    bottom.bar_label(bars, fmt="%.3g", fontsize=7)
+    finish(bottom, "", "run mean of the map error", legend=False)
+    return "; ".join(f"{m}/{n}: run mean {v[2]:.3g}" for (m, n), v in errors.items())
+
+
+# E08 (Figs 76-79) ------------------------------------------------------------------------------
+
+def wrong_episodes(run):
+    """Runs of consecutive iterations in which one (group, plane)'s key-point claim is wrong, from
+    keypoints.csv: [(group, plane, first iteration, iterations)], longest first."""
+    k = plane_table(run, "keypoints.csv", ["iteration", "group", "plane", "truth_correct"])
+    episodes = []
+    open_ = {}
+    order = np.lexsort((k["iteration"], k["plane"], k["group"]))
+    for i in order:
+        key, it, ok = (int(k["group"][i]), int(k["plane"][i])), int(k["iteration"][i]), k["truth_correct"][i] == 1
+        start, last = open_.get(key, (None, None))
+        if start is not None and (ok or it != last + 1):
+            episodes.append((*key, start, last - start + 1))
+            start = None
+        if not ok:
+            open_[key] = (it if start is None else start, it)
+        else:
+            open_.pop(key, None)
+    episodes += [(*key, s, last - s + 1) for key, (s, last) in open_.items() if s is not None]
+    return sorted(episodes, key=lambda e: (-e[3], e[2]))
+
+
+def healing(run):
+    """Durations of the wrong key-point episodes: (count, median, share within HEAL_ITERATIONS, max)."""
+    d = np.array([e[3] for e in wrong_episodes(run)])
+    if len(d) == 0:
+        return 0, float("nan"), float("nan"), 0
+    return len(d), float(np.median(d)), float(np.mean(d <= HEAL_ITERATIONS)), int(d.max())
+
+
+EVENT_JUMP = 0.3  # a map-error event: the summed e_ends rises by this much in one iteration, units [R]
+EVENT_SETTLED = 0.25  # ... and it has healed once it is back within this share of the jump [R]
+EVENT_FROM = 5  # the first iterations build the map from nothing: no events there
+
+
+def map_error_events(run):
+    """Iterations where a plane joins the map with a large error (thesis Figs 76-79: a plane just come
+    into view, compared over a tiny interval): [(iteration, jump, iterations until healed or None)]."""
+    d = iterations(run, ["map_error", "planes_in_map"], PLANE)
+    e, n = d["map_error"], d["planes_in_map"]
+    events = []
+    for k in range(max(1, EVENT_FROM), len(e)):
+        jump = e[k] - e[k - 1]
+        if not jump >= EVENT_JUMP:
+            continue
+        healed = next((h for h in range(1, len(e) - k) if e[k + h] - e[k - 1] <= EVENT_SETTLED * jump), None)
+        events.append((int(d["iteration"][k]), float(jump), healed, bool(n[k] > n[k - 1])))
+    return events
+
+
+def event_healing(run):
+    """(events, healed within HEAL_ITERATIONS, never healed, median iterations to heal)."""
+    ev = map_error_events(run)
+    times = [h for _, _, h, _ in ev if h is not None]
+    return (len(ev), sum(h <= HEAL_ITERATIONS for h in times), sum(h is None for _, _, h, _ in ev),
+            float(np.median(times)) if times else float("nan"))
+
+
+def largest_healed_event(run):
+    """The largest event that healed within HEAL_ITERATIONS (else the largest), as its index in
+    iterations.csv."""
+    ev = sorted(map_error_events(run), key=lambda x: (x[2] is None or x[2] > HEAL_ITERATIONS, -x[1]))
+    d = iterations(run, ["map_error", "mean_map_error", "planes_in_map", "kp_wrong"], PLANE)
+    k = int(np.nonzero(d["iteration"] == ev[0][0])[0][0]) if ev else int(np.argmax(d["map_error"]))
+    return d, k, (ev[0] if ev else None)
+
+
+def bad_key_points_figure(fig, sweep, panel):
+    """Figs 76-79 (E08): 76 the map error over the run with its events (a plane joining the map with a
+    large error), 77 the largest event that healed, iteration by iteration, 78 the key-point claims around
+    it, 79 how long events and wrong key points last, against the thesis's four iterations."""
+    runs = [(name, folders[0]) for (name,), folders in plane_sweep(sweep)]
+    if panel == 79:
+        ax = fig.subplots()
+        texts = []
+        clip = 6 * HEAL_ITERATIONS  # longer (or never) is drawn as one last bin
+        bins = np.arange(0, clip + 3) - 0.5
+        for (name,), folders in plane_sweep(sweep):
+            heal, wrong = [], []
+            for run in folders:
+                heal += [min(h, clip + 1) if h is not None else clip + 1 for _, _, h, _ in map_error_events(run)]
+                wrong += [min(e[3], clip + 1) for e in wrong_episodes(run)]
+            ax.hist([heal, wrong], bins=bins, histtype="step", lw=1.5,
+                    label=[f"{name}: map-error events ({len(folders)} seeds)", f"{name}: wrong key-point episodes"])
+            texts.append(f"{name}, {len(folders)} seed(s): {sum(h <= HEAL_ITERATIONS for h in heal)} of {len(heal)} "
+                         f"map-error events healed within {HEAL_ITERATIONS} iterations; "
+                         f"{sum(w <= HEAL_ITERATIONS for w in wrong)} of {len(wrong)} wrong key-point episodes "
+                         f"over within {HEAL_ITERATIONS}")
+        ax.axvline(HEAL_ITERATIONS + 0.5, color="black", ls="--", label=f"thesis: healed by the {HEAL_ITERATIONS}th")
+        ticks = [*range(0, clip + 1, HEAL_ITERATIONS), clip + 1]
+        ax.set_xticks(ticks, [*map(str, ticks[:-1]), f">{clip}"])
+        finish(ax, "iterations until healed", "count")
+        return "; ".join(texts)
+    name, run = runs[0]
+    d, k, event = largest_healed_event(run)
+    lo, hi = (0, len(d["iteration"])) if panel == 76 else (max(0, k - 5), min(len(d["iteration"]), k + 15))
+    it = d["iteration"][lo:hi]
+    if panel == 78:
+        claims = plane_table(run, "keypoints.csv", ["iteration", "group", "plane", "truth_correct"])
+        sel = (claims["iteration"] >= it[0]) & (claims["iteration"] <= it[-1])
+        rows = sorted({(int(g), int(p)) for g, p in zip(claims["group"][sel], claims["plane"][sel])})
+        ax = fig.subplots()
+        for ok, style in ((1, {"color": "tab:green", "marker": "s", "label": "claim right"}),
+                          (0, {"color": "red", "marker": "x", "label": "claim wrong"})):
+            m = sel & (claims["truth_correct"] == ok)
+            y = [rows.index((int(g), int(p))) for g, p in zip(claims["group"][m], claims["plane"][m])]
+            ax.plot(claims["iteration"][m], y, ls="none", ms=4, **style)
+        ax.set_yticks(range(len(rows)), [f"X{g} plane {p}" for g, p in rows], fontsize=6)
+        ax.axvline(d["iteration"][k], color="grey", ls=":")
+        finish(ax, "iteration", "key-point claim (group, plane)")
+        wrong = int((sel & (claims["truth_correct"] == 0)).sum())
+        return f"{name}: {wrong} wrong key-point claims among {int(sel.sum())} in iterations {it[0]:.0f}-{it[-1]:.0f}"
+    if panel == 77:
+        ax = fig.subplots()
+        ax.bar(it, d["map_error"][lo:hi], width=0.8, color=["red" if i >= d["iteration"][k] and
+                                                              i < d["iteration"][k] + HEAL_ITERATIONS else "tab:blue"
+                                                              for i in it])
+        ax.axvline(d["iteration"][k] + HEAL_ITERATIONS - 0.5, color="black", ls="--",
+                   label=f"thesis: corrected after the {HEAL_ITERATIONS}th iteration")
+        finish(ax, "iteration", "map error, sum of e_ends (units)")
+        healed = "never" if event is None or event[2] is None else f"after {event[2]} iterations"
+        return (f"{name}: at iteration {d['iteration'][k]:.0f} a plane joins the map "
+                f"({d['planes_in_map'][k - 1]:.0f} → {d['planes_in_map'][k]:.0f}) and the map error jumps {d['map_error'][k - 1]:.3g} → "
+                f"{d['map_error'][k]:.3g}; healed (within {100 * EVENT_SETTLED:.0f} % of the jump) {healed}")
+    ax = fig.subplots()
+    for vname, vrun in runs:
+        v = iterations(vrun, ["map_error"], PLANE)
+        ax.plot(v["iteration"], v["map_error"], lw=0.8, label=f"{vname}: map error (sum of e_ends)")
+    ev = map_error_events(run)
+    ax.plot([e[0] for e in ev], [d["map_error"][int(np.nonzero(d["iteration"] == e[0])[0][0])] for e in ev], "rv",
+            label=f"{name}: events (a jump of ≥ {EVENT_JUMP:g} in one iteration)")
+    finish(ax, "iteration", "map error (units)")
+    n, quick, never, median = event_healing(run)
+    return (f"{name}: {n} events, {quick} healed within {HEAL_ITERATIONS} iterations, {never} never healed; final map "
+            f"error {d['map_error'][-1]:.3g}")
+
+
+# E09 (Figs 80, 81) and E15 (Figs 90-92): the map per wall ---------------------------------------
+
+def wall_table(run):
+    """planes.csv's mapped planes: {true_wall: [(len_ratio, e_ends), ...]} (a wall with two planes has two)."""
+    p = plane_table(run, "planes.csv", ["true_wall", "len_ratio", "e_ends"])
+    out = {}
+    for w, r, e in zip(p["true_wall"], p["len_ratio"], p["e_ends"]):
+        if np.isfinite(w):
+            out.setdefault(int(w), []).append((r, e))
+    return out
+
+
+def under_sized(run):
+    """Walls whose largest mapped plane is under UNDER_SIZED of their length: [(wall, len_ratio)]."""
+    return [(w, max(r for r, _ in v)) for w, v in sorted(wall_table(run).items())
+            if max(r for r, _ in v) < UNDER_SIZED]
+
+
+def per_wall_bars(fig, sweep, column, ylabel, names=None):
+    """One bar per true wall and variant (the largest plane of a wall when it has two)."""
+    variants = [(n, f[0]) for (n,), f in plane_sweep(sweep) if names is None or n in names]
+    ax = fig.subplots()
+    width = 0.8 / len(variants)
+    texts = []
+    for i, (name, run) in enumerate(variants):
+        table = wall_table(run)
+        walls = sorted(table)
+        values = [max(table[w])[0 if column == "len_ratio" else 1] for w in walls]
+        ax.bar(np.array(walls) + (i - (len(variants) - 1) / 2) * width, values, width, label=name)
+        s = count_summary(run)
+        small = under_sized(run)
+        texts.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls, {s['duplicates']:.0f} "
+                     f"duplicates, final mean map error {s['final_mean_map_error']:.3g}, under-sized "
+                     + (", ".join(f"wall {w} ({r:.2f})" for w, r in small) or "none"))
+    if column == "len_ratio":
+        ax.axhline(1, color="black", lw=0.6)
+    finish(ax, "true wall", ylabel)
+    return "; ".join(texts)
+
+
+def variant_overlays(fig, sweep, names):
+    """The final maps of some variants side by side (true walls yellow, planes blue, groups)."""
+    axes = np.atleast_1d(fig.subplots(1, len(names)))
+    for ax, name in zip(axes, names):
+        plane_overlay(ax, variant_folder_of(sweep, name), groups=False, title=name)
+    texts = []
+    for name in names:
+        s = count_summary(variant_folder_of(sweep, name))
+        texts.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
+                     f"{s['duplicates']:.0f} duplicates, final mean map error {s['final_mean_map_error']:.3g}")
+    return "; ".join(texts)
+
+
+# E10 (Fig 82) ---------------------------------------------------------------------------------
+
+def group_counts(sweep):
+    """{variant: groups at the end} of the E10 sweep."""
+    return {name: int(iterations(folders[0], ["groups"], PLANE)["groups"][-1]) for (name,), folders in
+            plane_sweep(sweep)}
+
+
+REVISIT_AWAY, REVISIT_BACK = 5.0, 1.0  # units: the robot has been this far from its start, and is back this close
+
+
+def revisit_time(run):
+    """Summed step time (ms) over the revisit phase (thesis 4.3.5: "when the robot visits a previously
+    viewed area"): from the first iteration at which the true robot is back within REVISIT_BACK of its
+    start after having been REVISIT_AWAY from it, to the end. (total ms, first iteration), or None when
+    the run ends before the robot returns (a shortened run)."""
+    path = true_path(run)
+    gone = np.hypot(path["x"] - path["x"][0], path["z"] - path["z"][0])
+    away = np.nonzero(gone >= REVISIT_AWAY)[0]
+    back = np.nonzero((gone <= REVISIT_BACK) & (np.arange(len(gone)) > (away[0] if len(away) else len(gone))))[0]
+    if len(back) == 0:
+        return None
+    start = path["iteration"][back[0]]
+    d = iterations(run, ["runtime_ms"], PLANE)
+    return float(np.sum(d["runtime_ms"][d["iteration"] >= start])), int(start)
+
+
+def too_many_groups(fig, sweep):
+    """Fig 82 (E10): groups over the run per Rule 21/22 variant, the thesis's 21 and 30 marked."""
+    ax = fig.subplots()
+    for (name,), folders in plane_sweep(sweep):
+        d = iterations(folders[0], ["groups"], PLANE)
+        ax.plot(d["iteration"], d["groups"], drawstyle="steps-post", lw=1.2, label=f"{name}: {d['groups'][-1]:.0f}")
+    for n, text in ((21, "thesis without Rule 21: 21"), (30, "thesis with it: 30")):
+        ax.axhline(n, color="grey", ls=":", lw=0.8)
+        ax.annotate(text, (0, n), fontsize=7, va="bottom")
+    finish(ax, "iteration", "groups (RltXPoints)")
+    return "; ".join(f"{k}: {v} groups" for k, v in group_counts(sweep).items())
+
+
+# E12 (Fig 87) ---------------------------------------------------------------------------------
+
+def size_mismatches(run):
+    """edges.csv: the edges whose lengths differ from the planes' canonical sizes (Rule 28's L_e vs L*)."""
+    e = plane_table(run, "edges.csv", ["valid", "length1", "length2", "canonical1", "canonical2"])
+    gap = np.maximum(np.abs(e["length1"] - e["canonical1"]), np.abs(e["length2"] - e["canonical2"]))
+    return int(np.sum((e["valid"] == 1) & (gap > 0.02))), len(gap), float(np.max(gap, initial=0.0))
+
+
+OFF_LINE = 1e-6  # noise-free: a plane further than this from its wall's line is misplaced (spec §8's bound)
+
+
+def misplaced(run):
+    """Mapped planes off their wall's line (e_perp above OFF_LINE): [(wall, e_perp)]; the measure of a
+    placement error that does not count walls never seen whole (e_ends does)."""
+    p = plane_table(run, "planes.csv", ["true_wall", "e_perp"])
+    return [(int(w), float(e)) for w, e in zip(p["true_wall"], p["e_perp"]) if np.isfinite(w) and e > OFF_LINE]
+
+
+def rule28_figure(fig, sweep):
+    """Fig 87 (E12): each mapped plane's distance from its wall's line, Rule 28 on and off, and the final
+    position error; the edges that saw a plane off its canonical size are what Rule 28 corrects."""
+    top, bottom = fig.subplots(2, 1, height_ratios=[1, 1.3])
+    runs = plane_sweep(sweep)
+    width = 0.8 / len(runs)
+    texts = []
+    for i, ((name,), folders) in enumerate(runs):
+        p = plane_table(folders[0], "planes.csv", ["id", "e_perp"])
+        top.bar(np.arange(len(p["id"])) + (i - (len(runs) - 1) / 2) * width, p["e_perp"], width, label=name)
+        d = iterations(folders[0], ["position_error"], PLANE)
+        bottom.plot(d["iteration"], d["position_error"], lw=1, label=name)
+        n, total, gap = size_mismatches(folders[0])
+        off = misplaced(folders[0])
+        texts.append(f"{name}: " + (", ".join(f"wall {w} {e:.3g} off its line" for w, e in off) or
+                                    f"every plane within {OFF_LINE:g} of its wall's line")
+                     + f"; final position error {last_finite(d['position_error']):.3g}; {n} of {total} chain edges "
+                       f"saw a plane more than 0.02 off its canonical size (largest {gap:.3g})")
+    top.set_xticks(np.arange(len(p["id"])), [f"{i:.0f}" for i in p["id"]], fontsize=7)
+    finish(top, "mapped plane (planes.csv id)", "e_perp (units)")
+    finish(bottom, "iteration", POS)
+    return "; ".join(texts)
+
+
+# E18 (Fig 97) ---------------------------------------------------------------------------------
+
+def collinear_run(run):
+    """When the run's position error first passes 1e-6 (the pose exact until then; the map error also
+    counts walls not yet seen whole), and the tied (Rule 15) key-point claims and chain edges."""
+    d = iterations(run, ["map_error", "position_error", "pose_valid", "kp_wrong"], PLANE)
+    bad = np.nonzero(d["position_error"] > 1e-6)[0]
+    k = plane_table(run, "keypoints.csv", ["iteration", "ambiguous"])
+    e = plane_table(run, "edges.csv", ["ambiguous"])
+    return d, (int(d["iteration"][bad[0]]) if len(bad) else None), int(np.sum(k["ambiguous"] == 1)), \
+        int(np.sum(e["ambiguous"] == 1))
+
+
+def collinear_figure(fig, run):
+    """Fig 97 (E18): Map D with the small frustum, Rule 30 off (not built): exact until the collinear
+    pieces tie, then the map error and the pose go."""
+    d, first_bad, ambiguous_claims, ambiguous_edges = collinear_run(run)
+    axes = fig.subplots(2, 1, sharex=True)
+    axes[0].plot(d["iteration"], d["map_error"], lw=1, label="map error (sum of e_ends)")
+    axes[0].plot(d["iteration"], d["position_error"], lw=1, label="position error")
+    axes[0].set_yscale("symlog", linthresh=1e-6)
+    axes[1].plot(d["iteration"], d["pose_valid"], drawstyle="steps-post", lw=1, label="pose valid")
+    axes[1].bar(d["iteration"], np.minimum(d["kp_wrong"], 1), width=1, color="red", label="a wrong key point")
+    for ax in axes:
+        if first_bad is not None:
+            ax.axvline(first_bad, color="grey", ls=":")
+    finish(axes[0], "", "units")
+    finish(axes[1], "iteration", "flag")
+    s = count_summary(run)
+    until = "throughout" if first_bad is None else f"until iteration {first_bad}"
+    valid = np.nonzero(d["pose_valid"] == 1)[0]
+    return (f"pose exact (error ≤ 1e-6) {until}, last valid pose at iteration "
+            f"{d['iteration'][valid[-1]] if len(valid) else float('nan'):.0f}; {ambiguous_claims} key-point claims and "
+            f"{ambiguous_edges} chain edges tied both diagonals (Rule 15); {s['walls_mapped']:.0f} of "
+            f"{s['walls_seen']:.0f} walls mapped, pose valid {100 * s['pose_valid_fraction']:.0f} %")
+
+
+# E32 ------------------------------------------------------------------------------------------
+
+def runtime_by_size(sweep):
+    """{loops: (median ms, median ms of the first and last tenth, RltPlanes at the end, iterations)}."""
+    out = {}
+    for (loops,), folders in plane_sweep(sweep, ("planar.loops",)):
+        d = iterations(folders[0], ["runtime_ms", "rlt_planes"], PLANE)
+        n = len(d["runtime_ms"])
+        tenth = max(1, n // 10)
+        out[int(float(loops))] = (float(np.median(d["runtime_ms"])), float(np.median(d["runtime_ms"][:tenth])),
+                                  float(np.median(d["runtime_ms"][-tenth:])), int(d["rlt_planes"][-1]), n)
+    return dict(sorted(out.items()))
+
+
+def runtime_figure(fig, sweep):
+    """E32: time per iteration over the run (moving median) for 1, 2 and 4 loops, and against the planes
+    in view."""
+    left, right = fig.subplots(1, 2)
+    runs = plane_sweep(sweep, ("planar.loops",))
+    for (loops,), folders in runs:
+        d = iterations(folders[0], ["runtime_ms", "visible_planes"], PLANE)
+        left.plot(d["iteration"], rp.moving_average(d["runtime_ms"], 50), lw=0.8, label=f"{loops} loop(s)")
+    finish(left, "iteration", f"{MS} (50-iteration moving average)")
+    (loops, folders) = runs[-1]
+    d = iterations(folders[0], ["runtime_ms", "visible_planes"], PLANE)
+    counts = sorted(set(d["visible_planes"].astype(int)))
+    right.boxplot([d["runtime_ms"][d["visible_planes"] == c] for c in counts], labels=[str(c) for c in counts],
+                  showfliers=False)
+    finish(right, f"planes in view ({loops[0]} loops)", MS, legend=False)
+    return "; ".join(f"{k} loop(s): median {v[0]:.3g} ms, first tenth {v[1]:.3g}, last tenth {v[2]:.3g}, "
+                     f"{v[3]} RltPlanes, {v[4]} iterations" for k, v in runtime_by_size(sweep).items())
+
+
+E09, E15 = ("p-e09-plane5",), ("p-e15-loop-closure-map-e",)
+ISSUE13_FIGURES = [
+    Figure(68, "Rule 13's four assumed-midpoint pairs of a growing and a shrinking plane, E02 (also paper Fig. 4)",
+           ("p-e02-key-point-pairs",), key_point_pairs_figure),
+    Figure(74, "group interval (minimum RltXPoint interval), E07", ("p-e07-interval-mode",),
+           P(interval_mode_figure, mode="group")),
+    Figure(75, "pair interval (minimum RltPlane interval), E07", ("p-e07-interval-mode",),
+           P(interval_mode_figure, mode="pair")),
+    *[Figure(n, title, ("p-e08-bad-key-points",), P(bad_key_points_figure, panel=n)) for n, title in [
+        (76, "bad key points: the map error over the run and its events, E08"),
+        (77, "bad key points: the largest event that heals, iteration by iteration, E08"),
+        (78, "bad key points: the claims around it, right and wrong, E08"),
+        (79, "bad key points: how soon map-error events and wrong key points heal, E08")]],
+    Figure(80, "plane 5: length ratio per wall, Rule 21 on and off, E09", E09,
+           P(per_wall_bars, column="len_ratio", ylabel="mapped length / true length")),
+    Figure(81, "plane 5: the maps with Rule 21 off and on, E09", E09,
+           P(variant_overlays, names=("rule21_off", "rule21_new_group"))),
+    Figure(82, "too many RltXPoints: groups per Rule 21/22 variant, E10", ("p-e10-rule21-22",), too_many_groups),
+    Figure(87, "size mismatch when chaining: Rule 28 on and off, E12", ("p-e12-rule28",), rule28_figure),
+    Figure(90, "after the loop closes on Map E: all rules, and Rule 4's resize off, E15", E15,
+           P(variant_overlays, names=("all_on", "rule4_resize_off"))),
+    Figure(91, "length ratio per wall with and without Rule 19, E15", E15,
+           P(per_wall_bars, column="len_ratio", ylabel="mapped length / true length")),
+    Figure(92, "map error per wall with and without Rules 4 and 19, E15", E15,
+           P(per_wall_bars, column="e_ends", ylabel="e_ends (units)")),
+    Figure(97, "collinear pieces on Map D, small frustum, Rule 30 off (not built), E18", ("p-e18-collinear",),
+           collinear_figure),
+    Figure("e32-runtime", "E32: run time per iteration against the map size", ("p-e32-runtime",), runtime_figure),
+]
+FIGURES = sorted([f for f in FIGURES if isinstance(f.id, int)] + [f for f in ISSUE13_FIGURES if isinstance(f.id, int)],
+                 key=lambda f: f.id) + [f for f in FIGURES if not isinstance(f.id, int)] + \
+    [f for f in ISSUE13_FIGURES if not isinstance(f.id, int)]
+
 BY_ID = {str(f.id): f for f in FIGURES}
 
 

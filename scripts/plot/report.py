@@ -90,7 +90,7 @@ def write_claims(path, runs, quick):
     lines = [f"> {QUICK}", ""] if quick else []
     lines += ["# Thesis numbers against ours", "",
               f"Computed from the run folders in `{runs}` (spec relative_point.md §10; the Relative Plane rows: "
-              "relative_plane_em.md §6.3, experiments E01-E06). The thesis ran on an "
+              "relative_plane_em.md §6.3, experiments E01-E10, E12, E15, E18, E21, E31, E32). The thesis ran on an "
               "Athlon 64 3400+ (2004): compare ratios and shapes, not milliseconds.", "",
               "| quantity | thesis | ours | source file |", "|---|---|---|---|"]
     rows = claims.rows(runs)

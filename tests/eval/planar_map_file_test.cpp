@@ -50,9 +50,10 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(PlanarMapFile, EveryShippedMapLoads) {
-  const std::pair<const char*, std::size_t> maps[] = {
-      {"a_four_planes.json", 4},  {"b_hallway_unit.json", 16},  {"c_hallway_back.json", 19}, {"d_office_loop.json", 36},
-      {"e_motion_room.json", 10}, {"e1_first_corner.json", 10}, {"e01_two_walls.json", 2}};
+  const std::pair<const char*, std::size_t> maps[] = {{"a_four_planes.json", 4},   {"b_hallway_unit.json", 16},
+                                                      {"c_hallway_back.json", 19}, {"d_office_loop.json", 36},
+                                                      {"e_motion_room.json", 10},  {"e1_first_corner.json", 10},
+                                                      {"e01_two_walls.json", 2},   {"d_office_loop_e09.json", 36}};
   std::size_t files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenarios/maps")))
     files += entry.path().extension() == ".json";
@@ -155,6 +156,31 @@ TEST(PlanarMapFile, MapE1HasMapEsWalls) {
     EXPECT_EQ(e1.world.walls[i].b, e.world.walls[i].b) << "wall " << i;
   }
   EXPECT_EQ(e1.path.steps.size(), 3u);
+}
+
+TEST(PlanarMapFile, MapDE09HasMapDsWallsAndFirstSeesWall2OnlyInPart) {
+  // E09's variant of Map D (plane 5, thesis Figs 80/81): the same walls, the start turned round so
+  // wall 2 is first seen cut by the frustum, and the robot back at the start facing +x after its
+  // in-place turn, where Map D's own loop begins.
+  const sim::PlanarMap d = read_planar_map(map_file("d_office_loop.json"));
+  sim::PlanarMap e09 = read_planar_map(map_file("d_office_loop_e09.json"));
+  ASSERT_EQ(e09.world.walls.size(), d.world.walls.size());
+  for (std::size_t i = 0; i < d.world.walls.size(); ++i) {
+    EXPECT_EQ(e09.world.walls[i].a, d.world.walls[i].a) << "wall " << i;
+    EXPECT_EQ(e09.world.walls[i].b, d.world.walls[i].b) << "wall " << i;
+  }
+  e09.sensor.noise = sim::PlaneNoiseOptions::none();
+  e09.sensor.frustum = sim::ViewingFrustum::large();
+  const sim::PlanarSimulator simulator(e09, 1);
+  const sim::PlaneSimFrame first = simulator.frame(0);
+  const auto wall2 =
+      std::find_if(first.truth.planes.begin(), first.truth.planes.end(), [](const auto& p) { return p.wall_id == 2; });
+  ASSERT_NE(wall2, first.truth.planes.end()) << "wall 2 is in view at the start";
+  EXPECT_NE(wall2->a_is_wall_end, wall2->b_is_wall_end) << "one end real, one cut by the frustum";
+  const int turned = simulator.path().operation_ends()[0];
+  EXPECT_NEAR((simulator.frame(turned).truth.world_T_robot.translation - Eigen::Vector2d(15, 1.5)).norm(), 0,
+              kPathTolerance);
+  EXPECT_NEAR(std::abs(wrap_angle(simulator.frame(turned).truth.world_T_robot.heading)), 0, 1e-9);
 }
 
 TEST(PlanarMapFile, SmallValidMapLoadsWithDefaults) {

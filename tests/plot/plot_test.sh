@@ -76,8 +76,18 @@ make_run p-e06-rule12 sweep scenarios/p-e06-rule12.json --set planar.iterations=
 make_run p-e31-chain-order sweep scenarios/p-e31-chain-order.json --set planar.iterations=300
 make_run p-e21-completed-map run scenarios/p-e21-completed-map.json --set planar.iterations=400
 make_run p-e10-rule21-22 sweep scenarios/p-e10-rule21-22.json --set planar.iterations=400
+# issue 13 experiments (Relative Plane part 2), shortened the same way.
+make_run p-e02-key-point-pairs run scenarios/p-e02-key-point-pairs.json --set planar.iterations=600
+make_run p-e07-interval-mode sweep scenarios/p-e07-interval-mode.json --set planar.iterations=300 --seeds 2
+make_run p-e08-bad-key-points sweep scenarios/p-e08-bad-key-points.json --set planar.iterations=400
+make_run p-e09-plane5 sweep scenarios/p-e09-plane5.json --set planar.iterations=400
+make_run p-e12-rule28 sweep scenarios/p-e12-rule28.json --set planar.iterations=400
+make_run p-e15-loop-closure-map-e sweep scenarios/p-e15-loop-closure-map-e.json --set planar.iterations=400
+make_run p-e18-collinear run scenarios/p-e18-collinear.json --set planar.iterations=400
+make_run p-e32-runtime sweep scenarios/p-e32-runtime.json --set planar.iterations=300
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
+expected+=(68 $(seq 74 82) 87 90 91 92 97 e32-runtime)  # issue 13 experiments
 expected+=(110 111 112 113 114 115 116 117 $(seq 119 126) $(seq 130 152) $(seq 167 171) components)
 if [ -d "$vp_data" ]; then
   make_run vp-1181 victoria-park --data "$vp_data" --window 1181:1230
@@ -139,8 +149,8 @@ expect "index.html has thesis captions" grep -q "Figure eight landmark error" "$
 expect "index.html has thesis statements" grep -q "What the thesis says" "$index"
 expect "index.html has the paper's captions" grep -q "The lines from the planes signify which grouping" "$index"
 expect "index.html says what our planar runs show" grep -q "What our run shows:</b> 4 of 4 seen walls mapped" "$index"
-expect "index.html lists Fig 68 (paper Fig 4, E02) as not reproducible yet" \
-  grep -q '<p class="pending">Not reproducible yet: E02' "$index"
+expect "index.html says what the E02 pair shows (Fig 68, paper Fig 4)" \
+  grep -q "What our run shows:</b> RltPlanes [0-9]* and [0-9]*, iterations" "$index"
 expect "claims.md written" [ -s "$claims_md" ]
 expect "claims.md says quick mode" grep -q "Quick mode" "$claims_md"
 expect "claims.md has the table header" grep -q "^| quantity | thesis | ours | source file |$" "$claims_md"
@@ -150,7 +160,9 @@ for row in "loop length" "RltPoints / groups / final groups" "visible points per
   "ρ = 550: total points" "share of minimum computation" "Relative vs EKF" "dynamic test" \
   "Victoria Park per scan, 1" "Victoria Park per scan, 2" "Victoria Park per scan, 3" \
   "E01 Rule 3 invariance" "E03 four planes: no drift" "E03 four planes: map correct" "E04 hallway" \
-  "E05 (a)" "E05 (b)" "E05 (c)" "E06 Rule 12 on vs off" "E31 Rule 2"; do
+  "E05 (a)" "E05 (b)" "E05 (c)" "E06 Rule 12 on vs off" "E31 Rule 2" \
+  "E02 key-point pairs" "E07 interval mode" "E08 wrong key points heal" "E09 plane 5" "E10 Rule 22" \
+  "E12 Rule 28" "E15 Map E loop closure" "E18 collinear pieces" "E32 time per iteration"; do
   expect "claims.md row '$row'" grep -q "^| $row" "$claims_md"
 done
 expect "claims.md computes RltPoints from s-f8" \

@@ -1,9 +1,11 @@
 // The Relative Plane algorithm (libslam's RltXPointsS, thesis Chapter 4) as an algorithm of a
 // planar run: its structure counts and the Profiler's part timings (thesis 4.4.2.5) as
 // iterations.csv columns, each RltPlane's observations and group in planes.csv, and its groups
-// and links as groups.csv and links.csv (spec relative_plane_em.md §7.3).
+// and links as groups.csv and links.csv (spec relative_plane_em.md §7.3); with key points also
+// edges.csv and E02's pairs.csv / pair_sigma.csv.
 #include "relative_plane.hpp"
 
+#include "key_point_pair_diagnostic.hpp"
 #include "relslam/eval/algorithms/columns.hpp"
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
@@ -147,6 +149,8 @@ class RelativePlane final : public PlaneAlgorithm {
       links.row(id_field(l.from), id_field(l.to), joined(l.planes), l.created_iteration, l.first);
     links.close();
     write_edges(dir / "edges.csv");
+    // E02 (Fig 68): Rule 13's four offset series of one growing/shrinking pair, with key points only.
+    if (slam_.options().key_points) write_key_point_pair_diagnostic(dir, slam_.planes(), slam_.options());
   }
 
  private:

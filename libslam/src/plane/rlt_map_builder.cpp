@@ -28,9 +28,18 @@ KeyPoint membership_key_point_at(const RltPlane& plane, int iteration) {
   return KeyPoint::None;
 }
 
+// Rule 19 off (rules.missing_key_points): the first membership's key point, whatever interval
+// it was computed on, and none recomputed (the stale key points of Figs 90–92).
+KeyPoint any_membership_key_point(const RltPlane& plane) {
+  for (const RltXPointRef& ref : plane.refs())
+    if (ref.valid && ref.key_point != KeyPoint::None) return ref.key_point;
+  return KeyPoint::None;
+}
+
 KeyPoint key_point_at(const RltPlane& plane, int iteration, const std::vector<const RltPlane*>& others,
                       const RelativePlaneOptions& options) {
   if (const KeyPoint kp = membership_key_point_at(plane, iteration); kp != KeyPoint::None) return kp;
+  if (!options.rules.missing_key_points) return any_membership_key_point(plane);
   std::vector<std::vector<PlaneObject>> unrolled;
   unrolled.reserve(others.size());
   std::vector<std::span<const PlaneObject>> spans;
@@ -48,7 +57,9 @@ std::optional<PlanarPose> RltMapBuilder::first_observation_pose(const RltXPoint&
                                                                 const RelativePlaneOptions& options) const {
   const PlaneObject& first = plane.first_observation();
   const RltXPointRef* ref = plane.ref(x0.id());
-  if (!options.key_points || std::abs(first.length() - ref->max_length) <= options.same_length) return first.pose();
+  if (!options.key_points || !options.rules.first_reading_resize ||
+      std::abs(first.length() - ref->max_length) <= options.same_length)
+    return first.pose();
   // Rule 4's first reading smaller than the plane (spec §5.8 step 1, Fig 90): grown to the size
   // in X0 from the key point valid in the first observation's piece, found against X0's planes.
   std::vector<const RltPlane*> others;

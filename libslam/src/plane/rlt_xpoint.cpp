@@ -222,6 +222,7 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
   // Plane k's key point in the growth phase holding `iteration`, from the group's other planes
   // (Rule 19: a key point is valid only in the interval it was computed on).
   const auto key_point_in = [&](std::size_t k, int iteration) {
+    if (!options.rules.missing_key_points) return KeyPoint::None;  // Rule 19 off
     std::vector<std::span<const PlaneObject>> others;
     for (std::size_t o = 0; o < n; ++o)
       if (o != k) others.emplace_back(observations(planes, o, within));
@@ -299,7 +300,9 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
       if ((parent_resized && kp_parent == KeyPoint::None) || (child_resized && kp_child == KeyPoint::None))
         child->valid = false;
 
-      if (child->valid) {
+      if (child->valid && !options.rules.size_correction) {
+        child->pose = parent->pose * delta;  // Rule 28 off: the sizes each edge saw, composed as they are
+      } else if (child->valid) {
         const PlanarPose parent_in_edge = reanchor(parent->pose, cp.length, edge.length1, kp_parent);
         child->pose = reanchor(parent_in_edge * delta, edge.length2, cc.length, kp_child);
       }

@@ -87,6 +87,20 @@ struct RuleSwitches {
   // key points (final mean map error 0.24 → 1.96). Off until part 3's interval checks (Rules
   // 31–34) guard the edges it chooses.
   bool reorder_planes = false;
+  // Rule 4's first-reading resize (thesis 4.3.6, Fig 90; spec §5.8 step 1): X0 is anchored on
+  // its planes' first observations, grown first to the plane's size in X0 from its key point
+  // when the first reading was smaller. Off: the first reading is used as seen (the wrong
+  // global alignment of Fig 90's second issue). Part 2 only.
+  bool first_reading_resize = true;
+  // Rule 19: a key point is used only in the interval it was computed on, else it is computed
+  // again there against the group's other planes (CalculateMissingKeyPoints, spec §5.7.4). Off:
+  // a membership's key point is used whatever its interval and none is recomputed (Figs 90–92:
+  // planes too small or badly placed). Part 2 only.
+  bool missing_key_points = true;
+  // Rule 28: chaining moves each plane to the size the next edge saw it at before composing
+  // (spec §5.7.2). Off: the edge offsets are composed as they are, so a plane seen at two
+  // sizes in two edges puts the error of the difference into the chain (Fig 87). Part 2 only.
+  bool size_correction = true;
 };
 
 // The motion model (Rules 23–27, thesis 4.3.6; spec §5.10, §5.14).
@@ -221,6 +235,12 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
           "Rule 29: leaving a motion model where a group holds every plane in view returns to it");
   f.field("reorder_planes", r.reorder_planes,
           "Rule 30: a group's comparison chain re-ordered to the longest intervals with valid key points");
+  f.field("first_reading_resize", r.first_reading_resize,
+          "Rule 4: a smaller first reading is grown to the plane's size before anchoring the map (Fig 90)");
+  f.field("missing_key_points", r.missing_key_points,
+          "Rule 19: key points only in their own interval, else recomputed there (Figs 91/92)");
+  f.field("size_correction", r.size_correction,
+          "Rule 28: chained planes moved to each edge's size before composing (Fig 87)");
 }
 
 // The scenario keys of MotionModelOptions (relative_plane.motion_model.*).
