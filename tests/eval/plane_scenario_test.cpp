@@ -313,6 +313,26 @@ TEST(PlaneScenario, MapDSmallFrustumPassesTheFirstCornersExactlyWithTheMotionMod
   EXPECT_LT(worst_of(run_map(map, 1, without), 0, 700).valid, 300);
 }
 
+// Rule 35 (spec §5.12, E19 / Figs 98–99 in small): with a store of 300 observations per
+// RltPlane the iterations two planes shared are overwritten long before the loop ends, their
+// comparison can no longer be made, and without the save system their group loses them — the
+// planes vanish from the map (measured: 12 of 36 walls left). With each group's best complete
+// result kept and restored they stay (34 of 36; the full store maps all 36).
+TEST(PlaneScenario, MapDSmallStoreKeepsItsPlanesOnlyWithRule35) {
+  sim::PlanarMap map = noise_free(map_file("d_office_loop.json"));
+  map.sensor.frustum = sim::ViewingFrustum::large();
+  RelativePlaneOptions with = noise_free_key_points();
+  with.plane_capacity = 300;
+  RelativePlaneOptions without = with;
+  without.rules.save_snapshot = false;
+  const auto walls_mapped = [&](const RelativePlaneOptions& options) {
+    const SimRun run = run_map(map, 1, options);
+    return std::ranges::count_if(run.mapped_of_wall, [](const auto& wall) { return wall.second >= 1; });
+  };
+  EXPECT_GE(walls_mapped(with), 34);
+  EXPECT_LE(walls_mapped(without), 20);
+}
+
 // The large frustum (spec §3.8: half-angle 35°, 30 deep) keeps walls in view longer, and still
 // shows one partial wall at each corner: the whole run (one loop and the partial second that
 // closes it) is exact wherever the pose is valid (measured: 2477 of 2501 iterations, 1e-14),

@@ -197,6 +197,39 @@ const std::vector<PlaneObject>& RltXPoint::observations(const std::vector<RltPla
   return scratch_observations_[k];
 }
 
+void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const RelativePlaneOptions& options) {
+  const std::size_t n = chain_.size();
+  bool complete = true;
+  double total_length = 0;
+  long long total_samples = 0;
+  for (PlaneId p : chain_) {
+    const RltXPointRef& ref = *planes[p].ref(id_);
+    complete = complete && ref.valid;
+    total_length += ref.max_length;
+    total_samples += ref.samples;
+  }
+  const bool same_chain = snapshot_ && snapshot_->chain == chain_;
+  if (complete) {
+    // Σ L* at least the snapshot's; about equal sizes: the longer total interval [T, spec §5.12].
+    const bool better = !same_chain || total_length > snapshot_->total_length + options.same_length ||
+                        (total_length >= snapshot_->total_length - options.same_length &&
+                         total_samples >= snapshot_->total_samples);
+    if (!better) return;
+    Snapshot& s = snapshot_.emplace();
+    s.chain = chain_;
+    s.edges = edges_;
+    s.total_length = total_length;
+    s.total_samples = total_samples;
+    for (PlaneId p : chain_) s.refs.push_back(*planes[p].ref(id_));
+    return;
+  }
+  // Restored only when a comparison could not be made at all (no common piece left stored), not
+  // when one was made and could not place a plane (Rule 15's tie, a missing key point).
+  if (!same_chain || std::ranges::all_of(edges_, &CompareResult::valid)) return;
+  edges_ = snapshot_->edges;
+  for (std::size_t k = 0; k < n; ++k) *planes[chain_[k]].ref(id_) = snapshot_->refs[k];
+}
+
 void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
                                         const RltPlaneInterval* within) {
   const std::size_t n = chain_.size();
@@ -309,6 +342,7 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
     }
     parent = child;
   }
+  if (options.rules.save_snapshot) keep_or_restore_snapshot(planes, options);
 }
 
 }  // namespace relslam::plane

@@ -101,6 +101,12 @@ struct RuleSwitches {
   // (spec §5.7.2). Off: the edge offsets are composed as they are, so a plane seen at two
   // sizes in two edges puts the error of the difference into the chain (Fig 87). Part 2 only.
   bool size_correction = true;
+  // Rule 35 (spec §5.12): each group keeps a copy of its best complete result (every plane
+  // placed; the largest total size, then the longest total interval) and restores it when a
+  // comparison can no longer be made — the circular array (plane_capacity) has overwritten the
+  // iterations two planes shared. Off: such a group loses those planes and they vanish from the
+  // map after the wrap-around (E19, Figs 98–99). Part 2 only.
+  bool save_snapshot = true;
 };
 
 // The motion model (Rules 23–27, thesis 4.3.6; spec §5.10, §5.14).
@@ -233,6 +239,8 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
   f.field("motion_model", r.motion_model, "Rules 23-27: a motion model carries the pose through one partial plane");
   f.field("return_to_visited_group", r.return_to_visited_group,
           "Rule 29: leaving a motion model where a group holds every plane in view returns to it");
+  f.field("save_snapshot", r.save_snapshot,
+          "Rule 35: a group restores its best complete result when a comparison can no longer be made");
   f.field("reorder_planes", r.reorder_planes,
           "Rule 30: a group's comparison chain re-ordered to the longest intervals with valid key points");
   f.field("first_reading_resize", r.first_reading_resize,

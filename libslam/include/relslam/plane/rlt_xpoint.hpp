@@ -105,6 +105,17 @@ class RltXPoint {
     bool operator==(const EdgeSource&) const = default;
   };
   std::vector<EdgeSource> edge_sources_;
+
+  // Rule 35's copy of the best complete result (spec §5.12), for the chain it was computed on.
+  struct Snapshot {
+    std::vector<PlaneId> chain;
+    std::vector<RltXPointRef> refs;  // by chain position
+    std::vector<CompareResult> edges;
+    double total_length = 0;
+    long long total_samples = 0;
+  };
+  std::optional<Snapshot> snapshot_;
+  void keep_or_restore_snapshot(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
   const std::vector<PlaneObject>& observations(const std::vector<RltPlane>& planes, std::size_t k,
                                                const RltPlaneInterval* within);
 };
