@@ -2,6 +2,9 @@
 
 #include "relslam/relax/ceres_relaxation.hpp"
 
+#include <stdexcept>
+#include <utility>
+
 namespace relslam::point {
 
 // The true landmark an RltPoint stands for: the one behind most of its observations.
@@ -13,7 +16,7 @@ int majority(const std::map<int, int>& votes) {
 }
 
 RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const PointSlamOptions& options,
-              const Rigid3& sensor_T_robot, bool errors_every_iteration) {
+              const Rigid3& sensor_T_robot, bool errors_every_iteration, const WrongMatch& wrong) {
   const sim::Simulator sim(sim_options, seed);
   RltMapper mapper(options, relax::solve_relaxation);
   RunReport report;
@@ -22,7 +25,16 @@ RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const Poin
   for (int k = 0; k < sim.iterations(); ++k) {
     sim::SimFrame f = sim.frame(k);
     for (Eigen::Vector3d& p : f.observation.points) p = sensor_T_robot * p;
-    StepResult r = mapper.step(f.observation);
+    std::vector<std::pair<int, PointId>> forced;
+    if (k == wrong.iteration) {
+      PointId target = kNone;
+      for (const RltPoint& p : mapper.points())
+        if (p.on_map() && majority(votes[p.id]) == wrong.assigned_to) target = p.id;
+      for (std::size_t i = 0; i < f.truth.landmark_ids.size(); ++i)
+        if (f.truth.landmark_ids[i] == wrong.observed && target != kNone) forced.emplace_back(static_cast<int>(i), target);
+      if (forced.size() != 1) throw std::logic_error("WrongMatch: landmark not in view or never mapped");
+    }
+    StepResult r = mapper.step(f.observation, forced);
     votes.resize(mapper.points().size());
     for (std::size_t i = 0; i < r.assignment.size(); ++i) {
       ++votes[r.assignment[i]][f.truth.landmark_ids[i]];

@@ -34,7 +34,16 @@ int majority(const std::map<int, int>& votes);
 // The figure eight at density 100 with sensor noise `noise` (one loop, the simulator's defaults).
 sim::SimOptions one_loop(double noise);
 
+// A deliberately wrong match planted in a run: at `iteration`, the observation of true landmark
+// `observed` goes to the RltPoint standing for true landmark `assigned_to` (issue 19).
+struct WrongMatch {
+  int iteration = -1;  // -1: none
+  int observed = -1;
+  int assigned_to = -1;
+};
+
 RunReport run(const sim::SimOptions& sim_options, std::uint64_t seed, const PointSlamOptions& options,
-              const Rigid3& sensor_T_robot = Rigid3::identity(), bool errors_every_iteration = false);
+              const Rigid3& sensor_T_robot = Rigid3::identity(), bool errors_every_iteration = false,
+              const WrongMatch& wrong = {});
 
 }  // namespace relslam::point

@@ -5,10 +5,24 @@
 #include <cmath>
 
 namespace relslam::point {
+namespace {
+
+// A tie's inverse standard deviation in sensor sigmas: its two ends are averages over n_a and
+// n_b iterations (a first observation is one).
+double tie_weight(int n_a, int n_b) { return 1.0 / std::sqrt(1.0 / n_a + 1.0 / n_b); }
+
+// Three first observations fix the map frame on their own (a rigid motion).
+constexpr int kGaugeTiesForFreeRoot = 3;
+
+}  // namespace
 
 MapRelaxation build_relaxation(const RltMap& map, double loss_scale) {
   MapRelaxation out;
   out.problem.loss_scale = loss_scale;
+  // Body 0: the robot frame at the first iteration, which is the map frame (thesis 6.3.3).
+  out.groups.push_back(kNone);
+  out.problem.world_T_group.push_back(Rigid3::identity());
+  out.problem.fixed.push_back(true);
   std::vector<int> index(map.groups.size(), kNone);  // map group id -> problem index
   for (const RltGroup& g : map.groups) {
     if (!g.alive()) continue;
@@ -17,11 +31,12 @@ MapRelaxation build_relaxation(const RltMap& map, double loss_scale) {
     index[g.id()] = static_cast<int>(out.groups.size());
     out.groups.push_back(g.id());
     out.problem.world_T_group.push_back(*world_T_group);
-    // Deviation: the root (and provisional roots) keep the thesis's map frame.
+    // The root waits for the gauge ties (below); a provisional root keeps its own frame.
     out.problem.fixed.push_back(g.root());
   }
+  int gauge_ties = 0;
   for (const RltPoint& p : map.points) {
-    if (p.dynamic || p.merged || p.groups.size() < 2) continue;
+    if (p.dynamic || p.merged) continue;
     // The owner (whose estimate is the map position) first, then every other group: a star of
     // ties, one per extra group.
     const RltGroupRef* hub = nullptr;
@@ -29,20 +44,32 @@ MapRelaxation build_relaxation(const RltMap& map, double loss_scale) {
       if (index[r.group] != kNone && (hub == nullptr || r.group == p.owner)) hub = &r;
     if (hub == nullptr) continue;
     const RltGroup& hub_group = map.groups[hub->group];
+    const Eigen::Vector3d p_hub = hub_group.relative(hub->member);
     for (const RltGroupRef& r : p.groups) {
       if (&r == hub || index[r.group] == kNone) continue;
       const RltGroup& other = map.groups[r.group];
-      const double weight = 1.0 / std::sqrt(1.0 / hub_group.iterations_used() + 1.0 / other.iterations_used());
+      out.problem.ties.push_back({index[hub->group], p_hub, index[r.group], other.relative(r.member),
+                                  tie_weight(hub_group.iterations_used(), other.iterations_used())});
+    }
+    // The gauge: a first-iteration observation is one sample of the point in the map frame. The
+    // thesis registers the root group to its own members' first observations only; here every
+    // mapped point seen then holds the map frame, whichever group owns it.
+    if (p.on_map() && p.first_observation.iteration == map.first_iteration) {
       out.problem.ties.push_back(
-          {index[hub->group], hub_group.relative(hub->member), index[r.group], other.relative(r.member), weight});
+          {0, p.first_observation.p, index[hub->group], p_hub, tie_weight(1, hub_group.iterations_used())});
+      ++gauge_ties;
     }
   }
+  if (gauge_ties >= kGaugeTiesForFreeRoot)
+    for (std::size_t i = 1; i < out.groups.size(); ++i)
+      if (map.groups[out.groups[i]].registration() == Registration::FirstObservations) out.problem.fixed[i] = false;
   return out;
 }
 
 int apply_relaxation(RltMap& map, const MapRelaxation& relaxation) {
   int moved = 0;
   for (std::size_t i = 0; i < relaxation.groups.size(); ++i) {
+    if (relaxation.problem.fixed[i]) continue;
     const RltGroup& g = map.groups[relaxation.groups[i]];
     const Rigid3& world_T_group = relaxation.problem.world_T_group[i];
     for (std::size_t m = 0; m < g.members().size(); ++m) {

@@ -36,7 +36,9 @@ RltMapper::RltMapper(const PointSlamOptions& options, GroupRelaxer relaxer)
 RltMapper::RltMapper(RltMapper&&) noexcept = default;
 RltMapper::~RltMapper() = default;
 
-StepResult RltMapper::step(const ObservationFrame& frame) {
+StepResult RltMapper::step(const ObservationFrame& frame) { return step(frame, {}); }
+
+StepResult RltMapper::step(const ObservationFrame& frame, const std::vector<std::pair<int, PointId>>& forced_matches) {
   const int k = frame.iteration;
   if (map_.iteration != kNone && k <= map_.iteration)
     throw std::logic_error("RltMapper::step: iteration " + std::to_string(k) + " after " +
@@ -63,6 +65,13 @@ StepResult RltMapper::step(const ObservationFrame& frame) {
   result.assignment = match.assigned;
   result.local_matches = match.local;
   result.global_matches = match.global;
+  for (const auto& [observation, id] : forced_matches) {
+    if (observation < 0 || static_cast<std::size_t>(observation) >= result.assignment.size() || id < 0 ||
+        static_cast<std::size_t>(id) >= map_.points.size())
+      throw std::logic_error("RltMapper::step: forced match out of range at iteration " + std::to_string(k));
+    result.assignment[observation] = id;
+    ++result.global_matches;
+  }
   bool loop_closed = false;
   for (std::size_t i = 0; i < frame.points.size(); ++i) {
     PointId& id = result.assignment[i];

@@ -45,19 +45,22 @@ struct RelaxationReport {
 // Solves a RelaxationProblem in place (relax::solve_relaxation is the Ceres one).
 using GroupRelaxer = std::function<RelaxationReport(RelaxationProblem&)>;
 
-// The groups taking part (alive, computed and registrable), which map's group each entry
-// stands for, and the problem over them.
+// The groups taking part, which map's group each entry stands for, and the problem over them.
 struct MapRelaxation {
   RelaxationProblem problem;
-  std::vector<GroupId> groups;  // problem index -> map group id
+  std::vector<GroupId> groups;  // problem index -> map group id; kNone: the first frame's body
 };
 
-// The problem for `map`: one body per alive, registrable group at its current registration
-// (the root groups fixed), one tie per extra group a static point belongs to.
+// The problem for `map`: one body per alive, registrable group at its current registration,
+// one tie per extra group a static point belongs to (a star around its owner), and the gauge:
+// a fixed body at the identity holding the first iteration's observations (the map frame,
+// thesis 6.3.3), tied to the owner of each mapped point seen then. With three or more such
+// ties the root group is free too, so the map frame rests on every first observation rather
+// than on the root's members alone; with fewer it stays fixed. Provisional roots stay fixed.
 MapRelaxation build_relaxation(const RltMap& map, double loss_scale);
 
-// After a solve: every point a taking-part group owns gets world_T_group * relative (and its
-// place in the global index). The groups' relative maps are untouched. Returns the points moved.
+// After a solve: every point a free group owns gets world_T_group * relative (and its place in
+// the global index). Fixed groups and the relative maps are untouched. Returns the points moved.
 int apply_relaxation(RltMap& map, const MapRelaxation& relaxation);
 
 }  // namespace relslam::point

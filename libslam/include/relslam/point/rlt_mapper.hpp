@@ -15,6 +15,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace relslam::point {
@@ -70,6 +71,9 @@ class RltMapper {
   // One iteration (thesis 6.2–6.5 as ordered in spec 5.3). Iterations must increase; points
   // are robot-frame observations in any order. The first frame defines the world frame.
   StepResult step(const ObservationFrame& frame);
+  // The same with some matches forced (observation index -> RltPoint id) over what matching
+  // found: how a test plants a deliberately wrong global match in a whole run (issue 19).
+  StepResult step(const ObservationFrame& frame, const std::vector<std::pair<int, PointId>>& forced_matches);
 
   RltMapper(RltMapper&&) noexcept;
   ~RltMapper();
