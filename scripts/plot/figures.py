@@ -859,10 +859,10 @@ def extracted_planes(run, iteration):
 def robot_pose(run, iteration):
     """(translation (x, z), heading rad) of the true pose at an iteration."""
     path = true_path(run)
-    k = int(np.nonzero(path["iteration"] == iteration)[0][0]) if (path["iteration"] == iteration).any() else None
-    if k is None:
+    rows = np.nonzero(path["iteration"] == iteration)[0]
+    if len(rows) == 0:
         raise rp.DataError(f"{os.path.join(run, 'ground_truth_path.tum')}: no iteration {iteration}")
-    return np.array([path["x"][k], path["z"][k]]), np.radians(path["psi_deg"][k])
+    return np.array([path["x"][rows[0]], path["z"][rows[0]]]), np.radians(path["psi_deg"][rows[0]])
 
 
 def visible_pieces(run, iteration, points, ids):
