@@ -162,7 +162,7 @@ for row in "loop length" "RltPoints / groups / final groups" "visible points per
   "E01 Rule 3 invariance" "E03 four planes: no drift" "E03 four planes: map correct" "E04 hallway" \
   "E05 (a)" "E05 (b)" "E05 (c)" "E06 Rule 12 on vs off" "E31 Rule 2" \
   "E23 Map D, points" "E24 E23 with point noise" "E25 Map E, points" "E26 E25 with point noise" \
-  "E27 paper demo without noise" "E27 paper demo with noise" "E27 real time including EM" "E29 EM2 vs EM1"; do
+  "E27 paper demo without noise" "E27 paper demo with noise" "E27 real time including EM" "E30 EM test bench" "E29 EM2 vs EM1"; do
   expect "claims.md row '$row'" grep -q "^| $row" "$claims_md"
 done
 expect "claims.md computes RltPoints from s-f8" \
