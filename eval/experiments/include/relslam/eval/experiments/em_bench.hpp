@@ -3,9 +3,10 @@
 // walls in front of a robot at the origin, seen by the point sensor (large frustum), each
 // extracted by EM1, EM2 and the Open3D baseline (when built) and scored like em_frames.csv
 // (SegComp at 0.8, metrics/extraction_score.hpp). Cases: random walls (Fig 55), two close
-// parallel walls (Fig 56), a smaller wall attached to a larger one (Fig 57), a wall over a gap
-// (Fig 58), a corner with the exclusivity cull on and off (Fig 59), inlier distances on the
-// attached wall (Fig 60), and EM1's assignment modes on the corner (Fig 61), each over seeds.
+// parallel walls (Figs 56-58: the actual planes, each stealing the other's points), a smaller
+// wall attached to a larger one, a wall over a gap (ours, not a thesis figure), a corner with the
+// exclusivity cull on and off (Fig 59), inlier distances on the attached wall (Fig 60), and EM1's
+// assignment modes on the corner (Fig 61), each over seeds.
 
 #include "relslam/eval/config/extraction_options.hpp"
 #include "relslam/eval/metrics/extraction_score.hpp"
