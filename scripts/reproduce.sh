@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs the thesis's Chapter 4 (Relative Plane) and Chapter 6 (Relative Point) experiments and
+# Runs the thesis's Chapter 4 (Relative Plane), Chapter 5 (EM plane extraction) and Chapter 6
+# (Relative Point) experiments and
 # writes the report: each figure next to its thesis
 # number and caption (report/index.html) and the thesis's numbers next to ours (report/claims.md).
 #   scripts/reproduce.sh [--quick] [--out DIR] [--report DIR] [--binary PATH] [--jobs N]
@@ -92,6 +93,22 @@ step p-e18-collinear     run p-e18-collinear p-e18-collinear
 step p-e32-runtime       relslam sweep scenarios/p-e32-runtime.json --out "$out/p-e32-runtime" --force -q --jobs 1 \
                            $([ $quick -eq 1 ] && echo "--param planar.loops=1,2")
 step p-room              run p-room p-room
+
+# Chapter 5 and the companion paper (spec relative_plane_em.md §6.1, E23-E30): points -> EM ->
+# Relative Plane (Figs 46, 105-108, paper Figs 6-8), the EM test bench (Figs 55-61) and EM1 vs
+# EM2 on identical frames (E29). E27 times EM and the algorithm per iteration: one run at a time.
+step p-em-office         run p-em-office p-em-office $(set_each $(short planar.iterations=1000))
+step p-em-office-noise   run p-em-office-noise p-em-office-noise $(set_each $(short planar.iterations=1000))
+step p-em-room           run p-em-room p-em-room $(set_each $(short planar.loops=1))
+step p-em-room-noise     run p-em-room-noise p-em-room-noise $(set_each $(short planar.loops=1))
+step p-em-demo           relslam sweep scenarios/p-em-demo.json --out "$out/p-em-demo" --force -q --jobs 1 \
+                           $(set_each $(short planar.iterations=600))
+step em-bench            relslam em-bench scenarios/p-em-office-noise.json --out "$out/em-bench" --force -q \
+                           --seeds "$([ $quick -eq 1 ] && echo 2 || echo 5)"
+step e29-office          relslam em-bench scenarios/p-em-compare-office.json --compare --out "$out/e29-office" \
+                           --force -q $(set_each $(short planar.iterations=100))
+step e29-room            relslam em-bench scenarios/p-em-compare-room.json --compare --out "$out/e29-room" \
+                           --force -q $(set_each $(short planar.iterations=100))
 
 # 6.5 - 6.6: the figure eight, its variants and the run-time experiments.
 step s-f8                run s-f8 s-f8

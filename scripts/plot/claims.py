@@ -421,6 +421,75 @@ ISSUE13_CLAIMS = [
      "(4.2.2, 4.3.8)", ["p-e32-runtime"], e32),
 ]
 
+# ---- issue 14 Chapter 5: points -> EM -> Relative Plane --------------------------------------
+
+def em_map(run):
+    """A Chapter 5 run's map (verdict as Chapter 4's) and its extraction's frame means."""
+    frames = rp.read_table(run.file("em_frames.csv"), ["recall", "precision"])
+    s = plane_summary(run)
+    return (verdict(s) + f", pose valid {100 * s['pose_valid_fraction']:.0f} %; extraction recall "
+            f"{np.mean(frames['recall']):.4f}, precision {np.mean(frames['precision']):.4f} (frame means)")
+
+
+def e27_maps(run, variants):
+    cells = []
+    for variant in variants:
+        name, folder = variant_folder(run, variant)
+        cells.append(f"{name}: " + verdict(plane_summary(run, folder)))
+    return " — ".join(cells)
+
+
+def e27_real_time(run):
+    """ms per iteration of EM and the Relative Plane algorithm, per E27 cell."""
+    run.file("sweep.csv")
+    cells = []
+    for variant, (em, rplane) in fg.demo_times(run.path).items():
+        run.read.append(os.path.join(os.path.relpath(fg.sweep_cell(run.path, variant), run.runs), fg.PLANE,
+                                     "iterations.csv"))
+        total = em + rplane
+        cells.append(f"{variant}: EM {np.median(em):.3g} + RP {np.median(rplane):.3g} ms median, together p95 "
+                     f"{np.percentile(total, 95):.3g}, max {np.max(total):.3g} ms "
+                     f"({1000 / np.median(total):.0f} it/s at the median)")
+    return "; ".join(cells)
+
+
+def e30_bench(run):
+    """Each failure case of the test bench beside the defaults: mean recall / precision over the seeds
+    of EM2 and EM1 (bench.csv)."""
+    t = fg.bench_scores(run.path)
+    run.file("bench.csv")
+    cases = [("close walls 0.1 apart", "close_parallel", "gap=0.1"), ("0.5 apart", "close_parallel", "gap=0.5"),
+             ("d_in 0.6", "attached_smaller", "inlier_distance=0.6"),
+             ("default d_in", "attached_smaller", "default"), ("no exclusivity", "corner", "exclusivity=off"),
+             ("nearest", "corner", "assign_mode=nearest"), ("corner defaults", "corner", "exclusivity=on")]
+    cells = []
+    for name, scene, variant in cases:
+        scores = []
+        for extractor in ("em2", "em1"):
+            sel = (t["scene"] == scene) & (t["variant"] == variant) & (t["extractor"] == extractor)
+            if not sel.any():
+                raise rp.DataError(f"{os.path.join(run.path, 'bench.csv')}: no rows for {scene} {variant} {extractor}")
+            scores.append(f"{extractor} {t['recall'][sel].mean():.2g}/{t['precision'][sel].mean():.2g}")
+        cells.append(f"{name}: {', '.join(scores)}")
+    return f"recall/precision over {len(set(t['seed']))} seeds — " + "; ".join(cells)
+
+
+def e29_speed(*runs):
+    """EM1 vs EM2 on identical frames, per map: median ms, their ratio, recall and precision."""
+    cells = []
+    for run in runs:
+        run.file("em_compare.csv")
+        it, by = fg.compare_frames(run.path)
+        if not {"em1", "em2"} <= set(by):
+            raise rp.DataError(f"{os.path.join(run.path, 'em_compare.csv')}: no ms_em1 and ms_em2 columns")
+        em1, em2 = by["em1"], by["em2"]
+        ratio = np.median(em1["ms"]) / np.median(em2["ms"])
+        cells.append(f"{os.path.basename(run.path)} ({len(it)} frames): EM2 {np.median(em2['ms']):.3g} ms vs EM1 "
+                     f"{np.median(em1['ms']):.3g} ms median, EM2 {'faster' if ratio > 1 else 'slower'} "
+                     f"(EM1/EM2 {ratio:.2f}); recall {np.mean(em2['recall']):.4f} vs {np.mean(em1['recall']):.4f}, "
+                     f"precision {np.mean(em2['precision']):.4f} vs {np.mean(em1['precision']):.4f}")
+    return "; ".join(cells)
+
 
 # (quantity, thesis value, run folders, claim function)
 CLAIMS = [
@@ -467,6 +536,25 @@ CLAIMS = [
      "Rule 22 about 5 % less time while revisiting (4.3.5)", ["p-e10-rule21-22"], e10),
     ("E31 Rule 2: chain order, noise-free", "the same map whatever the chain order (spec E31: <= 1e-9)",
      ["p-e31-chain-order"], e31),
+    # issue 14 Chapter 5
+    ("E23 Map D, points, EM2, small frustum, no noise (Fig 105)", "appears correct, a slight error from one turn "
+     "(5.2)", ["p-em-office"], em_map),
+    ("E24 E23 with point noise (Fig 106)", "works as intended, not fully accurate (5.2)", ["p-em-office-noise"],
+     em_map),
+    ("E25 Map E, points, EM2, large frustum, no noise (Fig 107)", "a visually perfect map (5.2)", ["p-em-room"],
+     em_map),
+    ("E26 E25 with point noise (Fig 108)", "like the Chapter 4 noisy runs (5.2)", ["p-em-room-noise"], em_map),
+    ("E27 paper demo without noise (paper Fig 7)", "a map without any errors (paper §III)", ["p-em-demo"],
+     P(e27_maps, variants=("office_no_noise", "room_no_noise"))),
+    ("E27 paper demo with noise (paper Fig 8)", "a good map though the points cannot be made out (paper §III)",
+     ["p-em-demo"], P(e27_maps, variants=("office_noise", "room_noise"))),
+    ("E27 real time including EM", "30 iterations/s (33 ms) on an AMD 64 3400+ (paper §III)", ["p-em-demo"],
+     e27_real_time),
+    ("E30 EM test bench: failures and the defaults (Figs 56-61)", "close planes steal points; too large an inlier "
+     "distance misaligns the small plane; without exclusivity an extra plane; nearest assignment leaves planes "
+     "unattached; the defaults avoid these (3.5.4)", ["em-bench"], e30_bench),
+    ("E29 EM2 vs EM1 on identical frames", "EM2 about twice as fast as EM1, similar quality (3.5.4)",
+     ["e29-office", "e29-room"], e29_speed),
 ] + ISSUE13_CLAIMS
 
 

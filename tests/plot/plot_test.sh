@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The thesis figure scripts (scripts/plot/figures.py, report.py, claims.py) against a tiny fixture
 # of real, seeded, shortened runs of the relslam binary (every folder scripts/reproduce.sh makes,
-# the planar Chapter 4 ones included):
+# the planar Chapter 4 and the point-sensor Chapter 5 ones included):
 # each figure renders a valid PNG of the expected size, the report references every figure and
 # render, claims.md has every row, a missing run folder is skipped by name and a malformed CSV is
 # reported by file and column without a traceback. Takes about a minute on two cores.
@@ -88,6 +88,18 @@ make_run p-e32-runtime sweep scenarios/p-e32-runtime.json --set planar.iteration
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
 expected+=(68 $(seq 74 82) 87 90 91 92 97 e32-runtime)  # issue 13 experiments
+
+# Chapter 5 (points -> EM -> Relative Plane): short runs of E23-E27, the test bench, E29.
+make_run p-em-office run scenarios/p-em-office.json --set planar.iterations=150
+make_run p-em-office-noise run scenarios/p-em-office-noise.json --set planar.iterations=150
+make_run p-em-room run scenarios/p-em-room.json --set planar.iterations=150
+make_run p-em-room-noise run scenarios/p-em-room-noise.json --set planar.iterations=150
+make_run p-em-demo sweep scenarios/p-em-demo.json --set planar.iterations=100 --jobs 1
+make_run em-bench em-bench scenarios/p-em-office-noise.json --seeds 2
+make_run e29-office em-bench scenarios/p-em-compare-office.json --compare --set planar.iterations=40
+make_run e29-room em-bench scenarios/p-em-compare-room.json --compare --set planar.iterations=40
+
+expected+=(46 55 56 57 58 59 60 61 105 106 107 108 paper6 paper7 paper8 e27-timing e29-em-compare)  # Chapter 5
 expected+=(110 111 112 113 114 115 116 117 $(seq 119 126) $(seq 130 152) $(seq 167 171) components)
 if [ -d "$vp_data" ]; then
   make_run vp-1181 victoria-park --data "$vp_data" --window 1181:1230
@@ -162,7 +174,9 @@ for row in "loop length" "RltPoints / groups / final groups" "visible points per
   "E01 Rule 3 invariance" "E03 four planes: no drift" "E03 four planes: map correct" "E04 hallway" \
   "E05 (a)" "E05 (b)" "E05 (c)" "E06 Rule 12 on vs off" "E31 Rule 2" \
   "E02 key-point pairs" "E07 interval mode" "E08 wrong key points heal" "E09 plane 5" "E10 Rule 22" \
-  "E12 Rule 28" "E15 Map E loop closure" "E18 collinear pieces" "E32 time per iteration"; do
+  "E12 Rule 28" "E15 Map E loop closure" "E18 collinear pieces" "E32 time per iteration" \
+  "E23 Map D, points" "E24 E23 with point noise" "E25 Map E, points" "E26 E25 with point noise" \
+  "E27 paper demo without noise" "E27 paper demo with noise" "E27 real time including EM" "E30 EM test bench" "E29 EM2 vs EM1"; do
   expect "claims.md row '$row'" grep -q "^| $row" "$claims_md"
 done
 expect "claims.md computes RltPoints from s-f8" \
@@ -172,6 +186,11 @@ expect "claims.md: E03 compares loop 1 with loop 2" \
 expect "claims.md: E04's hallway map is correct" \
   grep -q "^| E04 hallway.*| 4 groups, 3 links .*; correct: " "$claims_md"
 expect "claims.md: E05 (c) map is correct" grep -q "^| E05 (c).*| c_cull_on_rule10_on: correct: " "$claims_md"
+expect "claims.md: E29 compares EM1 and EM2 on both maps" \
+  grep -q "^| E29 EM2 vs EM1.*| e29-office (40 frames): EM2 .* (EM1/EM2 [0-9.]*).*; e29-room (40 frames): " "$claims_md"
+expect "claims.md: E27 gives ms per iteration of EM and RP" \
+  grep -q "^| E27 real time including EM.*| office_no_noise: EM [0-9.e-]* + RP [0-9.e-]* ms median" "$claims_md"
+expect "index.html has the paper's Fig 6 caption" grep -q "An example of the simulation used to test the algorithm" "$index"
 expect "claims.md: every simulated row has a number" \
   [ "$(grep -v 'Victoria Park' "$claims_md" | grep -c '| not run |')" -eq 0 ]
 expect "claims.md: no errors" not grep -q "| error:" "$claims_md"

@@ -18,8 +18,11 @@ vp_data=${RELSLAM_VICTORIA_PARK:-$src/../shared/datasets/victoria_park}
 allowed='^$'
 [ -f "$vp_data/measurements.dat" ] || allowed='vp-'
 check "no figure missing from the report" bash -c "! grep 'Not produced' '$work/report/index.html' | grep -qv '$allowed'"
-for n in 64 65 66 67 68 70 71 72 73 74 79 82 87 90 97 110 111 117 119 120 126 130 136 137 145 146 150 152 167 171; do
+for n in 46 55 61 64 65 66 67 68 70 71 72 73 74 79 82 87 90 97 105 108 110 111 117 119 120 126 130 136 137 145 146 150 152 167 171; do
   check "figure $n in the report" grep -q "src=\"figures/fig$n.png\"" "$work/report/index.html"
+done
+for name in paper6 paper7 paper8 e27-timing e29-em-compare; do
+  check "figure $name in the report" grep -q "src=\"figures/$name.png\"" "$work/report/index.html"
 done
 check "claims.md has no row left unrun" bash -c "! grep -q 'not run' '$work/report/claims.md'"
 echo "$passed passed, $failed failed"

@@ -115,6 +115,20 @@ std::string parse_list(const json& v, std::vector<T>& out) {
   return "";
 }
 
+// Iterations (IterationList): a list of integers of any sign, possibly empty.
+std::string parse_iterations(const json& v, IterationList& out) {
+  const char* what = "a list of iterations (integers; negative ones count from the end)";
+  if (!v.is_array()) return expected(what, v);
+  IterationList values;
+  for (const json& item : v) {
+    int i = 0;
+    if (!parse_integer(item, i).empty()) return expected(what, v);
+    values.push_back(i);
+  }
+  out = std::move(values);
+  return "";
+}
+
 template <class T>
 json as_is(const T& field) {
   return json(field);
@@ -141,6 +155,9 @@ PlainCodec<std::string> codec_for(const std::string&) { return {"string", parse_
 PlainCodec<std::vector<int>> codec_for(const std::vector<int>&) { return {"list of integers", parse_list<int>}; }
 PlainCodec<std::vector<double>> codec_for(const std::vector<double>&) {
   return {"list of numbers", parse_list<double>};
+}
+PlainCodec<IterationList> codec_for(const IterationList&) {
+  return {"list of iterations", parse_iterations, [](const IterationList& v) { return json(std::vector<int>(v)); }};
 }
 const PlainCodec<double> kDegrees{"number (degrees)", parse_degrees, show_degrees};
 

@@ -92,9 +92,8 @@ std::vector<Case> cases() {
 
 }  // namespace
 
-std::vector<EmBenchRow> run_em_bench(const ExtractionOptions& extraction, double point_sigma, std::uint64_t seed,
-                                     int seeds) {
-  std::vector<EmBenchRow> rows;
+EmBenchResult run_em_bench(const ExtractionOptions& extraction, double point_sigma, std::uint64_t seed, int seeds) {
+  EmBenchResult result;
   sim::PointSensorOptions sensor;
   sensor.frustum = sim::ViewingFrustum::large();
   sensor.sigma = point_sigma;
@@ -105,6 +104,7 @@ std::vector<EmBenchRow> run_em_bench(const ExtractionOptions& extraction, double
       const sim::PointSimFrame frame = sim::PointSensor(sensor, world, run_seed).observe(PlanarPose::identity(), 0);
       std::vector<PlaneObject> walls;
       for (const sim::Wall& w : world.walls) walls.push_back({w.a, w.b});
+      result.scenes.push_back({c.scene, c.variant, run_seed, walls, frame.observation.points, frame.truth.wall_ids});
       ExtractionOptions options = extraction;
       c.set(options);
       for (PlaneExtractorKind kind : kPlaneExtractorKinds) {
@@ -113,21 +113,22 @@ std::vector<EmBenchRow> run_em_bench(const ExtractionOptions& extraction, double
         const auto start = std::chrono::steady_clock::now();
         const em::ExtractedPlanes planes = extractor->extract(frame.observation, em::em_frame_seed(run_seed, 0));
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        rows.push_back({c.scene, c.variant, std::string(to_string(kind)), run_seed,
-                        score_extraction(frame.observation.points, frame.truth.wall_ids, walls, PlanarPose::identity(),
-                                         planes.frame.planes, planes.support,
-                                         ExtractionScoreOptions::for_em(options.em)),
-                        ms});
+        result.rows.push_back({c.scene, c.variant, std::string(to_string(kind)), run_seed,
+                               score_extraction(frame.observation.points, frame.truth.wall_ids, walls,
+                                                PlanarPose::identity(), planes.frame.planes, planes.support,
+                                                ExtractionScoreOptions::for_em(options.em)),
+                               ms, planes.frame.planes});
       }
     }
-  return rows;
+  return result;
 }
 
-void write_em_bench(const std::filesystem::path& file, const std::vector<EmBenchRow>& rows) {
+void write_em_bench(const std::filesystem::path& dir, const EmBenchResult& result) {
+  const std::vector<EmBenchRow>& rows = result.rows;
   std::vector<std::string> columns = {"scene", "variant", "extractor", "seed"};
   columns.insert(columns.end(), extraction_score_columns().begin(), extraction_score_columns().end());
   columns.push_back("ms");
-  CsvWriter csv(file, columns);
+  CsvWriter csv(dir / "bench.csv", columns);
   for (const EmBenchRow& r : rows) {
     std::vector<CsvField> fields = {CsvField{r.scene}, CsvField{r.variant}, CsvField{r.extractor},
                                     CsvField{static_cast<long long>(r.seed)}};
@@ -136,6 +137,23 @@ void write_em_bench(const std::filesystem::path& file, const std::vector<EmBench
     csv.row_fields(fields);
   }
   csv.close();
+
+  CsvWriter planes(dir / "bench_planes.csv", {"scene", "variant", "seed", "source", "index", "a_x", "a_z", "b_x", "b_z"});
+  auto write_planes = [&planes](const std::string& scene, const std::string& variant, std::uint64_t seed,
+                                const std::string& source, const std::vector<PlaneObject>& list) {
+    for (std::size_t i = 0; i < list.size(); ++i)
+      planes.row(scene, variant, static_cast<long long>(seed), source, static_cast<long long>(i), list[i].a.x(),
+                 list[i].a.y(), list[i].b.x(), list[i].b.y());
+  };
+  CsvWriter points(dir / "bench_points.csv", {"scene", "variant", "seed", "x", "z", "true_wall"});
+  for (const EmBenchScene& s : result.scenes) {
+    write_planes(s.scene, s.variant, s.seed, "truth", s.walls);
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+      points.row(s.scene, s.variant, static_cast<long long>(s.seed), s.points[i].x(), s.points[i].z(), s.wall_ids[i]);
+  }
+  for (const EmBenchRow& r : rows) write_planes(r.scene, r.variant, r.seed, r.extractor, r.planes);
+  planes.close();
+  points.close();
 }
 
 }  // namespace relslam::eval

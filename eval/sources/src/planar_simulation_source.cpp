@@ -96,6 +96,23 @@ sim::PlanarSimulator planar_simulator(const LoadedScenario& loaded, const sim::P
 
 }  // namespace
 
+std::vector<int> resolve_point_frames(const LoadedScenario& loaded, int frames, bool points) {
+  const std::vector<int>& wanted = loaded.scenario.output.point_frames;
+  if (!wanted.empty() && !points)
+    throw loaded.error("output.point_frames", "needs the point sensor (planar.sensor \"points\")");
+  std::vector<int> out;
+  for (int k : wanted) {
+    const int iteration = k < 0 ? frames + k : k;
+    if (iteration < 0 || iteration >= frames)
+      throw loaded.error("output.point_frames", "iteration " + std::to_string(k) + " is outside the run's " +
+                                                    std::to_string(frames) + " iterations (0 to " +
+                                                    std::to_string(frames - 1) + ", or -1 to -" +
+                                                    std::to_string(frames) + " from the end)");
+    out.push_back(iteration);
+  }
+  return out;
+}
+
 struct PlanarSimulationSource::Recorder {
   explicit Recorder(const fs::path& dir)
       : path(dir / "ground_truth_path.tum"),
@@ -118,6 +135,7 @@ PlanarSimulationSource::PlanarSimulationSource(const LoadedScenario& loaded)
   for (const sim::Wall& w : map_.world.walls) walls_[static_cast<std::size_t>(w.id)] = {w.a, w.b, 0.0, w.height, 0};
   if (simulator_.has_point_sensor())
     extraction_ = std::make_unique<PointExtraction>(loaded, walls_, simulator_.point_sensor().options());
+  point_frames_ = resolve_point_frames(loaded, frames_, extraction_ != nullptr);
 }
 
 PlanarSimulationSource::~PlanarSimulationSource() = default;
@@ -130,7 +148,7 @@ void PlanarSimulationSource::record_into(const fs::path& dir) {
               w.one_sided);
   walls.close();
   recorder_ = std::make_unique<Recorder>(dir);
-  if (extraction_) extraction_->record_into(dir);
+  if (extraction_) extraction_->record_into(dir, point_frames_);
 }
 
 sim::PlaneSimFrame PlanarSimulationSource::frame(int k) {

@@ -51,10 +51,26 @@ PointExtraction::PointExtraction(const LoadedScenario& loaded, const std::vector
   }
 }
 
-void PointExtraction::record_into(const std::filesystem::path& dir) { frames_.emplace(dir / "em_frames.csv", columns()); }
+const std::vector<std::string>& PointExtraction::point_columns() {
+  static const std::vector<std::string> names = {"iteration", "index", "x", "y", "z", "true_wall"};
+  return names;
+}
+
+void PointExtraction::record_into(const std::filesystem::path& dir, std::vector<int> point_frames) {
+  frames_.emplace(dir / "em_frames.csv", columns());
+  std::sort(point_frames.begin(), point_frames.end());
+  point_frames.erase(std::unique(point_frames.begin(), point_frames.end()), point_frames.end());
+  point_frames_ = std::move(point_frames);
+  if (!point_frames_.empty()) points_.emplace(dir / "point_frames.csv", point_columns());
+}
 
 sim::PlaneSimFrame PointExtraction::extract(const sim::PointSimFrame& frame) {
   const PlanarPointFrame& points = frame.observation;
+  if (points_ && std::binary_search(point_frames_.begin(), point_frames_.end(), points.iteration))
+    for (std::size_t i = 0; i < points.points.size(); ++i) {
+      const Eigen::Vector3d& p = points.points[i];
+      points_->row(points.iteration, static_cast<long long>(i), p.x(), p.y(), p.z(), frame.truth.wall_ids[i]);
+    }
   const auto start = std::chrono::steady_clock::now();
   em::ExtractedPlanes planes = extractor_->extract(points, em::em_frame_seed(seed_, points.iteration));
   last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -90,6 +106,7 @@ sim::PlaneSimFrame PointExtraction::extract(const sim::PointSimFrame& frame) {
 
 void PointExtraction::finish() {
   if (frames_) frames_->close();
+  if (points_) points_->close();
 }
 
 nlohmann::json PointExtraction::describe() const {

@@ -36,6 +36,13 @@ inline constexpr ScenarioKind kScenarioKinds[] = {ScenarioKind::Simulation, Scen
 std::string_view to_string(ScenarioKind kind);
 
 // What `relslam simulate` writes besides ground truth and the manifest.
+// Iterations of a run, in a scenario: any integers, negative ones counting from the end (-1:
+// the last); may be empty. Its own type so the keys read it as such (a plain list of integers
+// is a non-empty list of counts >= 1).
+struct IterationList : std::vector<int> {
+  using std::vector<int>::vector;
+};
+
 struct OutputOptions {
   // observations.csv, one row per detection: 2 million rows (~90 MB) for one loop at
   // density 550, so long runs may turn it off.
@@ -46,6 +53,10 @@ struct OutputOptions {
   bool rawlog_landmark_ids = true;
   // gzip the rawlog; MRPT reads both. Off because compressing costs more than writing.
   bool rawlog_gzip = false;
+  // Planar runs with the point sensor: iterations whose point frames are written to
+  // point_frames.csv, for the thesis's "points currently visible" views (Figs 46, 105-108,
+  // paper Fig 6); negative counts from the end (-1: the last iteration). Empty: none [C].
+  IterationList point_frames;
 };
 
 // The scenario keys of OutputOptions (output.*).
@@ -55,6 +66,8 @@ void describe(OptionsOf<OutputOptions> auto& o, auto& f) {
   f.field("rawlog_landmark_ids", o.rawlog_landmark_ids,
           "rawlog carries true landmark ids (else -1: unknown association)");
   f.field("rawlog_gzip", o.rawlog_gzip, "gzip-compress the rawlog");
+  f.field("point_frames", o.point_frames,
+          "planar point sensor: iterations written to point_frames.csv (negative from the end, -1 the last)");
 }
 
 // One parameter of a sweep and the values it takes (read by `relslam sweep`).

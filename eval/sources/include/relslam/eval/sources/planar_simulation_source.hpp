@@ -26,6 +26,11 @@ std::filesystem::path resolve_planar_map(const LoadedScenario& loaded);
 // never see two walls at once (the algorithm would have nothing to relate, Rule 7).
 sim::PlanarMap build_planar_map(const LoadedScenario& loaded, const std::filesystem::path& file);
 
+// output.point_frames as iterations of a run of `frames` iterations (negative ones count from
+// the end). InputError at output.point_frames for an iteration outside the run, or when the
+// run has no point sensor (`points` false).
+std::vector<int> resolve_point_frames(const LoadedScenario& loaded, int frames, bool points);
+
 // What the planar simulation produced (after stream()).
 struct PlanarSimulationSummary {
   int iterations = 0;
@@ -72,6 +77,7 @@ class PlanarSimulationSource final : public PlaneFrameSource {
   int frames_ = 0;
   std::vector<PlaneObject> walls_;
   std::unique_ptr<PointExtraction> extraction_;
+  std::vector<int> point_frames_;  // output.point_frames, resolved
   std::unique_ptr<Recorder> recorder_;
   PlanarSimulationSummary summary_;
 };

@@ -35,8 +35,11 @@ class PointExtraction {
   // lacks the extractor.
   PointExtraction(const LoadedScenario& loaded, const std::vector<PlaneObject>& walls,
                   const sim::PointSensorOptions& sensor);
-  // Before the first frame: write em_frames.csv into dir as frames pass.
-  void record_into(const std::filesystem::path& dir);
+  // Before the first frame: write em_frames.csv into dir as frames pass, and the points of the
+  // frames whose iterations are in point_frames to point_frames.csv (output.point_frames).
+  void record_into(const std::filesystem::path& dir, std::vector<int> point_frames = {});
+  // point_frames.csv's columns: iteration, index, x, y, z (robot frame), true_wall.
+  static const std::vector<std::string>& point_columns();
 
   // The planes of one point frame with their truth (scored, and recorded when recording).
   sim::PlaneSimFrame extract(const sim::PointSimFrame& frame);
@@ -55,6 +58,8 @@ class PointExtraction {
   double end_tolerance_;
   ExtractionScoreOptions score_options_;
   std::optional<CsvWriter> frames_;
+  std::vector<int> point_frames_;  // sorted
+  std::optional<CsvWriter> points_;
   double last_ms_ = 0;
   ExtractionFrameScore last_score_;
   std::vector<double> ms_;

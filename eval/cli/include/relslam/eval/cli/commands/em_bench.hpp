@@ -1,5 +1,6 @@
 #pragma once
-// `relslam em-bench`: the plane-extraction test bench of thesis Figs 55-61 (E30).
+// `relslam em-bench`: the plane-extraction test bench of thesis Figs 55-61 (E30), or with
+// --compare every extractor on a scenario's identical point frames (E29).
 
 #include "relslam/eval/cli/commands/scenario_command.hpp"
 
@@ -12,6 +13,7 @@ namespace relslam::eval {
 
 struct EmBenchArgs : ScenarioCommandArgs {
   int seeds = 5;  // seeds per case [C]
+  bool compare = false;  // E29: the scenario's own point frames through every extractor instead
 };
 
 void add_em_bench(CLI::App& app, EmBenchArgs& args);
