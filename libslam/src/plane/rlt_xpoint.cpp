@@ -98,6 +98,13 @@ void RltXPoint::set_chain(std::vector<PlaneId> order) {
   needs_compute_ = true;
 }
 
+const RltPlaneInterval* RltXPoint::comparison_window(const std::vector<RltPlane>& planes,
+                                                     const RelativePlaneOptions& options) {
+  if (options.interval_mode != IntervalMode::Group) return nullptr;
+  common_interval(planes, scratch_common_);
+  return &scratch_common_;
+}
+
 bool RltXPoint::reorder_if_due(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
                                int iteration) {
   const int n = static_cast<int>(chain_.size());
@@ -106,11 +113,7 @@ bool RltXPoint::reorder_if_due(const std::vector<RltPlane>& planes, const Relati
                                      : iteration - last_reorder_ >= options.reorder.period;
   if (!due) return false;
   last_reorder_ = iteration;
-  const RltPlaneInterval* within = nullptr;
-  if (options.interval_mode == IntervalMode::Group) {
-    common_interval(planes, scratch_common_);
-    within = &scratch_common_;
-  }
+  const RltPlaneInterval* within = comparison_window(planes, options);
   scratch_observations_.resize(n);
   observations_filled_.assign(n, 0);
   // W[i][j] (spec §5.7.3): the iterations ComparePlanes(i, j) used when both planes get a key
@@ -146,11 +149,7 @@ bool RltXPoint::reorder_if_due(const std::vector<RltPlane>& planes, const Relati
 void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options) {
   needs_compute_ = false;
   if (chain_.empty() || motion_model()) return;  // a motion model's RltXMMPoint computes it
-  const RltPlaneInterval* within = nullptr;
-  if (options.interval_mode == IntervalMode::Group) {
-    common_interval(planes, scratch_common_);
-    within = &scratch_common_;
-  }
+  const RltPlaneInterval* within = comparison_window(planes, options);
   edges_.resize(chain_.size() - 1);
   if (options.key_points) {
     compute_with_key_points(planes, options, within);

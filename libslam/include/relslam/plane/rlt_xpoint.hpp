@@ -90,6 +90,9 @@ class RltXPoint {
                                const RltPlaneInterval* within);
 
   RltPlaneInterval scratch_common_;                             // reused by compute() in IntervalMode::Group
+  // The iterations comparisons are limited to: the group's common interval in
+  // IntervalMode::Group (kept in scratch_common_), nullptr (all) in IntervalMode::Pair.
+  const RltPlaneInterval* comparison_window(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
   std::vector<std::vector<PlaneObject>> scratch_observations_;  // per chain plane, part 2, filled on demand
   std::vector<char> observations_filled_;
 
