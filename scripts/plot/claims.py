@@ -327,16 +327,21 @@ def e08(run):
     return "; ".join(cells)
 
 
-def e09(run):
+def per_variant(run, names, name_file, describe):
+    """'name: what describe(folder) says' for each named variant of a planar sweep, reading its name_file."""
     run.file("sweep.csv")
     cells = []
-    for name in ("rule21_off", "rule21_new_group", "rule21_walkthrough"):
+    for name in names:
         folder = fg.variant_folder_of(run.path, name)
-        run.file(os.path.relpath(folder, run.path), fg.PLANE, "planes.csv")
-        small = fg.under_sized(folder)
-        cells.append(f"{name}: " + (", ".join(f"wall {w} at {r:.2f} of its length" for w, r in small)
-                                    or f"no wall under {fg.UNDER_SIZED:g} of its length"))
+        run.file(os.path.relpath(folder, run.path), fg.PLANE, name_file)
+        cells.append(f"{name}: " + describe(folder))
     return "; ".join(cells)
+
+
+def e09(run):
+    return per_variant(run, ("rule21_off", "rule21_new_group", "rule21_walkthrough"), "planes.csv",
+                       lambda folder: ", ".join(f"wall {w} at {r:.2f} of its length" for w, r in fg.under_sized(folder))
+                       or f"no wall under {fg.UNDER_SIZED:g} of its length")
 
 
 def e10_rule22(run):
@@ -355,15 +360,9 @@ def e10_rule22(run):
 
 
 def e12(run):
-    run.file("sweep.csv")
-    cells = []
-    for name in ("rule28_on", "rule28_off"):
-        folder = fg.variant_folder_of(run.path, name)
-        run.file(os.path.relpath(folder, run.path), fg.PLANE, "planes.csv")
-        off = fg.misplaced(folder)
-        cells.append(f"{name}: " + (", ".join(f"wall {w} {e:.3g} off its line" for w, e in off)
-                                    or f"every mapped plane on its wall's line (≤ {fg.OFF_LINE:g})"))
-    return "; ".join(cells)
+    return per_variant(run, ("rule28_on", "rule28_off"), "planes.csv",
+                       lambda folder: ", ".join(f"wall {w} {e:.3g} off its line" for w, e in fg.misplaced(folder))
+                       or f"every mapped plane on its wall's line (≤ {fg.OFF_LINE:g})")
 
 
 def e15(run):
