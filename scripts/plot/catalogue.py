@@ -255,8 +255,8 @@ CATALOGUE.update({
     97: ("Bad key point calculation due to plane comparison used",
          "Thesis 4.3.7.1 (E18): plane 4 is compared with the coplanar plane 10; plane 4 shrinks as plane 10 grows, "
          "so both diagonal key-point pairs are low and the wrong one misplaces plane 4; Rule 30 (choose the "
-         "comparison pairs that maximise the intervals) fixes it [Rule 30 is not built yet: our run is the "
-         "failure]."),
+         "comparison pairs that maximise the intervals) fixes it [our run, Rule 30 off by default: the "
+         "failure; with Rule 30 on it is the same run, plane 17 ties with both partners it has]."),
     "e32-runtime": ("Run time per iteration against the map size (spec E32; thesis 4.2.2, 4.3.8 text, no figure)",
                     "Thesis 4.2.2 / 4.3.8: the time per iteration depends on the planes in view, not on the size "
                     "of the map; only the reordering of Rule 30 is O(n²)."),
