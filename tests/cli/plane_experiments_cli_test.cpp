@@ -108,18 +108,39 @@ TEST(PlaneExperiments, E02PairOfStaticEndsHasTheLowestSigmaAndNamesTheRealEnds) 
   }
 }
 
-TEST(PlaneExperiments, E02StraightHallwayHasNoPairWithoutTheRule15Tie) {
+TEST(PlaneExperiments, E02StraightHallwayTiesAcrossItAndTheDistanceTestSolvesTheCollinearPairs) {
   // Map B's hallway through the small frustum: both cut ends move with the robot while both real
-  // ends stay, so every growing/shrinking pair ties both diagonals and none is written.
+  // ends stay, so every growing/shrinking pair ties both diagonals (Rule 15). Two pieces on one
+  // side are collinear: the thesis's distance test (Fig 97) takes the nearer ends, the real ones;
+  // the pair across the hallway stays tied. Without the test no pair is usable and none is written.
   test::ScratchDir dir;
-  const auto r = run_relslam({"run", scenario("p-e02-key-point-pairs.json").string(), "--out", (dir / "run").string(),
-                              "-q", "--set", "planar.map=b_hallway_unit", "--set", "planar.visibility=frustum"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_TRUE(read_csv(dir / "run/relative_plane/pairs.csv").rows.empty());
-  EXPECT_TRUE(read_csv(dir / "run/relative_plane/pair_sigma.csv").rows.empty());
-  const Table edges = read_csv(dir / "run/relative_plane/edges.csv");
-  ASSERT_FALSE(edges.rows.empty());
-  for (std::size_t e = 0; e < edges.rows.size(); ++e) EXPECT_EQ(edges.text(e, "ambiguous"), "1") << "edge " << e;
+  const std::vector<std::string> base = {"run", scenario("p-e02-key-point-pairs.json").string(), "-q", "--set",
+                                         "planar.map=b_hallway_unit", "--set", "planar.visibility=frustum"};
+  const auto run = [&](const std::string& out, std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), {"--out", (dir / out).string()});
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_relslam(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+  };
+  run("tie", {"--set", "relative_plane.key_point_ties.collinear_distance=false"});
+  EXPECT_TRUE(read_csv(dir / "tie/relative_plane/pairs.csv").rows.empty());
+  EXPECT_TRUE(read_csv(dir / "tie/relative_plane/pair_sigma.csv").rows.empty());
+  const Table tied = read_csv(dir / "tie/relative_plane/edges.csv");
+  ASSERT_FALSE(tied.rows.empty());
+  for (std::size_t e = 0; e < tied.rows.size(); ++e) EXPECT_EQ(tied.text(e, "ambiguous"), "1") << "edge " << e;
+
+  run("test", {});
+  const Table edges = read_csv(dir / "test/relative_plane/edges.csv");
+  ASSERT_EQ(edges.rows.size(), tied.rows.size());
+  int still_tied = 0;
+  for (std::size_t e = 0; e < edges.rows.size(); ++e) still_tied += edges.text(e, "ambiguous") == "1";
+  EXPECT_GE(still_tied, 1);                                            // across the hallway
+  EXPECT_LT(still_tied, static_cast<int>(edges.rows.size()));          // along one side
+  const Table key_points = read_csv(dir / "test/relative_plane/keypoints.csv");
+  ASSERT_FALSE(key_points.rows.empty());
+  for (std::size_t k = 0; k < key_points.rows.size(); ++k)
+    EXPECT_EQ(key_points.text(k, "truth_correct"), "1") << "row " << k;
 }
 
 TEST(PlaneExperiments, E09Rule21NewGroupMapsTheReacquiredWallWhole) {

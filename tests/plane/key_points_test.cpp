@@ -26,13 +26,14 @@ struct Outcome {
   KeyPointChoice choice;
 };
 
-Outcome compare(const ClippedWall& w1, const ClippedWall& w2, int n, const Noise& noise = {}, std::uint64_t seed = 1) {
+Outcome compare(const ClippedWall& w1, const ClippedWall& w2, int n, const Noise& noise = {}, std::uint64_t seed = 1,
+                const KeyPointTies& ties = {}) {
   relslam::test::SeededRandom random(seed);
   const std::vector<PlaneObject> first = test::observe_clipped(w1, 0, n, noise, random),
                                  second = test::observe_clipped(w2, 0, n, noise, random);
   Outcome o;
   o.pairs = key_point_pairs(first, second);
-  o.choice = choose_key_points(o.pairs, KeyPointTies{});
+  o.choice = choose_key_points(o.pairs, ties);
   return o;
 }
 
@@ -205,13 +206,16 @@ TEST(ChooseKeyPoints, SymmetricParallelPlanesWithSpecNoiseNeverGetWrongKeyPoints
 }
 
 // Fig 97: on one line, plane 1 shrinks exactly as plane 2 grows (a window slides along both).
-// The diagonal of the two cut ends ties with that of the two real ends: ambiguous, and the
-// offset may be the wrong diagonal's [T] — it is the true one only if the window spans both.
-TEST(ChooseKeyPoints, CollinearShrinkAndGrowIsAmbiguous) {
+// Without the distance test the diagonal of the two cut ends ties with that of the two real
+// ends: ambiguous, and the offset may be the wrong diagonal's [T] — it is the true one only if
+// the window spans both.
+TEST(ChooseKeyPoints, CollinearShrinkAndGrowIsAmbiguousWithoutTheDistanceTest) {
+  KeyPointTies rule15_only;
+  rule15_only.collinear_distance = false;
   for (const Noise& noise : {Noise{}, kSpecNoise}) {
     const ClippedWall first{{0, -2}, {5, -2}, moving(0.5, 0.1), constant(5)};
     const ClippedWall second{{6, -2}, {11, -2}, constant(0), moving(0.5, 0.1)};
-    const Outcome o = compare(first, second, kIterations, noise);
+    const Outcome o = compare(first, second, kIterations, noise, 1, rule15_only);
     EXPECT_TRUE(o.choice.ambiguous);
     EXPECT_EQ(o.choice.key_point1, KeyPoint::None);
     EXPECT_EQ(o.choice.key_point2, KeyPoint::None);
@@ -225,6 +229,48 @@ TEST(ChooseKeyPoints, CollinearShrinkAndGrowIsAmbiguous) {
     EXPECT_NEAR(o.pairs.delta(KeyPoint::Left, KeyPoint::Right).translation.x() - real.translation.x(), 6 - 1 - 8.9,
                 kExact);
   }
+}
+
+
+// Thesis 4.3.7.1's distance test for Fig 97: the two tied diagonals join the real ends (1 apart,
+// the gap between the pieces) and the cut ends (6 apart: the window's width); the shorter one
+// holds the static ends, so the key points are the real ends and the offset is the true one.
+TEST(ChooseKeyPoints, CollinearShrinkAndGrowTakesTheDiagonalOfTheNearerKeyPoints) {
+  const ClippedWall first{{0, -2}, {5, -2}, moving(0.5, 0.1), constant(5)};
+  const ClippedWall second{{6, -2}, {11, -2}, constant(0), moving(0.5, 0.1)};
+  const KeyPointTies ties;  // the distance test is on by default
+  for (const Noise& noise : {Noise{}, kSpecNoise})
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+      relslam::test::SeededRandom random(seed);
+      const std::vector<PlaneObject> a = test::observe_clipped(first, 0, kIterations, noise, random),
+                                     b = test::observe_clipped(second, 0, kIterations, noise, random);
+      const KeyPointPairs pairs = key_point_pairs(a, b);
+      const KeyPointChoice choice = choose_key_points(pairs, ties);
+      EXPECT_NEAR(key_point_distance(pairs, KeyPoint::Right, KeyPoint::Left), 1, noise.position > 0 ? 0.05 : kExact);
+      EXPECT_NEAR(key_point_distance(pairs, KeyPoint::Left, KeyPoint::Right), 6, noise.position > 0 ? 0.05 : kExact);
+      if (!choice.collinear_tie_broken) {  // with noise σ may not tie: then Rule 13 decides alone
+        ASSERT_GT(noise.position, 0) << "seed " << seed;
+        EXPECT_FALSE(choice.ambiguous) << "seed " << seed;
+      } else {
+        EXPECT_FALSE(choice.ambiguous);
+      }
+      EXPECT_EQ(choice.key_point1, KeyPoint::Right) << "seed " << seed;
+      EXPECT_EQ(choice.key_point2, KeyPoint::Left) << "seed " << seed;
+      expect_pose_near(choice.delta,
+                       true_delta(first, pairs.length1, KeyPoint::Right, second, pairs.length2, KeyPoint::Left),
+                       noise.position > 0 ? kNoisyDelta : kExact);
+      if (noise.position == 0) break;  // noise-free: every seed is the same
+    }
+}
+
+// The distance test decides only on one line: the symmetric hallway's two sides are parallel
+// but 3 apart, and stay ambiguous (there the two diagonals' distances are equal anyway [T]).
+TEST(ChooseKeyPoints, DistanceTestLeavesParallelPlanesOffOneLineAmbiguous) {
+  const ClippedWall left{{10, 1.5}, {0, 1.5}, constant(0), moving(8, -0.15)};
+  const ClippedWall right{{0, -1.5}, {10, -1.5}, moving(2, 0.15), constant(10)};
+  const Outcome o = compare(left, right, kIterations);
+  EXPECT_TRUE(o.choice.ambiguous);
+  EXPECT_FALSE(o.choice.collinear_tie_broken);
 }
 
 }  // namespace

@@ -123,6 +123,7 @@ RelativePlaneOptions noise_free() {
   RelativePlaneOptions options;
   options.key_points = true;
   options.rules.reorder_planes = true;
+  options.key_point_ties.collinear_distance = false;  // Rule 30's own way past the Fig 97 tie
   options.growth_phase.window = 1;
   options.same_length = 1e-9;
   return options;

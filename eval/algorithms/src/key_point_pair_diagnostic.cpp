@@ -79,7 +79,7 @@ std::optional<Candidate> candidate(const plane::RltPlane& p, const plane::RltPla
               {s.second.begin() + begin, s.second.begin() + end},
               *piece};
   const plane::KeyPointPairs pairs = plane::key_point_pairs(c.first, c.second, options.rules.rotate_to_first);
-  if (plane::choose_key_points(pairs, options.key_point_ties).ambiguous) return std::nullopt;  // Rule 15's tie
+  if (plane::choose_key_points(pairs, options.key_point_ties, options.rules.rotate_to_first).ambiguous) return std::nullopt;  // Rule 15's tie
   std::vector<double> sigmas = {pairs.sigma[0][0], pairs.sigma[0][1], pairs.sigma[1][0], pairs.sigma[1][1]};
   std::ranges::sort(sigmas);
   c.separation = sigmas[1] / std::max(sigmas[0], 1e-12);
@@ -139,7 +139,7 @@ void write_key_point_pair_diagnostic(const std::filesystem::path& dir, const std
       series.row_fields(row);
     }
     const plane::KeyPointPairs pairs = plane::key_point_pairs(c.first, c.second, rotate);
-    const plane::KeyPointChoice choice = plane::choose_key_points(pairs, options.key_point_ties);
+    const plane::KeyPointChoice choice = plane::choose_key_points(pairs, options.key_point_ties, options.rules.rotate_to_first);
     for (KeyPoint a : kEnds)
       for (KeyPoint b : kEnds) {
         const Eigen::Vector2d mean = pairs.delta(a, b).translation;

@@ -85,7 +85,7 @@ CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::s
   std::span<const PlaneObject> in2 = std::span(both2).subspan(piece->first, piece->samples);
   std::vector<KeyPointOffsets> offsets;
   KeyPointPairs pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first, &offsets);
-  KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties);
+  KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties, options.rules.rotate_to_first);
   RltInterval interval = piece->interval;
   if (options.trim_piece_ends && in1.size() > static_cast<std::size_t>(options.growth_phase.min_samples)) {
     // The pair with the lowest σ over its consistent part; when that part is not the whole
@@ -104,7 +104,7 @@ CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::s
       in1 = in1.subspan(best.first, best.last - best.first);
       in2 = in2.subspan(best.first, best.last - best.first);
       pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first);
-      choice = choose_key_points(pairs, options.key_point_ties);
+      choice = choose_key_points(pairs, options.key_point_ties, options.rules.rotate_to_first);
       interval = {in1.front().iteration, in1.back().iteration};
     }
   }

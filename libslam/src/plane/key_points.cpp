@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -75,7 +76,42 @@ KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<cons
   return pairs;
 }
 
-KeyPointChoice choose_key_points(const KeyPointPairs& pairs, const KeyPointTies& ties) {
+double key_point_distance(const KeyPointPairs& pairs, KeyPoint a, KeyPoint b) {
+  // assumed_midpoint: m = kp + s·(L/2)·u with s = +1 from the left end, −1 from the right; in
+  // the first plane's frame u₁ = x̂ and u₂ is turned by the mean angle.
+  const auto s = [](KeyPoint k) { return k == KeyPoint::Left ? 1.0 : -1.0; };
+  const Eigen::Vector2d u1(1, 0), u2(std::cos(pairs.angle), std::sin(pairs.angle));
+  const Eigen::Vector2d kp_offset =
+      pairs.delta(a, b).translation + s(a) * 0.5 * pairs.length1 * u1 - s(b) * 0.5 * pairs.length2 * u2;
+  return kp_offset.norm();
+}
+
+namespace {
+
+// Thesis 4.3.7.1's distance test for the Fig 97 tie: on one line, the diagonal joining the
+// nearer key points holds the static ends. False when the planes are not collinear or the two
+// distances are alike (then Rule 15 stands).
+bool break_collinear_tie(const KeyPointPairs& pairs, const KeyPointTies& ties, KeyPointChoice& choice) {
+  const double tolerance = ties.collinear_angle_deg * std::numbers::pi / 180;
+  const double off_line = std::abs(pairs.delta(choice.anchor1, choice.anchor2).translation.y());
+  if (std::abs(std::sin(pairs.angle)) > std::sin(tolerance) || off_line > ties.collinear_offset) return false;
+  const KeyPoint a = choice.anchor1, b = choice.anchor2;
+  const double chosen = key_point_distance(pairs, a, b), opposite = key_point_distance(pairs, other(a), other(b));
+  if (ties.close(chosen, opposite)) return false;
+  if (opposite < chosen) {
+    choice.anchor1 = other(a);
+    choice.anchor2 = other(b);
+    choice.delta = pairs.delta(choice.anchor1, choice.anchor2);
+  }
+  choice.key_point1 = choice.anchor1;
+  choice.key_point2 = choice.anchor2;
+  choice.collinear_tie_broken = true;
+  return true;
+}
+
+}  // namespace
+
+KeyPointChoice choose_key_points(const KeyPointPairs& pairs, const KeyPointTies& ties, bool rotated) {
   KeyPointChoice choice;
   // Rule 13: the lowest σ; ties keep the first in (1,1), (1,2), (2,1), (2,2) order.
   for (KeyPoint a : kEnds)
@@ -93,7 +129,7 @@ KeyPointChoice choose_key_points(const KeyPointPairs& pairs, const KeyPointTies&
   const bool first_undecided = ties.close(pairs.sigma_of(other(a), b), lowest);
   // Rule 15, checked first: the opposite diagonal ties while both mixed pairs are clearly higher.
   if (ties.close(pairs.sigma_of(other(a), other(b)), lowest) && !second_undecided && !first_undecided) {
-    choice.ambiguous = true;
+    if (!(ties.collinear_distance && rotated && break_collinear_tie(pairs, ties, choice))) choice.ambiguous = true;
     return choice;
   }
   if (second_undecided)

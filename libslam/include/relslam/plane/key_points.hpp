@@ -24,6 +24,14 @@ namespace relslam::plane {
 struct KeyPointTies {
   double relative = 0.3;    // [R, spec §5.14 r_tie]
   double absolute = 0.002;  // units [R, ε_σ]
+  // The distance test the thesis proposes for Fig 97 (4.3.7.1): two collinear pieces of one
+  // wall line, one shrinking exactly as the other grows, tie on both diagonals (Rule 15), and
+  // one diagonal is wrong. The right one joins the two static ends, which lie between the cut
+  // ones, so "if one of the two is shorter, use the shorter one" [T suggestion; C: on]. Parallel
+  // planes that are not collinear keep Rule 15 (there the two distances are the same [T]).
+  bool collinear_distance = true;
+  double collinear_angle_deg = 3;  // collinear: directions within this, degrees [C] ...
+  double collinear_offset = 0.1;   // ... and on one line within this, units [C: 10 σ_p]
 
   bool close(double x, double y) const;
 };
@@ -84,14 +92,21 @@ struct KeyPointChoice {
   bool static2 = false;
   // Rule 15: the two diagonal pairs tie low while the mixed ones are high — two parallel planes
   // growing or shrinking together. Both key points are None; the offset is right for symmetric
-  // planes (hallway), wrong by one diagonal for the collinear shrink + grow of Fig 97 [T].
+  // planes (hallway), wrong by one diagonal for the collinear shrink + grow of Fig 97 [T] — which
+  // the distance test (KeyPointTies::collinear_distance) decides instead when it can.
   bool ambiguous = false;
+  bool collinear_tie_broken = false;  // the distance test chose the diagonal
   PlanarPose delta;  // pairs.delta(anchor1, anchor2), in every case (spec §5.6.4)
 };
 
+// The mean distance between key point a of the first plane and key point b of the second over
+// the pairs' interval, from pair (a, b)'s mean offset (offsets in the first plane's frame, Rule 3).
+double key_point_distance(const KeyPointPairs& pairs, KeyPoint a, KeyPoint b);
+
 // Rules 13 and 15 on the four spreads: the lowest σ gives the offset; the diagonal tie is
-// checked first (ambiguous), then each plane on its own — a plane whose two ends give close σ
-// against the other plane's chosen end is static.
-KeyPointChoice choose_key_points(const KeyPointPairs& pairs, const KeyPointTies& ties);
+// checked first (ambiguous, unless the collinear distance test decides it), then each plane on
+// its own — a plane whose two ends give close σ against the other plane's chosen end is static.
+// The distance test needs the offsets in the first plane's frame (`rotated`, Rule 3).
+KeyPointChoice choose_key_points(const KeyPointPairs& pairs, const KeyPointTies& ties, bool rotated = true);
 
 }  // namespace relslam::plane

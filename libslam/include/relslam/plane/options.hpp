@@ -279,6 +279,11 @@ void describe(OptionsOf<KeyPointTies> auto& t, auto& f) {
   f.field("relative", t.relative, "Rules 13/15: two key-point sigmas within this share of the larger are equal",
           at_least(0.0), at_most(1.0));
   f.field("absolute", t.absolute, "... or within this, units (the noise-free tie)", at_least(0.0));
+  f.field("collinear_distance", t.collinear_distance,
+          "Fig 97: a Rule 15 tie of two collinear planes goes to the diagonal with the nearer key points");
+  f.field("collinear_angle_deg", t.collinear_angle_deg, "... collinear: directions within this, degrees",
+          at_least(0.0), at_most(90.0));
+  f.field("collinear_offset", t.collinear_offset, "... and on one line within this, units", at_least(0.0));
 }
 
 // The scenario keys of GrowthPhaseBounds (relative_plane.growth_phase.*).
