@@ -4,6 +4,7 @@
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <map>
@@ -25,12 +26,14 @@ struct Case {
   // fewer anchors a sparse scene gives. Each is about 1.5 times the value measured on this seed
   // (the note of issue 16 lists them), so a regression of the method, not seed noise, fails it.
   double max_final_mean_error;
-  // Duplicates and landmarks seen 100+ times but off the map, as shares of the map. The issue
-  // asks below 1 % and none; where this is not reached yet (noisier than sigma 0.1: a track
-  // split between two points seen in alternation, RltBinning taking a static point for a
-  // dynamic one) the bound is what is reached now, so it cannot get worse unnoticed.
+  // Duplicates, and static landmarks RltBinning took for dynamic ones, as shares of the map
+  // (the issue asks below 1 %); every landmark seen 100+ times is on the map. Before the adaptive
+  // preset predicted mapped points from the map (rlt_mapper.cpp, local_candidate) two landmarks
+  // 0.7-2 apart swapped at sigma >= 0.2 and stayed swapped: 9 duplicates of 539 at sigma 0.3,
+  // their partners off the map or binned as dynamic. Measured now: 1 duplicate (sigma 0.3, of
+  // 537), no static point binned as dynamic, no long-seen landmark off the map.
   double max_duplicate_share = 0.01;
-  double max_unmapped_share = 0.0;
+  double max_static_flagged_share = 0.01;
 };
 
 const Case kCases[] = {
@@ -39,11 +42,11 @@ const Case kCases[] = {
     {"Density10", 10, 0.1, false, 1.2},
     {"Density15", 15, 0.1, false, 0.7},
     {"Density25", 25, 0.1, false, 0.5},
-    // measured: 0.083, 0.46 (4 duplicates of 537), 0.92 (9 of 539), 0.19
+    // measured: 0.083, 0.34 (0 duplicates of 538), 0.33 (1 of 537), 0.19
     {"Sigma005", 100, 0.05, false, 0.13},
-    {"Sigma02", 100, 0.2, false, 0.7, 0.01, 0.01},
-    {"Sigma03", 100, 0.3, false, 1.4, 0.02, 0.015},
-    {"RangeNoise", 100, 0.1, true, 0.3, 0.01, 0.01},
+    {"Sigma02", 100, 0.2, false, 0.5},
+    {"Sigma03", 100, 0.3, false, 0.5},
+    {"RangeNoise", 100, 0.1, true, 0.3},
 };
 
 // Test names and CTest's listing show the case's name, not its bytes.
@@ -86,8 +89,11 @@ TEST_P(SparseNoisyPoint, MapsEveryLongSeenLandmarkOnceWithinTheErrorBound) {
   std::vector<std::string> unmapped;
   for (const auto& [id, n] : seen)
     if (n >= 100 && !mapped.contains(id)) unmapped.push_back(id + " (seen " + std::to_string(n) + " times)");
-  EXPECT_LE(static_cast<double>(unmapped.size()), c.max_unmapped_share * on_map)
-      << "off the map: " << ::testing::PrintToString(unmapped);
+  EXPECT_TRUE(unmapped.empty()) << "off the map: " << ::testing::PrintToString(unmapped);
+  int static_flagged = 0;
+  for (std::size_t i = 0; i < landmarks.rows.size(); ++i)
+    static_flagged += landmarks.text(i, "dynamic_flagged") == "1" && landmarks.text(i, "true_dynamic") == "0";
+  EXPECT_LE(static_flagged, c.max_static_flagged_share * on_map);
 
   // A sparse stretch is said per iteration, never a failure: every iteration has its row.
   const test::CsvTable iterations = test::read_csv(dir / "run/relative_point/iterations.csv");
@@ -141,6 +147,35 @@ TEST(SparseNoisyPoint, ARawlogRunTakesItsBoundsFromTheRawlogsSensorModel) {
       << manifest;
   // The rawlog stores its stds as floats: 2·0.2f, not 2·0.2.
   EXPECT_NE(manifest.find(R"("value": 2.0000000298023224)"), std::string::npos);
+}
+
+// Data whose sensor model states no noise (here: the simulator's sigma withheld from the
+// rawlog) gets it estimated online from the first groups' averages. The estimate is within 30 %
+// of the sigma that made the data, and so are the bounds scaled from it (they are proportional
+// above 0.1); the run with sigma given uses 2.0 for the compensated bound.
+TEST(SparseNoisyPoint, ARawlogWithoutNoiseModelGetsTheNoiseEstimatedOnline) {
+  constexpr double kSigma = 0.2;
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_relslam({"simulate", test::source_path("scenarios/s-ekf-f8.json").string(), "--out",
+                               (dir / "sim").string(), "--quiet", "--set", "sim.iterations=400", "--set",
+                               "sim.density=100", "--set", "sim.noise_sigma=0.2", "--set",
+                               "output.rawlog_sensor_noise=false"})
+                .exit_code,
+            0);
+  const test::CliResult r =
+      test::run_relslam({"run", "--rawlog", (dir / "sim/observations.rawlog").string(), "--out",
+                         (dir / "log").string(), "--quiet", "--set", "algorithms=relative_point"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json manifest = nlohmann::json::parse(test::read_file(dir / "log/manifest.json"));
+  const nlohmann::json& compensated = manifest.at("derived").at("relative_point.compensated_bound");
+  const std::string source = compensated.at("source").get<std::string>();
+  const std::string prefix = "online estimate: sigma ";
+  ASSERT_EQ(source.rfind(prefix, 0), 0u) << source;
+  const double sigma = std::stod(source.substr(prefix.size()));
+  std::printf("[ measured ] sigma %.2f withheld: %s\n", kSigma, source.c_str());
+  EXPECT_NEAR(sigma, kSigma, 0.3 * kSigma);
+  EXPECT_NEAR(compensated.at("value").get<double>(), 2.0, 0.3 * 2.0);
+  EXPECT_EQ(manifest.at("derived").at("relative_point.merge_bound").at("source"), source);
 }
 
 // Density 5, seed 1: one point in view at iteration 0, so the map frame moves (to 138). The

@@ -9,10 +9,13 @@
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/sources/simulation_source.hpp"
+#include "relslam/point/noise_estimate.hpp"
+#include "relslam/point/rlt_mapper.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 namespace relslam::eval {
@@ -75,19 +78,52 @@ ExperimentResult simulate_and_run(const LoadedScenario& loaded, const std::files
 
 namespace {
 
+// Iterations of the pilot run that estimates the noise of a rawlog without a sensor model: a
+// few final groups (look-ahead 60) and many temporary ones form in them, hundreds of member
+// pairs at the densities of issue 16 [C].
+constexpr long long kNoisePilotIterations = 300;
+
+// The noise of data that states none, estimated online (issue 16): pilot runs of Relative Point
+// over the first iterations, whose groups' averages show the noise (estimate_noise_online). The
+// run itself then starts over with the bounds scaled from it, so that its map never holds what
+// too narrow bounds made of noisier data.
+NoiseModel estimated_noise(const Scenario& scenario, const RawlogFiles& files) {
+  long long seen = 0;
+  const std::optional<point::NoiseEstimate> estimate =
+      point::estimate_noise_online(scenario.relative_point, [&](point::RltMapper& mapper) {
+        RawlogSource source(files);
+        seen = 0;
+        source.stream([&](const ObservationFrame& observation, const TruthFrame&) {
+          if (seen++ < kNoisePilotIterations) mapper.step(observation);
+        });
+      });
+  std::ostringstream text;
+  text << "the first " << std::min(seen, kNoisePilotIterations) << " iterations";
+  if (!estimate)
+    return {0, "thesis bounds: the rawlog gives no sensor noise and " + text.str() + " formed no group to estimate it"};
+  std::ostringstream source_text;
+  source_text << "online estimate: sigma " << estimate->sigma << " from the spread of " << estimate->pairs
+              << " member-pair distances about their group averages (" << estimate->groups << " groups, "
+              << text.str() << " of pilot run " << estimate->pilot_runs << ")";
+  return {estimate->sigma, source_text.str()};
+}
+
 // The adaptive preset's bounds from the rawlog's own sensor model (the scenario's simulator
 // noise says nothing about recorded data): the larger of the range noise and the bearing
-// noise at the far range; without one, the thesis's bounds.
-LoadedScenario with_rawlog_noise(const LoadedScenario& loaded, const RangeBearingSensor& sensor) {
+// noise at the far range; without one, estimated online from a pilot run over `files`.
+LoadedScenario with_rawlog_noise(const LoadedScenario& loaded, const RangeBearingSensor& sensor,
+                                 const RawlogFiles& files) {
   LoadedScenario adapted = loaded;
+  if (adapted.scenario.relative_point.preset != point::Preset::Adaptive) return adapted;
   const double bearing = std::max(sensor.std_yaw_rad, sensor.std_pitch_rad) * sensor.max_range;
   NoiseModel noise{std::max(sensor.std_range, bearing), ""};
-  std::ostringstream source;
-  if (noise.sigma > 0)
+  if (noise.sigma > 0) {
+    std::ostringstream source;
     source << "rawlog sensor model (std_range " << sensor.std_range << ", bearing std x max_range " << bearing << ")";
-  else
-    source << "thesis bounds: the rawlog gives no sensor noise";
-  noise.source = source.str();
+    noise.source = source.str();
+  } else {
+    noise = estimated_noise(loaded.scenario, files);
+  }
   derive_point_bounds(adapted.scenario, noise, [&](const std::string& key) { return loaded.origins.contains(key); });
   return adapted;
 }
@@ -98,7 +134,7 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
                                bool progress) {
   require_algorithms(loaded);
   RawlogSource source(files);
-  const LoadedScenario adapted = with_rawlog_noise(loaded, source.sensor());
+  const LoadedScenario adapted = with_rawlog_noise(loaded, source.sensor(), files);
   const Scenario& scenario = adapted.scenario;
   if (std::find(scenario.algorithms.begin(), scenario.algorithms.end(), "ekf6d") != scenario.algorithms.end() &&
       scenario.ekf6d.association == EkfAssociation::Known && !source.ids_everywhere())

@@ -31,8 +31,11 @@ struct SimulationRecorder::Files {
       dynamic.emplace(dir / "ground_truth_dynamic.csv", std::vector<std::string>{"iteration", "id", "x", "y", "z"});
     if (scenario.output.observations_csv)
       observations.emplace(dir / "observations.csv", std::vector<std::string>{"iteration", "x", "y", "z", "true_id"});
-    if (scenario.output.rawlog)
-      rawlog.emplace(dir / "observations.rawlog", sensor_of(scenario.sim), scenario.output.rawlog_gzip);
+    if (scenario.output.rawlog) {
+      RangeBearingSensor sensor = sensor_of(scenario.sim);
+      if (!scenario.output.rawlog_sensor_noise) sensor.std_range = 0;
+      rawlog.emplace(dir / "observations.rawlog", sensor, scenario.output.rawlog_gzip);
+    }
   }
 };
 

@@ -91,6 +91,7 @@ class RltMapper {
 
  private:
   void build_local_index(int k, const std::optional<Rigid3>& odometry);
+  LocalCandidate local_candidate(const RltPoint& p, int k) const;
   void record(PointId id, const Eigen::Vector3d& p, int k, bool returned);
   PointId create_point(const Eigen::Vector3d& p, int k);
   void compute_groups(int k);
@@ -105,6 +106,7 @@ class RltMapper {
   GroupCreation creation_;
   RltPointMerging merging_;
   Rigid3 pose_;
+  bool pose_from_map_ = false;  // pose_ was registered to mapped points (or is the map frame)
   std::string failure_;
   GroupRelaxer relaxer_;
   int relax_at_ = kNone;  // iteration of the solve a loop closure scheduled

@@ -51,6 +51,9 @@ struct OutputOptions {
   // Landmark ids in the rawlog: the true ids (known association, how the thesis fed the
   // EKF) or -1 so a filter must associate by itself.
   bool rawlog_landmark_ids = true;
+  // The simulator's noise as the rawlog's sensor model (range std), or none: data from a
+  // sensor that states no noise, whose run must then estimate it (issue 16).
+  bool rawlog_sensor_noise = true;
   // gzip the rawlog; MRPT reads both. Off because compressing costs more than writing.
   bool rawlog_gzip = false;
   // Planar runs with the point sensor: iterations whose point frames are written to
@@ -65,6 +68,8 @@ void describe(OptionsOf<OutputOptions> auto& o, auto& f) {
   f.field("rawlog", o.rawlog, "write observations.rawlog for MRPT tools");
   f.field("rawlog_landmark_ids", o.rawlog_landmark_ids,
           "rawlog carries true landmark ids (else -1: unknown association)");
+  f.field("rawlog_sensor_noise", o.rawlog_sensor_noise,
+          "rawlog's sensor model carries the noise (else none: a run on it estimates the noise online)");
   f.field("rawlog_gzip", o.rawlog_gzip, "gzip-compress the rawlog");
   f.field("point_frames", o.point_frames,
           "planar point sensor: iterations written to point_frames.csv (negative from the end, -1 the last)");
