@@ -178,9 +178,13 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   if (motion_model_active_ && options_.rules.return_to_visited_group && switch_to_group_holding_all() &&
       options_.key_points && options_.rules.pseudo_merge) {
     // Rule 37 looks for duplicates where the motion model that just ended puts the robot now. A
-    // copy tracks this iteration: the ended model itself stays as it was (its frozen track).
+    // copy tracks this iteration and the membership it writes is put back: the ended model and
+    // its plane stay exactly as they were (frozen), so the rule changes nothing but the chart.
     RltXMMPoint tracking = motion_models_.back();
+    RltXPointRef& tracked_ref = *planes_[tracking.plane()].ref(tracking.xpoint());
+    const RltXPointRef kept = tracked_ref;
     tracking.compute(planes_, options_.motion_model);
+    tracked_ref = kept;
     const PlanarPose world_T_robot = tracking.world_T_robot(iteration_).value_or(last_valid_pose_.world_T_robot);
     result.oneway_links += mend_merge_after_loop_closing(world_T_robot);
   }
