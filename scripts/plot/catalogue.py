@@ -257,6 +257,22 @@ CATALOGUE.update({
          "so both diagonal key-point pairs are low and the wrong one misplaces plane 4; Rule 30 (choose the "
          "comparison pairs that maximise the intervals) fixes it [our run, Rule 30 off by default: the "
          "failure; with Rule 30 on it is the same run, plane 17 ties with both partners it has]."),
+    98: ("Before planes go missing",
+         "Thesis 4.3.7.3 (E19): with the untransformed-plane store at 1200 slots, planes vanish from the map as "
+         "the robot moves on, once the store has rolled over the iterations two compared planes shared; the save "
+         "system (Rule 35: the best complete RltXPoint; Rule 36: the best result per plane comparison) keeps them "
+         "[ours: planes on the map per iteration per variant]."),
+    99: ("After planes go missing",
+         "Thesis 4.3.7.3 (E19): the same run later, planes gone; either save rule alone is enough (both are built) "
+         "[ours: the final maps with the save system off and on]."),
+    101: ("A problem with intervals and plane 8,2",
+          "Thesis 4.3.7.4 (E20): after the motion model plane 8 (the same wall as plane 2) is seen instead of plane "
+          "2, the wrong RltXPoint becomes current and plane 1 is mapped badly [ours: the current group per iteration "
+          "with Rule 37 off and on; not reproduced on our Map E: identical runs]."),
+    102: ("The problem with planes 8 and 2 fixed",
+          "Thesis 4.3.7.4 (E20, Rule 37): one-way links from each plane in view to the RltXPoints of its global "
+          "duplicates, used for charting only, make the right RltXPoint current [ours: the final maps, Rule 37 off "
+          "and on]."),
     "e32-runtime": ("Run time per iteration against the map size (spec E32; thesis 4.2.2, 4.3.8 text, no figure)",
                     "Thesis 4.2.2 / 4.3.8: the time per iteration depends on the planes in view, not on the size "
                     "of the map; only the reordering of Rule 30 is O(n²)."),

@@ -391,6 +391,36 @@ def e18(run):
             f"final mean map error {s['final_mean_map_error']:.3g}")
 
 
+def e19(run):
+    def describe(folder):
+        s = plane_summary(run, os.path.relpath(folder, run.path))
+        return (f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, pose valid "
+                f"{100 * s['pose_valid_fraction']:.1f} %, final mean map error {s['final_mean_map_error']:.3g}")
+    return per_variant(run, ("save_on", "rule35_only", "rule36_only", "save_off", "big_store_save_off"), "planes.csv",
+                       describe)
+
+
+def e20(run):
+    """Rule 37 on against off, seed by seed: iterations with another current group, one-way links, plane 1's e_ends."""
+    variants = dict(fg.plane_sweep(run.path))
+    if ("rule37_on",) not in variants or ("rule37_off",) not in variants:
+        raise rp.DataError(f"{os.path.join(run.path, 'sweep.csv')}: column variant: needs rule37_on and rule37_off")
+    cells = []
+    for on, off in zip(variants[("rule37_on",)], variants[("rule37_off",)]):
+        it = [rp.read_table(run.file(os.path.relpath(f, run.path), fg.PLANE, "iterations.csv"),
+                            ["current_group", "oneway_links"], text=("current_group",)) for f in (on, off)]
+        n = min(len(it[0]["current_group"]), len(it[1]["current_group"]))
+        differ = sum(it[0]["current_group"][k] != it[1]["current_group"][k] for k in range(n))
+        plane1 = []
+        for f in (on, off):
+            t = rp.read_table(run.file(os.path.relpath(f, run.path), fg.PLANE, "planes.csv"), ["id", "e_ends"])
+            hit = np.nonzero(t["id"] == 1)[0]
+            plane1.append(f"{t['e_ends'][hit[0]]:.3g}" if len(hit) else "not mapped")
+        cells.append(f"{os.path.basename(on)}: {int(np.nansum(it[0]['oneway_links']))} one-way link(s), current group "
+                     f"differs in {differ} iteration(s), plane 1 e_ends {plane1[0]} on / {plane1[1]} off")
+    return "; ".join(cells)
+
+
 def e32(run):
     run.file("sweep.csv")
     return "; ".join(f"{k} loop(s): median {v[0]:.3g} ms (first tenth {v[1]:.3g}, last tenth {v[2]:.3g}), {v[3]} "
@@ -416,6 +446,11 @@ ISSUE13_CLAIMS = [
      ["p-e15-loop-closure-map-e"], e15),
     ("E18 collinear pieces, Rule 30 off (Fig 97)", "the collinear pair ties both diagonals and misplaces a plane; "
      "Rule 30 fixes it (4.3.7.1)", ["p-e18-collinear"], e18),
+    ("E19 save system, 1200-slot store (Figs 98-100)", "without the save system planes vanish after the "
+     "wrap-around; with it, or a much bigger store, they stay; either of Rules 35 and 36 is enough (4.3.7.3)",
+     ["p-e19-save-system"], e19),
+    ("E20 pseudo plane merging, Rule 37 (Figs 101/102)", "off: after a motion model a wall seen again as a new "
+     "plane leaves the wrong group current and plane 1 mis-mapped; on: right (4.3.7.4)", ["p-e20-pseudo-merge"], e20),
     ("E32 time per iteration vs map size", "follows the planes in view, not the map size: flat over a long run "
      "(4.2.2, 4.3.8)", ["p-e32-runtime"], e32),
 ]

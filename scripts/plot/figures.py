@@ -1261,6 +1261,52 @@ def collinear_figure(fig, run):
             f"{s['walls_seen']:.0f} walls mapped, pose valid {100 * s['pose_valid_fraction']:.0f} %")
 
 
+# E19 (Figs 98, 99) and E20 (Figs 101, 102) ----------------------------------------------------
+
+E19 = ("p-e19-save-system",)
+E20 = ("p-e20-pseudo-merge",)
+
+
+def planes_on_map_figure(fig, sweep):
+    """Fig 98 (E19): planes on the map per iteration for each save-system variant; without Rules 35 and
+    36 planes vanish once the 1200-slot store wraps."""
+    ax = fig.subplots()
+    texts = []
+    for (name,), folders in plane_sweep(sweep):
+        d = iterations(folders[0], ["planes_in_map"], PLANE)
+        ax.plot(d["iteration"], d["planes_in_map"], lw=1, label=name)
+        s = count_summary(folders[0])
+        texts.append(f"{name}: {int(d['planes_in_map'][-1])} planes at the end, {s['walls_mapped']:.0f} of "
+                     f"{s['walls_seen']:.0f} walls mapped")
+    finish(ax, "iteration", "planes on the map")
+    return "; ".join(texts)
+
+
+def current_group_figure(fig, sweep):
+    """Fig 101 (E20): the current group per iteration with Rule 37 off and on (first seed), and where
+    one-way links were added."""
+    runs = dict(plane_sweep(sweep))
+    axes = fig.subplots(2, 1, sharex=True)
+    texts = []
+    for ax, name in zip(axes, ("rule37_off", "rule37_on")):
+        if (name,) not in runs:
+            raise rp.DataError(f"{os.path.join(sweep, 'sweep.csv')}: column variant: no {name!r}")
+        d = iterations(runs[(name,)][0], ["current_group", "oneway_links", "mm_active"], PLANE)
+        ax.plot(d["iteration"], d["current_group"], drawstyle="steps-post", lw=1, label=f"current group, {name}")
+        ax.fill_between(d["iteration"], 0, np.nanmax(d["current_group"]) * d["mm_active"], step="post",
+                        color="grey", alpha=0.2, label="motion model")
+        added = np.nonzero(d["oneway_links"] > 0)[0]
+        if len(added):
+            ax.plot(d["iteration"][added], d["current_group"][added], "rv", label="one-way links added")
+        finish(ax, "iteration" if name == "rule37_on" else "", "group")
+        texts.append(f"{name}: {int(np.nansum(d['oneway_links']))} one-way link(s)")
+    off = iterations(runs[("rule37_off",)][0], ["current_group"], PLANE)["current_group"]
+    on = iterations(runs[("rule37_on",)][0], ["current_group"], PLANE)["current_group"]
+    n = min(len(on), len(off))
+    differ = int(np.sum(~((on[:n] == off[:n]) | (np.isnan(on[:n]) & np.isnan(off[:n])))))
+    return "; ".join(texts) + f"; the current group differs in {differ} iteration(s)"
+
+
 # E32 ------------------------------------------------------------------------------------------
 
 def runtime_by_size(sweep):
@@ -1321,6 +1367,11 @@ ISSUE13_FIGURES = [
            P(per_wall_bars, column="e_ends", ylabel="e_ends (units)")),
     Figure(97, "collinear pieces on Map D, small frustum, Rule 30 off, E18", ("p-e18-collinear",),
            collinear_figure),
+    Figure(98, "planes on the map per iteration, save system variants, E19", E19, planes_on_map_figure),
+    Figure(99, "final maps without and with the save system (Rules 35, 36), E19", E19,
+           P(variant_overlays, names=("save_off", "save_on"))),
+    Figure(101, "current group per iteration, Rule 37 off and on, E20", E20, current_group_figure),
+    Figure(102, "final maps with Rule 37 off and on, E20", E20, P(variant_overlays, names=("rule37_off", "rule37_on"))),
     Figure("e32-runtime", "E32: run time per iteration against the map size", ("p-e32-runtime",), runtime_figure),
 ]
 FIGURES = sorted([f for f in FIGURES if isinstance(f.id, int)] + [f for f in ISSUE13_FIGURES if isinstance(f.id, int)],

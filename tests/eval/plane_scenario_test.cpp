@@ -313,24 +313,82 @@ TEST(PlaneScenario, MapDSmallFrustumPassesTheFirstCornersExactlyWithTheMotionMod
   EXPECT_LT(worst_of(run_map(map, 1, without), 0, 700).valid, 300);
 }
 
-// Rule 35 (spec §5.12, E19 / Figs 98–99 in small): with a store of 300 observations per
-// RltPlane the iterations two planes shared are overwritten long before the loop ends, their
-// comparison can no longer be made, and without the save system their group loses them — the
-// planes vanish from the map (measured: 12 of 36 walls left). With each group's best complete
-// result kept and restored they stay (34 of 36; the full store maps all 36).
-TEST(PlaneScenario, MapDSmallStoreKeepsItsPlanesOnlyWithRule35) {
+// The save system (Rules 35, 36; spec §5.12, E19 / Figs 98–99 in small): with a store of 300
+// observations per RltPlane the iterations two planes shared are overwritten long before the loop
+// ends, their comparison can no longer be made, and without the save system their group loses
+// them — the planes vanish from the map (measured: 12 of 36 walls left). Either rule keeps them:
+// Rule 35 restores the group's best complete result (34 of 36), Rule 36 each pair's best
+// comparison (36 of 36, also with both on; the full store maps all 36).
+TEST(PlaneScenario, MapDSmallStoreKeepsItsPlanesOnlyWithTheSaveSystem) {
   sim::PlanarMap map = noise_free(map_file("d_office_loop.json"));
   map.sensor.frustum = sim::ViewingFrustum::large();
-  RelativePlaneOptions with = noise_free_key_points();
-  with.plane_capacity = 300;
-  RelativePlaneOptions without = with;
-  without.rules.save_snapshot = false;
-  const auto walls_mapped = [&](const RelativePlaneOptions& options) {
-    const SimRun run = run_map(map, 1, options);
+  const auto run_with = [&](bool rule35, bool rule36) {
+    RelativePlaneOptions options = noise_free_key_points();
+    options.plane_capacity = 300;
+    options.rules.save_snapshot = rule35;
+    options.rules.save_reserve = rule36;
+    return run_map(map, 1, options);
+  };
+  const auto walls_mapped = [](const SimRun& run) {
     return std::ranges::count_if(run.mapped_of_wall, [](const auto& wall) { return wall.second >= 1; });
   };
-  EXPECT_GE(walls_mapped(with), 34);
-  EXPECT_LE(walls_mapped(without), 20);
+  EXPECT_LE(walls_mapped(run_with(false, false)), 20);
+  EXPECT_GE(walls_mapped(run_with(true, false)), 34);
+  const SimRun rule36 = run_with(false, true);
+  EXPECT_EQ(walls_mapped(rule36), 36);
+  EXPECT_EQ(walls_mapped(run_with(true, true)), 36);
+  // The reserves are exact comparisons: the pose stays exact wherever valid (measured: 2477 of
+  // 2501 iterations, 5e-14, as with the full store).
+  const Worst w = worst_of(rule36);
+  EXPECT_GE(w.valid, 2450);
+  EXPECT_LT(w.position, kNoiseFree);
+  EXPECT_LT(w.heading, kNoiseFree);
+}
+
+// Rule 37 (MendMergeAfterLoopClosing, spec §5.5.5) on Map D with noise, large frustum, two loops
+// (seed 1): when Rule 29 returns from a motion model to a visited group, a plane in view whose wall
+// has a second RltPlane on the map gets a one-way link to that duplicate's group (measured: one,
+// at iteration 1694). The link is for charting only — the group does not list the plane and the
+// plane has no membership in it — and here it changes nothing: every pose, every current group
+// and the final map are bit for bit those of the run without the rule. (The thesis's failure,
+// Fig 101's wrong current group, is not reproduced on our maps; E20 measures it on Map E.)
+TEST(PlaneScenario, Rule37OneWayLinksChartOnlyAndLeaveTheGroupsAlone) {
+  sim::PlanarMap map = map_file("d_office_loop.json");
+  map.sensor.frustum = sim::ViewingFrustum::large();
+  map.path.loops = 2;
+  const sim::PlanarSimulator simulator(map, 1);
+  RelativePlaneOptions on;
+  on.key_points = true;
+  RelativePlaneOptions off = on;
+  off.rules.pseudo_merge = false;
+  RltXPointsS with(on, simulator.path().world_T_robot(0)), without(off, simulator.path().world_T_robot(0));
+  int links = 0;
+  for (int k = 0; k < simulator.iterations(); ++k) {
+    const sim::PlaneSimFrame frame = simulator.frame(k);
+    const RelativePlaneStep a = with.step(frame.observation);
+    const RelativePlaneStep b = without.step(frame.observation);
+    links += a.oneway_links;
+    EXPECT_EQ(b.oneway_links, 0);
+    ASSERT_EQ(a.pose_valid, b.pose_valid) << "iteration " << k;
+    ASSERT_EQ(a.world_T_robot.translation, b.world_T_robot.translation) << "iteration " << k;
+    ASSERT_EQ(a.world_T_robot.heading, b.world_T_robot.heading) << "iteration " << k;
+    ASSERT_EQ(a.current_group, b.current_group) << "iteration " << k;
+  }
+  EXPECT_GE(links, 1);
+  int found = 0;
+  for (const plane::RltPlane& p : with.planes())
+    for (plane::XPointId y : p.oneway_xpoints()) {
+      ++found;
+      EXPECT_EQ(p.ref(y), nullptr) << "plane " << p.id() << " X" << y;
+      EXPECT_EQ(std::ranges::count(with.xpoints()[y].planes(), p.id()), 0) << "plane " << p.id() << " X" << y;
+    }
+  EXPECT_EQ(found, links);
+  ASSERT_EQ(with.map().size(), without.map().size());
+  for (std::size_t p = 0; p < with.map().size(); ++p) {
+    EXPECT_EQ(with.map()[p].mapped, without.map()[p].mapped) << "plane " << p;
+    EXPECT_EQ(with.map()[p].plane.a, without.map()[p].plane.a) << "plane " << p;
+    EXPECT_EQ(with.map()[p].plane.b, without.map()[p].plane.b) << "plane " << p;
+  }
 }
 
 // The large frustum (spec §3.8: half-angle 35°, 30 deep) keeps walls in view longer, and still

@@ -85,9 +85,12 @@ make_run p-e12-rule28 sweep scenarios/p-e12-rule28.json --set planar.iterations=
 make_run p-e15-loop-closure-map-e sweep scenarios/p-e15-loop-closure-map-e.json --set planar.iterations=400
 make_run p-e18-collinear run scenarios/p-e18-collinear.json --set planar.iterations=400
 make_run p-e32-runtime sweep scenarios/p-e32-runtime.json --set planar.iterations=300
+make_run p-e19-save-system sweep scenarios/p-e19-save-system.json --set planar.iterations=300
+make_run p-e20-pseudo-merge sweep scenarios/p-e20-pseudo-merge.json --set planar.iterations=300
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
 expected+=(68 $(seq 74 82) 87 90 91 92 97 e32-runtime)  # issue 13 experiments
+expected+=(98 99 101 102)  # issue 15: E19, E20
 
 # Chapter 5 (points -> EM -> Relative Plane): short runs of E23-E27, the test bench, E29.
 make_run p-em-office run scenarios/p-em-office.json --set planar.iterations=150
@@ -175,10 +178,13 @@ for row in "loop length" "RltPoints / groups / final groups" "visible points per
   "E05 (a)" "E05 (b)" "E05 (c)" "E06 Rule 12 on vs off" "E31 Rule 2" \
   "E02 key-point pairs" "E07 interval mode" "E08 wrong key points heal" "E09 plane 5" "E10 Rule 22" \
   "E12 Rule 28" "E15 Map E loop closure" "E18 collinear pieces" "E32 time per iteration" \
+  "E19 save system" "E20 pseudo plane merging" \
   "E23 Map D, points" "E24 E23 with point noise" "E25 Map E, points" "E26 E25 with point noise" \
   "E27 paper demo without noise" "E27 paper demo with noise" "E27 real time including EM" "E30 EM test bench" "E29 EM2 vs EM1"; do
   expect "claims.md row '$row'" grep -q "^| $row" "$claims_md"
 done
+expect "claims.md: E20 compares Rule 37 on and off" \
+  grep -q "^| E20 pseudo plane merging.*| seed-1: [0-9]* one-way link(s), current group differs in [0-9]* iteration(s)" "$claims_md"
 expect "claims.md computes RltPoints from s-f8" \
   grep -q "^| RltPoints.*| [0-9]* / [0-9]* / [0-9]* .*s-f8/relative_point/iterations.csv\` |$" "$claims_md"
 expect "claims.md: E03 compares loop 1 with loop 2" \

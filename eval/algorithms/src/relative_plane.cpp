@@ -40,6 +40,8 @@ const Columns<IterationRow> kIterationColumns = {
     {"local_matches", [](const IterationRow& r) { return csv_field(r.step.local_matches); }},
     {"new_planes", [](const IterationRow& r) { return csv_field(r.step.new_planes); }},
     {"pose_planes", [](const IterationRow& r) { return csv_field(r.step.pose_planes); }},
+    // Rule 37: one-way (charting-only) links added this iteration.
+    {"oneway_links", [](const IterationRow& r) { return csv_field(r.step.oneway_links); }},
     {"unassigned", [](const IterationRow& r) { return csv_field(r.slam.unassigned().size()); }},
     {"t_add_ms", [](const IterationRow& r) { return csv_field(r.step.timings.add_ms); }},
     {"t_manage_ms", [](const IterationRow& r) { return csv_field(r.step.timings.manage_ms); }},

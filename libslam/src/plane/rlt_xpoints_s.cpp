@@ -175,7 +175,19 @@ PlaneId RltXPointsS::create_plane(const PlaneObject& observation) {
 void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   // Rule 29 (spec §5.10.4): leaving a motion model where a group already holds every plane in
   // view goes back to that group instead of starting a new one.
-  if (motion_model_active_ && options_.rules.return_to_visited_group) switch_to_group_holding_all();
+  if (motion_model_active_ && options_.rules.return_to_visited_group && switch_to_group_holding_all() &&
+      options_.key_points && options_.rules.pseudo_merge) {
+    // Rule 37 looks for duplicates where the motion model that just ended puts the robot now. A
+    // copy tracks this iteration and the membership it writes is put back: the ended model and
+    // its plane stay exactly as they were (frozen), so the rule changes nothing but the chart.
+    RltXMMPoint tracking = motion_models_.back();
+    RltXPointRef& tracked_ref = *planes_[tracking.plane()].ref(tracking.xpoint());
+    const RltXPointRef kept = tracked_ref;
+    tracking.compute(planes_, options_.motion_model);
+    tracked_ref = kept;
+    const PlanarPose world_T_robot = tracking.world_T_robot(iteration_).value_or(last_valid_pose_.world_T_robot);
+    result.oneway_links += mend_merge_after_loop_closing(world_T_robot);
+  }
   // Spec §5.5.1 step A, with the bootstrap of A23: the first group waits for two planes.
   if (xpoints_.empty()) bootstrap(result);
   if (!xpoints_.empty()) {
@@ -226,9 +238,12 @@ void RltXPointsS::chart_current_group() {
   // model stays current until it ends (Rules 26, 29).
   if (motion_model_active_ || xpoints_.empty()) return;
   chart_.assign(xpoints_.size(), 0);
-  for (PlaneId p : assignment_)
+  for (PlaneId p : assignment_) {
     for (const RltXPointRef& ref : planes_[p].refs())
       if (!xpoints_[ref.xpoint].motion_model()) ++chart_[ref.xpoint];
+    for (XPointId y : planes_[p].oneway_xpoints())  // Rule 37: as if merged with its duplicates
+      if (planes_[p].ref(y) == nullptr) ++chart_[y];    // (unless it has since joined that group)
+  }
   XPointId best = current_;
   int best_count = current_ != kNone ? chart_[current_] : 0;
   for (XPointId x = 0; x < static_cast<XPointId>(xpoints_.size()); ++x)
@@ -399,6 +414,27 @@ bool RltXPointsS::switch_to_group_holding_all() {
     }
   }
   return false;
+}
+
+int RltXPointsS::mend_merge_after_loop_closing(const PlanarPose& world_T_robot) {
+  // MendMergeAfterLoopClosing (Rule 37, spec §5.5.5): every plane in view against the whole map
+  // (MatchPlanetoMap's all-matches form); a match other than the plane itself is a duplicate, and
+  // each group holding it that does not hold the plane gets a one-way link from the plane. The
+  // groups' plane lists are not touched: ComputeXPoint never compares through such a link.
+  int added = 0;
+  const std::vector<char> none(planes_.size(), 0);
+  for (int i = 0; i < static_cast<int>(stamped_.size()); ++i) {
+    const PlaneId p = assignment_[i];
+    matches_.clear();
+    builder_.match_plane_to_map(i, stamped_[i], world_T_robot, options_.global_match, options_.rules.normal_direction,
+                                none, matches_);
+    for (const PlaneMatch& m : matches_) {
+      if (m.plane == p) continue;
+      for (const RltXPointRef& ref : planes_[m.plane].refs())
+        if (!xpoints_[ref.xpoint].motion_model() && planes_[p].add_oneway(ref.xpoint)) ++added;
+    }
+  }
+  return added;
 }
 
 void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {

@@ -107,6 +107,23 @@ struct RuleSwitches {
   // iterations two planes shared. Off: such a group loses those planes and they vanish from the
   // map after the wrap-around (E19, Figs 98–99). Part 2 only.
   bool save_snapshot = true;
+  // Rule 36 (DoBackupCheck, spec §5.12): each chain edge keeps its best comparison so far (the
+  // child plane's largest size, then the longest interval, with the parent's size and key point
+  // of that time for Rule 28) and uses it when the current one is smaller or cannot place the
+  // plane — also once the circular array has overwritten the iterations the pair shared. Off:
+  // only Rule 35's whole-group copy saves a group (E19). Part 2 only. [T: on] Measured (seed 1):
+  // final mean map error E19 0.055 → 0.048, E15 1.35 → 1.08, E23 0.24 → 0.12, E24 11 → 36 of 36
+  // walls, E25 1.07 → 1.04; worse on E26 (10 → 9 of 10 walls, 1.06 → 1.27), and key-point claims
+  // are right less often (E15 89 → 85 %): a reserve's key point is that of its own interval.
+  bool save_reserve = true;
+  // Rule 37 (MendMergeAfterLoopClosing, spec §5.5.5): when Rule 29 returns to a visited group,
+  // each plane in view that has a duplicate on the map (the same wall as another RltPlane, found
+  // by global matching) gets a one-way link to each group the duplicate is in; Rule 22 then
+  // counts it for them, as if the two were merged, while no group compares it. Off: a wall seen
+  // again as a new plane charts only its own groups (the wrong current group of Fig 101). [T: on]
+  // Measured: E20 (Map E, seeds 1–5) and Map D two loops give identical runs on and off — the
+  // links are added rarely and have not yet changed a current group here.
+  bool pseudo_merge = true;
 };
 
 // The motion model (Rules 23–27, thesis 4.3.6; spec §5.10, §5.14).
@@ -241,6 +258,10 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
           "Rule 29: leaving a motion model where a group holds every plane in view returns to it");
   f.field("save_snapshot", r.save_snapshot,
           "Rule 35: a group restores its best complete result when a comparison can no longer be made");
+  f.field("save_reserve", r.save_reserve,
+          "Rule 36: each pair keeps its best comparison (largest size, then longest interval) and uses it");
+  f.field("pseudo_merge", r.pseudo_merge,
+          "Rule 37: at a loop closing, planes in view get one-way links (charting only) to their duplicates' groups");
   f.field("reorder_planes", r.reorder_planes,
           "Rule 30: a group's comparison chain re-ordered to the longest intervals with valid key points");
   f.field("first_reading_resize", r.first_reading_resize,

@@ -53,8 +53,9 @@ class RltXPoint {
 
   // ReorderPlanes (Rule 30, spec §5.7.3) when it is due at `iteration` (options.reorder): the
   // chain becomes the best path by the planes' pairwise comparison intervals with valid key
-  // points (reorder_planes.hpp). True when the chain changed (the group is then recomputed).
-  bool reorder_if_due(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration);
+  // points (reorder_planes.hpp). True when the chain changed (the group is then recomputed); the
+  // Rule 36 reserves of the edges that changed are then cleared.
+  bool reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration);
 
   // Set when one of the planes got an observation or the chain changed: the group is then
   // recomputed; groups that saw nothing new cost nothing (thesis 4.2.2).

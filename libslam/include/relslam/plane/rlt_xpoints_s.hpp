@@ -48,6 +48,7 @@ struct RelativePlaneStep {
   int groups_created = 0;
   int planes_grouped = 0;  // unassigned planes that joined or started a group
   int groups_computed = 0;
+  int oneway_links = 0;  // Rule 37's one-way links added
   // The motion model carrying the pose this iteration (Rules 23–27), or nullptr.
   const RltXMMPoint* motion_model = nullptr;
   PlaneStepTimings timings;
@@ -97,6 +98,7 @@ class RltXPointsS {
   void chart_current_group();
   void set_current(XPointId x);
   bool switch_to_group_holding_all();
+  int mend_merge_after_loop_closing(const PlanarPose& world_T_robot);
   void check_for_motion_model();
   void create_motion_model(PlaneId plane);
   void compute_xpoints(RelativePlaneStep& result);
