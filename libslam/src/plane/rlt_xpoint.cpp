@@ -187,6 +187,23 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
   }
 }
 
+void RltXPoint::check_interval_size(std::vector<RltPlane>& planes, const RollBackOptions& options, int iteration,
+                                    std::vector<PlaneId>& failed) const {
+  if (motion_model()) return;  // one plane, tracked, compared with nothing
+  for (std::size_t k = 1; k < chain_.size(); ++k) {
+    RltXPointRef& ref = *planes[chain_[k]].ref(id_);
+    if (ref.confirmed || ref.hinted) continue;
+    // Thesis 4.5 CheckIntervalSize: "if the interval the RltPlane's RltXPointRef is calculated in
+    // is larger than a certain size" — the iterations the placing comparison averaged.
+    const CompareResult& placing = edges_[k - 1];
+    if (placing.valid && placing.samples >= options.min_interval) {
+      ref.confirmed = true;
+      continue;
+    }
+    if (iteration - ref.join_iteration >= options.confirm_after) failed.push_back(chain_[k]);
+  }
+}
+
 const std::vector<PlaneObject>& RltXPoint::observations(const std::vector<RltPlane>& planes, std::size_t k,
                                                          const RltPlaneInterval* within) {
   if (!observations_filled_[k]) {
@@ -226,7 +243,14 @@ void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const Re
   // when one was made and could not place a plane (Rule 15's tie, a missing key point).
   if (!same_chain || std::ranges::all_of(edges_, &CompareResult::valid)) return;
   edges_ = snapshot_->edges;
-  for (std::size_t k = 0; k < n; ++k) *planes[chain_[k]].ref(id_) = snapshot_->refs[k];
+  for (std::size_t k = 0; k < n; ++k) {
+    // A membership's Rule 31/32 verdict belongs to it, not to the computation restored.
+    RltXPointRef& ref = *planes[chain_[k]].ref(id_);
+    const bool confirmed = ref.confirmed, hinted = ref.hinted;
+    ref = snapshot_->refs[k];
+    ref.confirmed = confirmed;
+    ref.hinted = hinted;
+  }
 }
 
 void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,

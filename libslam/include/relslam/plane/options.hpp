@@ -107,6 +107,16 @@ struct RuleSwitches {
   // iterations two planes shared. Off: such a group loses those planes and they vanish from the
   // map after the wrap-around (E19, Figs 98–99). Part 2 only.
   bool save_snapshot = true;
+  // Rules 31–34 (thesis 4.3.7.2, walkthrough 4.5; spec §5.11): a plane whose comparison in a
+  // group still covers fewer than rollback.min_interval iterations rollback.confirm_after
+  // iterations after it joined gets a hint (first: not this group; then: only a group of its own;
+  // then: not on the map), and the algorithm rolls back to the iteration it joined and replays
+  // the stored inputs with the hint (Figs 94–96: a plane seen as another leaves, compared over a
+  // few iterations, barely mapped). Off: every plane stays in the groups it joined. [T: on;
+  // C: off] Measured (README, issue 15 note): on the scenarios of the default suite no check fires
+  // noise-free and the run is the same; with noise it fires and changes the runs, so it stays
+  // off until the figures are redone with it, like reorder_planes.
+  bool interval_check = false;
 };
 
 // The motion model (Rules 23–27, thesis 4.3.6; spec §5.10, §5.14).
@@ -132,6 +142,31 @@ struct ReorderOptions {
   int period = 200;
   // The best path is searched exactly up to this many planes, greedily beyond [R].
   int exact_max_planes = 12;
+};
+
+// Hints and roll-back (Rules 31–34, thesis 4.3.7.2, 4.4.3.15–17; spec §5.11, §5.14).
+struct RollBackOptions {
+  // Rules 31/32: a membership is confirmed once the comparison placing the plane (its chain edge
+  // from the previous plane) averaged this many iterations [R, I_min] ...
+  int min_interval = 20;
+  // ... and judged this many iterations after the plane joined: earlier its interval may still
+  // grow [R, T_confirm].
+  int confirm_after = 60;
+  // Rule 33: a copy of the whole state is kept every this many iterations; a roll-back restores
+  // the newest copy before its target and replays from there, so a shorter period replays less
+  // and copies more [C, measured in the issue 15 note].
+  int checkpoint_period = 50;
+  // The oldest reachable iteration, iterations back: the PlaneRecord buffer of thesis 4.4.3.17,
+  // as deep as RltPlane's circular array [R, storage_capacity]; a roll-back further back is
+  // refused and counted (spec §5.11.3).
+  int max_depth = 1200;
+  // Roll-backs in one step (nested: requested while replaying). Each plane has at most three
+  // hint levels, so this is only a safety net; beyond it requests are refused and counted [C].
+  int max_nesting = 32;
+  // Testing hook [C]: every this many iterations a roll-back with no hint to force_depth
+  // iterations back, whose replay must give the same run (spec §8 roll-back idempotence). 0: never.
+  int force_every = 0;
+  int force_depth = 10;
 };
 
 struct RelativePlaneOptions {
@@ -191,6 +226,8 @@ struct RelativePlaneOptions {
   MotionModelOptions motion_model;
   // Part 3 (thesis 4.3.7): Rule 30's re-ordering of comparison chains; with key_points only.
   ReorderOptions reorder;
+  // Part 3 (thesis 4.3.7.2): the interval checks, hints and roll-back of rules.interval_check.
+  RollBackOptions rollback;
   RuleSwitches rules;
 };
 
@@ -249,6 +286,8 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
           "Rule 19: key points only in their own interval, else recomputed there (Figs 91/92)");
   f.field("size_correction", r.size_correction,
           "Rule 28: chained planes moved to each edge's size before composing (Fig 87)");
+  f.field("interval_check", r.interval_check,
+          "Rules 31-34: a plane compared over too few iterations gets a hint; roll back and replay [C: off]");
 }
 
 // The scenario keys of MotionModelOptions (relative_plane.motion_model.*).
@@ -271,6 +310,24 @@ void describe(OptionsOf<ReorderOptions> auto& r, auto& f) {
   // 2^n·n² work: 20 planes is already ~4e8 steps.
   f.field("exact_max_planes", r.exact_max_planes, "the best chain is searched exactly up to this many planes",
           at_least(2), at_most(20));
+}
+
+// The scenario keys of RollBackOptions (relative_plane.rollback.*).
+void describe(OptionsOf<RollBackOptions> auto& r, auto& f) {
+  f.field("min_interval", r.min_interval,
+          "Rules 31/32: a membership is confirmed once its comparison averaged this many iterations", at_least(1));
+  f.field("confirm_after", r.confirm_after, "... and judged this many iterations after the plane joined",
+          at_least(1));
+  f.field("checkpoint_period", r.checkpoint_period, "Rule 33: a copy of the state every this many iterations",
+          at_least(1));
+  // A roll-back reaches back max_depth iterations only if a copy that old is kept.
+  f.field("max_depth", r.max_depth, "the oldest iteration a roll-back may reach, iterations back",
+          at_least(r.checkpoint_period, "checkpoint_period"));
+  f.field("max_nesting", r.max_nesting, "roll-backs in one step at most (a safety net)", at_least(1));
+  f.field("force_every", r.force_every, "testing: a roll-back with no hint every this many iterations (0: never)",
+          at_least(0));
+  f.field("force_depth", r.force_depth, "... to this many iterations back", at_least(0),
+          at_most(r.max_depth, "max_depth"));
 }
 
 // The scenario keys of KeyPointTies (relative_plane.key_point_ties.*).
@@ -322,6 +379,7 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
            "Rule 21: walkthrough (current, neighbours, new group) or new_group_first", kRule21Orders);
   f.nested("motion_model", o.motion_model);
   f.nested("reorder", o.reorder);
+  f.nested("rollback", o.rollback);
   f.nested("rules", o.rules);
 }
 

@@ -27,6 +27,12 @@ struct RltXPointRef {
   double max_length = 0;
   double height = 0;
   int join_iteration = 0;  // when the plane joined the group [R: roll-back, Rule 33]
+  // Rules 31/32 (CheckIntervalSize): the comparison placing the plane reached the minimum
+  // interval, so it is not checked again ...
+  bool confirmed = false;
+  // ... or it did not in time and a hint was sent back (Rule 34); still here only when that
+  // roll-back was refused, and then not checked again either.
+  bool hinted = false;
 };
 
 }  // namespace relslam::plane
