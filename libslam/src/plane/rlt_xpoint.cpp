@@ -187,16 +187,26 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
   }
 }
 
+void RltXPoint::release_scratch() {
+  scratch_observations_ = {};
+  observations_filled_ = {};
+  scratch_common_ = {};
+}
+
 void RltXPoint::check_interval_size(std::vector<RltPlane>& planes, const RollBackOptions& options, int iteration,
                                     std::vector<PlaneId>& failed) const {
   if (motion_model()) return;  // one plane, tracked, compared with nothing
   for (std::size_t k = 1; k < chain_.size(); ++k) {
     RltXPointRef& ref = *planes[chain_[k]].ref(id_);
     if (ref.confirmed || ref.hinted) continue;
-    // Thesis 4.5 CheckIntervalSize: "if the interval the RltPlane's RltXPointRef is calculated in
-    // is larger than a certain size" — the iterations the placing comparison averaged.
+    // Rule 31: seen together with the plane it is compared with; or thesis 4.5 CheckIntervalSize,
+    // "the interval the RltPlane's RltXPointRef is calculated in": the placing comparison's piece.
     const CompareResult& placing = edges_[k - 1];
-    if (placing.valid && placing.samples >= options.min_interval) {
+    const int covered =
+        options.measure == IntervalMeasure::Shared
+            ? RltPlaneInterval::common_size(planes[chain_[k - 1]].intervals(), planes[chain_[k]].intervals())
+            : (placing.valid ? placing.samples : 0);
+    if (covered >= options.min_interval) {
       ref.confirmed = true;
       continue;
     }

@@ -24,7 +24,8 @@ void RltPlaneStorage::record(const PlaneFrame& frame) {
 
 void RltPlaneStorage::checkpoint_if_due(int iteration, const RltXPointsState& state, int period) {
   if (!checkpoints_.empty() && iteration - checkpoints_.back().iteration < period) return;
-  checkpoints_.push_back({iteration, state});
+  Checkpoint& kept = checkpoints_.emplace_back(iteration, state);
+  for (RltXPoint& x : kept.state.xpoints_) x.release_scratch();  // only memory: compute() refills it
 }
 
 const RltPlaneStorage::Checkpoint* RltPlaneStorage::newest_at_or_before(int iteration) const {

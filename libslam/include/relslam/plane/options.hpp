@@ -113,9 +113,9 @@ struct RuleSwitches {
   // then: not on the map), and the algorithm rolls back to the iteration it joined and replays
   // the stored inputs with the hint (Figs 94–96: a plane seen as another leaves, compared over a
   // few iterations, barely mapped). Off: every plane stays in the groups it joined. [T: on;
-  // C: off] Measured (README, issue 15 note): on the scenarios of the default suite no check fires
-  // noise-free and the run is the same; with noise it fires and changes the runs, so it stays
-  // off until the figures are redone with it, like reorder_planes.
+  // C: off] On changes the measured runs of Maps D and E with noise, without a clear gain yet
+  // (README, E17: roll-backs, map and pose errors with it off and on); off, like reorder_planes,
+  // so what was measured without it stays reproducible.
   bool interval_check = false;
 };
 
@@ -144,17 +144,32 @@ struct ReorderOptions {
   int exact_max_planes = 12;
 };
 
+// What Rules 31/32 measure of the comparison that places a plane (its chain edge from the plane
+// before it).
+enum class IntervalMeasure : unsigned char {
+  // The iterations the two planes were seen together: Rule 31, "viewable together for a minimum
+  // amount of time" [T]. A plane seen just as its partner leaves (Figs 94–95) fails it.
+  Shared,
+  // The iterations the comparison averaged, one growth-phase piece (Rule 18): the walkthrough's
+  // "the interval it is calculated in" [T]. Stricter: two planes seen together throughout but
+  // growing and shrinking by turns fail it too.
+  Piece,
+};
+
 // Hints and roll-back (Rules 31–34, thesis 4.3.7.2, 4.4.3.15–17; spec §5.11, §5.14).
 struct RollBackOptions {
   // Rules 31/32: a membership is confirmed once the comparison placing the plane (its chain edge
-  // from the previous plane) averaged this many iterations [R, I_min] ...
+  // from the previous plane) covers this many iterations [R, I_min] ...
   int min_interval = 20;
+  // ... counted as `measure` says [C: shared; README E17: on Map E the piece reading takes a wall
+  // the start group placed to 0.02 off the map].
+  IntervalMeasure measure = IntervalMeasure::Shared;
   // ... and judged this many iterations after the plane joined: earlier its interval may still
   // grow [R, T_confirm].
   int confirm_after = 60;
   // Rule 33: a copy of the whole state is kept every this many iterations; a roll-back restores
   // the newest copy before its target and replays from there, so a shorter period replays less
-  // and copies more [C, measured in the issue 15 note].
+  // and copies more [C; README E17 gives the time and memory it costs].
   int checkpoint_period = 50;
   // The oldest reachable iteration, iterations back: the PlaneRecord buffer of thesis 4.4.3.17,
   // as deep as RltPlane's circular array [R, storage_capacity]; a roll-back further back is
@@ -239,6 +254,8 @@ constexpr Rule21Order kRule21Orders[] = {Rule21Order::Walkthrough, Rule21Order::
 std::string_view to_string(Rule21Order order);  // "walkthrough", "new_group_first"
 constexpr ChainOrder kChainOrders[] = {ChainOrder::Creation, ChainOrder::Reversed};
 std::string_view to_string(ChainOrder order);  // "creation", "reversed"
+constexpr IntervalMeasure kIntervalMeasures[] = {IntervalMeasure::Shared, IntervalMeasure::Piece};
+std::string_view to_string(IntervalMeasure measure);  // "shared", "piece"
 
 // The scenario keys of MatchBounds (relative_plane.local_match.*, relative_plane.global_match.*).
 // Rule 1 needs the gap test (`local`): without it every RltPlane ever seen is a candidate.
@@ -315,7 +332,10 @@ void describe(OptionsOf<ReorderOptions> auto& r, auto& f) {
 // The scenario keys of RollBackOptions (relative_plane.rollback.*).
 void describe(OptionsOf<RollBackOptions> auto& r, auto& f) {
   f.field("min_interval", r.min_interval,
-          "Rules 31/32: a membership is confirmed once its comparison averaged this many iterations", at_least(1));
+          "Rules 31/32: a membership is confirmed once its comparison covers this many iterations", at_least(1));
+  f.choice("measure", r.measure,
+           "... counted as shared (the two planes seen together, Rule 31) or piece (the growth phase compared)",
+           kIntervalMeasures);
   f.field("confirm_after", r.confirm_after, "... and judged this many iterations after the plane joined",
           at_least(1));
   f.field("checkpoint_period", r.checkpoint_period, "Rule 33: a copy of the state every this many iterations",

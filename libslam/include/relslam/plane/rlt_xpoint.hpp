@@ -64,6 +64,10 @@ class RltXPoint {
   void check_interval_size(std::vector<RltPlane>& planes, const RollBackOptions& options, int iteration,
                            std::vector<PlaneId>& failed) const;
 
+  // Frees the observations compute() copies out for its comparisons (refilled by every compute):
+  // a checkpoint of the state (Rule 33) need not keep them.
+  void release_scratch();
+
   // Set when one of the planes got an observation or the chain changed: the group is then
   // recomputed; groups that saw nothing new cost nothing (thesis 4.2.2).
   bool needs_compute() const { return needs_compute_; }
