@@ -90,6 +90,7 @@ make_run p-e17-interval-check sweep scenarios/p-e17-interval-check.json --set pl
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
 expected+=(68 $(seq 74 82) 87 90 91 92 97 e32-runtime)  # issue 13 experiments
+expected+=(94)  # issue 15 experiments
 
 # Chapter 5 (points -> EM -> Relative Plane): short runs of E23-E27, the test bench, E29.
 make_run p-em-office run scenarios/p-em-office.json --set planar.iterations=150
