@@ -97,6 +97,10 @@ step p-e20-pseudo-merge  sweep p-e20-pseudo-merge $(seeds)
 step p-e32-runtime       relslam sweep scenarios/p-e32-runtime.json --out "$out/p-e32-runtime" --force -q --jobs 1 \
                            $([ $quick -eq 1 ] && echo "--param planar.loops=1,2")
 step p-room              run p-room p-room
+# issue 15 experiments (Relative Plane part 3): E16 (Rule 29), E17 (Rules 31-34: interval checks,
+# hints and roll-back).
+step p-e16-rule29        sweep p-e16-rule29
+step p-e17-interval-check sweep p-e17-interval-check
 
 # Chapter 5 and the companion paper (spec relative_plane_em.md §6.1, E23-E30): points -> EM ->
 # Relative Plane (Figs 46, 105-108, paper Figs 6-8), the EM test bench (Figs 55-61) and EM1 vs

@@ -252,6 +252,12 @@ CATALOGUE.update({
     92: ("Plane 6 not calculated well",
          "Thesis 4.3.6 (E15): the same problem, a missing or stale key point, places plane 6 badly; fixed by Rule "
          "19."),
+    94: ("Plane 6 should not be in X0",
+         "Thesis 4.3.7.2 (E17): plane 6 appears nearly as plane 5 leaves the view, joins the start group and is "
+         "compared with plane 5 over a very short interval, so it is barely mapped (and even links groups); Rules "
+         "31-34 (check the interval, send a hint back, roll back and replay) keep such a plane out of the group "
+         "[our run: Map E, interval checks off and on; on, the start group's plane seen with its partner for about "
+         "14 iterations is rolled back out of it, levels 1 then 3, and its wall is mapped later by another plane]."),
     97: ("Bad key point calculation due to plane comparison used",
          "Thesis 4.3.7.1 (E18): plane 4 is compared with the coplanar plane 10; plane 4 shrinks as plane 10 grows, "
          "so both diagonal key-point pairs are low and the wrong one misplaces plane 4; Rule 30 (choose the "

@@ -427,6 +427,30 @@ def e32(run):
                      f"RltPlanes" for k, v in fg.runtime_by_size(run.path).items())
 
 
+# issue 15: Relative Plane part 3, the interval checks, hints and roll-back (Rules 31-34).
+
+def e17(run):
+    run.file("sweep.csv")
+    cells = []
+    for name in ("interval_check_off", "interval_check_on"):
+        rel = os.path.relpath(fg.variant_folder_of(run.path, name), run.path)
+        s = plane_summary(run, rel)
+        t = rp.read_table(run.file(rel, "summary.csv"), ["algorithm", "hints", "rollbacks", "replayed_iterations"],
+                          text=("algorithm",))
+        i = list(t["algorithm"]).index(fg.PLANE)
+        cells.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, final mean map error "
+                     f"{s['final_mean_map_error']:.3g}, final position error {s['final_position_error']:.3g}, "
+                     f"{t['rollbacks'][i]:.0f} roll-back(s) from {t['hints'][i]:.0f} hint(s), "
+                     f"{t['replayed_iterations'][i]:.0f} iterations replayed")
+    return "; ".join(cells)
+
+
+ISSUE15_CLAIMS = [
+    ("E17 interval checks, hints and roll-back (Figs 94-96)", "off: a plane seen as another leaves is compared "
+     "over a tiny interval and barely mapped; hints and roll-back fix it cleanly (4.3.7.2)",
+     ["p-e17-interval-check"], e17),
+]
+
 ISSUE13_CLAIMS = [
     ("E02 key-point pairs of a growing and a shrinking plane (Fig 68)", "the pair from the two static ends has the "
      "lowest σ, at noise level; the other three move; its key points are the real ends (4.3.4)",
@@ -589,7 +613,7 @@ CLAIMS = [
      "unattached; the defaults avoid these (3.5.4)", ["em-bench"], e30_bench),
     ("E29 EM2 vs EM1 on identical frames", "EM2 about twice as fast as EM1, similar quality (3.5.4)",
      ["e29-office", "e29-room"], e29_speed),
-] + ISSUE13_CLAIMS
+] + ISSUE13_CLAIMS + ISSUE15_CLAIMS
 
 
 def rows(runs):

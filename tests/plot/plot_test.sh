@@ -87,10 +87,12 @@ make_run p-e18-collinear run scenarios/p-e18-collinear.json --set planar.iterati
 make_run p-e32-runtime sweep scenarios/p-e32-runtime.json --set planar.iterations=300
 make_run p-e19-save-system sweep scenarios/p-e19-save-system.json --set planar.iterations=300
 make_run p-e20-pseudo-merge sweep scenarios/p-e20-pseudo-merge.json --set planar.iterations=300
+# issue 15 experiments (Relative Plane part 3): E17's interval checks, hints and roll-back.
+make_run p-e17-interval-check sweep scenarios/p-e17-interval-check.json --set planar.iterations=400
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
 expected+=(68 $(seq 74 82) 87 90 91 92 97 e32-runtime)  # issue 13 experiments
-expected+=(98 99 101 102)  # issue 15: E19, E20
+expected+=(94 98 99 101 102)  # issue 15: E17, E19, E20
 
 # Chapter 5 (points -> EM -> Relative Plane): short runs of E23-E27, the test bench, E29.
 make_run p-em-office run scenarios/p-em-office.json --set planar.iterations=150
@@ -200,6 +202,8 @@ expect "index.html has the paper's Fig 6 caption" grep -q "An example of the sim
 expect "claims.md: every simulated row has a number" \
   [ "$(grep -v 'Victoria Park' "$claims_md" | grep -c '| not run |')" -eq 0 ]
 expect "claims.md: no errors" not grep -q "| error:" "$claims_md"
+expect "claims.md: E17 counts the roll-backs with the checks on" \
+  grep -q "^| E17 interval checks.*interval_check_off: .* 0 roll-back(s) .*interval_check_on: .* [1-9][0-9]* roll-back(s) from " "$claims_md"
 
 # ---- missing and malformed inputs ------------------------------------------------------------
 out=$("$python" "$plot/figures.py" --runs "$work/empty" --out "$work/empty/figures" 2>&1)

@@ -1,8 +1,9 @@
 // The Relative Plane algorithm (libslam's RltXPointsS, thesis Chapter 4) as an algorithm of a
 // planar run: its structure counts and the Profiler's part timings (thesis 4.4.2.5) as
 // iterations.csv columns, each RltPlane's observations and group in planes.csv, and its groups
-// and links as groups.csv and links.csv (spec relative_plane_em.md §7.3); with key points also
-// edges.csv and E02's pairs.csv / pair_sigma.csv.
+// and links as groups.csv and links.csv (spec relative_plane_em.md §7.3), every roll-back
+// (Rules 31–34) as rollbacks.csv and their counts in summary.csv; with key points also edges.csv
+// and E02's pairs.csv / pair_sigma.csv.
 #include "relative_plane.hpp"
 
 #include "key_point_pair_diagnostic.hpp"
@@ -48,6 +49,12 @@ const Columns<IterationRow> kIterationColumns = {
     {"t_compute_ms", [](const IterationRow& r) { return csv_field(r.step.timings.compute_ms); }},
     {"t_build_ms", [](const IterationRow& r) { return csv_field(r.step.timings.build_ms); }},
     {"t_pose_ms", [](const IterationRow& r) { return csv_field(r.step.timings.pose_ms); }},
+    // Rules 31–34: this step's hints and roll-backs, and the time restoring and replaying took.
+    {"hints", [](const IterationRow& r) { return csv_field(r.step.roll_back.hints); }},
+    {"rollbacks", [](const IterationRow& r) { return csv_field(r.step.roll_back.rollbacks); }},
+    {"rollbacks_refused", [](const IterationRow& r) { return csv_field(r.step.roll_back.refused); }},
+    {"replayed_iterations", [](const IterationRow& r) { return csv_field(r.step.roll_back.replayed_iterations); }},
+    {"t_rollback_ms", [](const IterationRow& r) { return csv_field(r.step.timings.roll_back_ms); }},
     // The motion model (Rules 23–27, spec §5.10): the tracked robot in its frame.
     {"mm_active", [](const IterationRow& r) { return csv_field(r.step.motion_model != nullptr); }},
     {"mm_distance", [](const IterationRow& r) { return mm_field(r, [](const auto& s) { return s.distance; }); }},
@@ -91,6 +98,10 @@ class RelativePlane final : public PlaneAlgorithm {
   void step(const PlaneFrame& frame) override { last_ = slam_.step(frame); }
 
   void read_out() override {
+    totals_.hints += last_.roll_back.hints;
+    totals_.rollbacks += last_.roll_back.rollbacks;
+    totals_.refused += last_.roll_back.refused;
+    totals_.replayed_iterations += last_.roll_back.replayed_iterations;
     assignment_.assign(last_.assignment.begin(), last_.assignment.end());
     map_.clear();
     for (std::size_t id = 0; id < last_.map.size(); ++id)
@@ -151,6 +162,7 @@ class RelativePlane final : public PlaneAlgorithm {
       links.row(id_field(l.from), id_field(l.to), joined(l.planes), l.created_iteration, l.first);
     links.close();
     write_edges(dir / "edges.csv");
+    write_roll_backs(dir / "rollbacks.csv");
     // E02 (Fig 68): Rule 13's four offset series of one growing/shrinking pair, with key points only.
     if (slam_.options().key_points) write_key_point_pair_diagnostic(dir, slam_.planes(), slam_.options());
   }
@@ -176,6 +188,28 @@ class RelativePlane final : public PlaneAlgorithm {
     edges.close();
   }
 
+  // rollbacks.csv (spec §7.3): every roll-back request (Rules 33, 34), the plane, group and hint
+  // level that set it off (empty for a forced one), how many iterations it replayed, and whether
+  // it was served (too_old, nesting: refused).
+  void write_roll_backs(const std::filesystem::path& path) const {
+    CsvWriter out(path, {"iteration_requested", "target_iteration", "plane", "group", "level", "replayed_iterations",
+                         "outcome"});
+    for (const plane::RollBackEvent& e : slam_.roll_back_log())
+      out.row(e.iteration_requested, e.target_iteration, id_field(e.plane), id_field(e.xpoint),
+              e.level > 0 ? csv_field(e.level) : CsvField{}, e.replayed_iterations, std::string(to_string(e.outcome)));
+    out.close();
+  }
+
+ public:
+  std::vector<std::string> summary_columns() const override {
+    return {"hints", "rollbacks", "rollbacks_refused", "replayed_iterations"};
+  }
+  void summary_fields(std::vector<CsvField>& out) const override {
+    out.insert(out.end(), {csv_field(totals_.hints), csv_field(totals_.rollbacks), csv_field(totals_.refused),
+                           csv_field(totals_.replayed_iterations)});
+  }
+
+ private:
   // Whether one of the chain edges of group x that compare `plane` tied both diagonals (Rule 15).
   bool ambiguous_in(int x, int plane) const {
     const plane::RltXPoint& group = slam_.xpoints().at(static_cast<std::size_t>(x));
@@ -188,6 +222,7 @@ class RelativePlane final : public PlaneAlgorithm {
   std::string name_ = "relative_plane";
   RltXPointsS slam_;
   RelativePlaneStep last_;
+  plane::RollBackCounts totals_;  // Rules 31–34 over the run (summary.csv)
   std::vector<int> assignment_;
   std::vector<MappedPlane> map_;
 };

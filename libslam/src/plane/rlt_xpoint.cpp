@@ -195,6 +195,33 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
   }
 }
 
+void RltXPoint::release_scratch() {
+  scratch_observations_ = {};
+  observations_filled_ = {};
+  scratch_common_ = {};
+}
+
+void RltXPoint::check_interval_size(std::vector<RltPlane>& planes, const RollBackOptions& options, int iteration,
+                                    std::vector<PlaneId>& failed) const {
+  if (motion_model()) return;  // one plane, tracked, compared with nothing
+  for (std::size_t k = 1; k < chain_.size(); ++k) {
+    RltXPointRef& ref = *planes[chain_[k]].ref(id_);
+    if (ref.confirmed || ref.hinted) continue;
+    // Rule 31: seen together with the plane it is compared with; or thesis 4.5 CheckIntervalSize,
+    // "the interval the RltPlane's RltXPointRef is calculated in": the placing comparison's piece.
+    const CompareResult& placing = edges_[k - 1];
+    const int covered =
+        options.measure == IntervalMeasure::Shared
+            ? RltPlaneInterval::common_size(planes[chain_[k - 1]].intervals(), planes[chain_[k]].intervals())
+            : (placing.valid ? placing.samples : 0);
+    if (covered >= options.min_interval) {
+      ref.confirmed = true;
+      continue;
+    }
+    if (iteration - ref.join_iteration >= options.confirm_after) failed.push_back(chain_[k]);
+  }
+}
+
 const std::vector<PlaneObject>& RltXPoint::observations(const std::vector<RltPlane>& planes, std::size_t k,
                                                          const RltPlaneInterval* within) {
   if (!observations_filled_[k]) {
@@ -234,10 +261,14 @@ void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const Re
   if (!same_chain || std::ranges::all_of(edges_, &CompareResult::valid)) return;
   edges_ = snapshot_->edges;
   for (std::size_t k = 0; k < n; ++k) {
+    // Rule 36's reserves are newer than the snapshot, and a membership's Rule 31/32 verdict
+    // belongs to it, not to the computation restored.
     RltXPointRef& ref = *planes[chain_[k]].ref(id_);
     RltXPointRef restored = snapshot_->refs[k];
-    restored.reserve = std::move(ref.reserve);  // Rule 36's reserves are newer than the snapshot
+    restored.reserve = std::move(ref.reserve);
     restored.reserve_partner = ref.reserve_partner;
+    restored.confirmed = ref.confirmed;
+    restored.hinted = ref.hinted;
     ref = std::move(restored);
   }
 }

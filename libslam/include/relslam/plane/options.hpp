@@ -124,6 +124,16 @@ struct RuleSwitches {
   // Measured: E20 (Map E, seeds 1–5) and Map D two loops give identical runs on and off — the
   // links are added rarely and have not yet changed a current group here.
   bool pseudo_merge = true;
+  // Rules 31–34 (thesis 4.3.7.2, walkthrough 4.5; spec §5.11): a plane whose comparison in a
+  // group still covers fewer than rollback.min_interval iterations rollback.confirm_after
+  // iterations after it joined gets a hint (first: not this group; then: only a group of its own;
+  // then: not on the map), and the algorithm rolls back to the iteration it joined and replays
+  // the stored inputs with the hint (Figs 94–96: a plane seen as another leaves, compared over a
+  // few iterations, barely mapped). Off: every plane stays in the groups it joined. [T: on;
+  // C: off] On changes the measured runs of Maps D and E with noise, without a clear gain yet
+  // (README, E17: roll-backs, map and pose errors with it off and on); off, like reorder_planes,
+  // so what was measured without it stays reproducible.
+  bool interval_check = false;
 };
 
 // The motion model (Rules 23–27, thesis 4.3.6; spec §5.10, §5.14).
@@ -149,6 +159,46 @@ struct ReorderOptions {
   int period = 200;
   // The best path is searched exactly up to this many planes, greedily beyond [R].
   int exact_max_planes = 12;
+};
+
+// What Rules 31/32 measure of the comparison that places a plane (its chain edge from the plane
+// before it).
+enum class IntervalMeasure : unsigned char {
+  // The iterations the two planes were seen together: Rule 31, "viewable together for a minimum
+  // amount of time" [T]. A plane seen just as its partner leaves (Figs 94–95) fails it.
+  Shared,
+  // The iterations the comparison averaged, one growth-phase piece (Rule 18): the walkthrough's
+  // "the interval it is calculated in" [T]. Stricter: two planes seen together throughout but
+  // growing and shrinking by turns fail it too.
+  Piece,
+};
+
+// Hints and roll-back (Rules 31–34, thesis 4.3.7.2, 4.4.3.15–17; spec §5.11, §5.14).
+struct RollBackOptions {
+  // Rules 31/32: a membership is confirmed once the comparison placing the plane (its chain edge
+  // from the previous plane) covers this many iterations [R, I_min] ...
+  int min_interval = 20;
+  // ... counted as `measure` says [C: shared, Rule 31's wording; measured (README, E17) both give
+  // the same maps of Maps D and E, shared with fewer roll-backs: 4 against 6 on Map D, large frustum].
+  IntervalMeasure measure = IntervalMeasure::Shared;
+  // ... and judged this many iterations after the plane joined: earlier its interval may still
+  // grow [R, T_confirm].
+  int confirm_after = 60;
+  // Rule 33: a copy of the whole state is kept every this many iterations; a roll-back restores
+  // the newest copy before its target and replays from there, so a shorter period replays less
+  // and copies more [C; README E17 gives the time and memory it costs].
+  int checkpoint_period = 50;
+  // The oldest reachable iteration, iterations back: the PlaneRecord buffer of thesis 4.4.3.17,
+  // as deep as RltPlane's circular array [R, storage_capacity]; a roll-back further back is
+  // refused and counted (spec §5.11.3).
+  int max_depth = 1200;
+  // Roll-backs in one step (nested: requested while replaying). Each plane has at most three
+  // hint levels, so this is only a safety net; beyond it requests are refused and counted [C].
+  int max_nesting = 32;
+  // Testing hook [C]: every this many iterations a roll-back with no hint to force_depth
+  // iterations back, whose replay must give the same run (spec §8 roll-back idempotence). 0: never.
+  int force_every = 0;
+  int force_depth = 10;
 };
 
 struct RelativePlaneOptions {
@@ -208,6 +258,8 @@ struct RelativePlaneOptions {
   MotionModelOptions motion_model;
   // Part 3 (thesis 4.3.7): Rule 30's re-ordering of comparison chains; with key_points only.
   ReorderOptions reorder;
+  // Part 3 (thesis 4.3.7.2): the interval checks, hints and roll-back of rules.interval_check.
+  RollBackOptions rollback;
   RuleSwitches rules;
 };
 
@@ -219,6 +271,8 @@ constexpr Rule21Order kRule21Orders[] = {Rule21Order::Walkthrough, Rule21Order::
 std::string_view to_string(Rule21Order order);  // "walkthrough", "new_group_first"
 constexpr ChainOrder kChainOrders[] = {ChainOrder::Creation, ChainOrder::Reversed};
 std::string_view to_string(ChainOrder order);  // "creation", "reversed"
+constexpr IntervalMeasure kIntervalMeasures[] = {IntervalMeasure::Shared, IntervalMeasure::Piece};
+std::string_view to_string(IntervalMeasure measure);  // "shared", "piece"
 
 // The scenario keys of MatchBounds (relative_plane.local_match.*, relative_plane.global_match.*).
 // Rule 1 needs the gap test (`local`): without it every RltPlane ever seen is a candidate.
@@ -270,6 +324,8 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
           "Rule 19: key points only in their own interval, else recomputed there (Figs 91/92)");
   f.field("size_correction", r.size_correction,
           "Rule 28: chained planes moved to each edge's size before composing (Fig 87)");
+  f.field("interval_check", r.interval_check,
+          "Rules 31-34: a plane compared over too few iterations gets a hint; roll back and replay [C: off]");
 }
 
 // The scenario keys of MotionModelOptions (relative_plane.motion_model.*).
@@ -292,6 +348,27 @@ void describe(OptionsOf<ReorderOptions> auto& r, auto& f) {
   // 2^n·n² work: 20 planes is already ~4e8 steps.
   f.field("exact_max_planes", r.exact_max_planes, "the best chain is searched exactly up to this many planes",
           at_least(2), at_most(20));
+}
+
+// The scenario keys of RollBackOptions (relative_plane.rollback.*).
+void describe(OptionsOf<RollBackOptions> auto& r, auto& f) {
+  f.field("min_interval", r.min_interval,
+          "Rules 31/32: a membership is confirmed once its comparison covers this many iterations", at_least(1));
+  f.choice("measure", r.measure,
+           "... counted as shared (the two planes seen together, Rule 31) or piece (the growth phase compared)",
+           kIntervalMeasures);
+  f.field("confirm_after", r.confirm_after, "... and judged this many iterations after the plane joined",
+          at_least(1));
+  f.field("checkpoint_period", r.checkpoint_period, "Rule 33: a copy of the state every this many iterations",
+          at_least(1));
+  // A roll-back reaches back max_depth iterations only if a copy that old is kept.
+  f.field("max_depth", r.max_depth, "the oldest iteration a roll-back may reach, iterations back",
+          at_least(r.checkpoint_period, "checkpoint_period"));
+  f.field("max_nesting", r.max_nesting, "roll-backs in one step at most (a safety net)", at_least(1));
+  f.field("force_every", r.force_every, "testing: a roll-back with no hint every this many iterations (0: never)",
+          at_least(0));
+  f.field("force_depth", r.force_depth, "... to this many iterations back", at_least(0),
+          at_most(r.max_depth, "max_depth"));
 }
 
 // The scenario keys of KeyPointTies (relative_plane.key_point_ties.*).
@@ -348,6 +425,7 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
            "Rule 21: walkthrough (current, neighbours, new group) or new_group_first", kRule21Orders);
   f.nested("motion_model", o.motion_model);
   f.nested("reorder", o.reorder);
+  f.nested("rollback", o.rollback);
   f.nested("rules", o.rules);
 }
 

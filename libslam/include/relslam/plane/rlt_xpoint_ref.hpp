@@ -36,6 +36,12 @@ struct RltXPointRef {
   // gives the plane another parent (Rule 30).
   std::optional<CompareResult> reserve;
   PlaneId reserve_partner = kNone;
+  // Rules 31/32 (CheckIntervalSize): the comparison placing the plane reached the minimum
+  // interval, so it is not checked again ...
+  bool confirmed = false;
+  // ... or it did not in time and a hint was sent back (Rule 34); still here only when that
+  // roll-back was refused, and then not checked again either.
+  bool hinted = false;
 };
 
 // Spec §5.12, the test Rules 35 and 36 share: a result replaces a saved one when it is larger by
