@@ -386,7 +386,7 @@ def e18(run):
     until = "throughout" if first_bad is None else f"until iteration {first_bad}"
     valid = np.nonzero(d["pose_valid"] == 1)[0]
     last = f", last valid pose at iteration {d['iteration'][valid[-1]]:.0f}" if len(valid) else ""
-    return (f"Rule 30 off (the default; on gives the same run here): pose exact {until}{last}; {edges_tied} tied chain edge(s), "
+    return (f"distance test on, Rule 30 off (the defaults): pose exact {until}{last}; {edges_tied} tied chain edge(s), "
             f"{claims_tied} tied key-point claims; {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
             f"final mean map error {s['final_mean_map_error']:.3g}")
 
@@ -468,8 +468,8 @@ ISSUE13_CLAIMS = [
     ("E15 Map E loop closure: Rules 4 and 19 (Figs 90-92)", "a duplicate kept on purpose; without the first-reading "
      "resize a wrong global alignment; without Rule 19 planes too small or badly placed (4.3.6)",
      ["p-e15-loop-closure-map-e"], e15),
-    ("E18 collinear pieces, Rule 30 off (Fig 97)", "the collinear pair ties both diagonals and misplaces a plane; "
-     "Rule 30 fixes it (4.3.7.1)", ["p-e18-collinear"], e18),
+    ("E18 collinear pieces (Fig 97)", "the collinear pair ties both diagonals and misplaces a plane; "
+     "a distance test or Rule 30 fixes it (4.3.7.1)", ["p-e18-collinear"], e18),
     ("E19 save system, 1200-slot store (Figs 98-100)", "without the save system planes vanish after the "
      "wrap-around; with it, or a much bigger store, they stay; either of Rules 35 and 36 is enough (4.3.7.3)",
      ["p-e19-save-system"], e19),

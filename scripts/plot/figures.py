@@ -1238,8 +1238,8 @@ def collinear_run(run):
 
 
 def collinear_figure(fig, run):
-    """Fig 97 (E18): Map D with the small frustum, Rule 30 off (its default): exact until the collinear
-    pieces tie, then the map error and the pose go."""
+    """Fig 97 (E18): Map D with the small frustum, the defaults (the distance test on, Rule 30 off): the
+    collinear pieces tie both diagonals (Rule 15) and the distance test takes the real ends."""
     d, first_bad, ambiguous_claims, ambiguous_edges = collinear_run(run)
     axes = fig.subplots(2, 1, sharex=True)
     axes[0].plot(d["iteration"], d["map_error"], lw=1, label="map error (sum of e_ends)")
@@ -1369,7 +1369,8 @@ ISSUE13_FIGURES = [
            ("p-e17-interval-check",),
            P(plane_variants, columns=("map_error", "planes_in_map", "rollbacks"),
              ylabels=("map error (units)", "planes on the map", "roll-backs"))),
-    Figure(97, "collinear pieces on Map D, small frustum, Rule 30 off, E18", ("p-e18-collinear",),
+    Figure(97, "collinear pieces on Map D, small frustum, Rule 15's tie decided by the distance test, E18",
+           ("p-e18-collinear",),
            collinear_figure),
     Figure(98, "planes on the map per iteration, save system variants, E19", E19, planes_on_map_figure),
     Figure(99, "final maps without and with the save system (Rules 35, 36), E19", E19,

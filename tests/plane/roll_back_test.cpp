@@ -103,7 +103,11 @@ struct StepCopy {
 };
 
 StepCopy copy_of(const RelativePlaneStep& s) {
-  StepCopy c{s.world_T_robot, s.pose_valid, s.pose_planes, {s.assignment.begin(), s.assignment.end()}};
+  StepCopy c;
+  c.pose = s.world_T_robot;
+  c.pose_valid = s.pose_valid;
+  c.pose_planes = s.pose_planes;
+  c.assignment.assign(s.assignment.begin(), s.assignment.end());
   for (const MapPlane& m : s.map) {
     c.map.push_back(m.plane);
     c.mapped.push_back(m.mapped);
@@ -389,7 +393,9 @@ TEST(RltXPointsS, HintForAnotherGroupChangesNothing) {
     if (t == 70) slam.send_hint({HintLevel::NotInX, slam.identity(fate_of(slam, scene.world, 2).plane), 48, 5});
     const RelativePlaneStep s = slam.step(scene.world.frames[t]);
     steps.push_back(copy_of(s));
-    if (t == 70) EXPECT_EQ(s.roll_back.rollbacks, 1);
+    if (t == 70) {
+      EXPECT_EQ(s.roll_back.rollbacks, 1);
+    }
   }
   expect_same_runs(plain.steps, steps);
 }
