@@ -19,14 +19,6 @@ using test::read_csv;
 using test::run_relslam;
 using Table = test::CsvTable;
 
-std::vector<std::string> run_args(const std::string& scenario, const std::filesystem::path& out,
-                                  const std::vector<std::string>& settings) {
-  std::vector<std::string> args = {"run", test::source_path("scenarios/" + scenario).string(), "--out", out.string(),
-                                   "-q"};
-  for (const std::string& s : settings) args.insert(args.end(), {"--set", s});
-  return args;
-}
-
 // Measured times: the only columns two runs of the same input may differ in.
 bool timing(const std::string& column) {
   return column == "runtime_ms" || column.rfind("t_", 0) == 0 || column.rfind("runtime_", 0) == 0 ||
@@ -56,9 +48,9 @@ TEST(RollBackRun, ForcedRollBacksWithoutHintChangeNoFile) {
                                          "planar.iterations=900"};
   std::vector<std::string> forced = base;
   forced.insert(forced.end(), {"relative_plane.rollback.force_every=40", "relative_plane.rollback.force_depth=30"});
-  auto r = run_relslam(run_args("p-room.json", dir / "plain", base));
+  auto r = run_relslam(test::scenario_run_args("p-room.json", dir / "plain", base));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = run_relslam(run_args("p-room.json", dir / "forced", forced));
+  r = run_relslam(test::scenario_run_args("p-room.json", dir / "forced", forced));
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
   const std::set<std::string> counts = {"rollbacks", "replayed_iterations"};
@@ -99,9 +91,10 @@ TEST(RollBackRun, EveryRollBackEndsAndHintLevelsStayAtMostThreeOverSeeds) {
     for (int seed = 1; seed <= 3; ++seed) {
       SCOPED_TRACE(scenario + " seed " + std::to_string(seed));
       const std::filesystem::path out = dir / (scenario + std::to_string(seed));
-      const auto r = run_relslam(run_args(scenario, out,
-                                          {"relative_plane.key_points=true", "relative_plane.rules.interval_check=true",
-                                           "planar.iterations=1000", "seed=" + std::to_string(seed), extra}));
+      const auto r = run_relslam(
+          test::scenario_run_args(scenario, out,
+                                  {"relative_plane.key_points=true", "relative_plane.rules.interval_check=true",
+                                   "planar.iterations=1000", "seed=" + std::to_string(seed), extra}));
       ASSERT_EQ(r.exit_code, 0) << r.err;
       const Table summary = read_csv(out / "summary.csv");
       EXPECT_EQ(summary.text(0, "status"), "ok");
@@ -131,7 +124,8 @@ TEST(RollBackRun, IntervalChecksOnSameSeedGivesTheSameFiles) {
   test::ScratchDir dir;
   const std::vector<std::string> settings = {"relative_plane.key_points=true",
                                              "relative_plane.rules.interval_check=true", "planar.iterations=1000"};
-  for (const char* run : {"a", "b"}) ASSERT_EQ(run_relslam(run_args("p-room.json", dir / run, settings)).exit_code, 0);
+  for (const char* run : {"a", "b"})
+    ASSERT_EQ(run_relslam(test::scenario_run_args("p-room.json", dir / run, settings)).exit_code, 0);
   for (const char* file : {"relative_plane/iterations.csv", "relative_plane/planes.csv", "relative_plane/groups.csv",
                            "relative_plane/rollbacks.csv", "summary.csv"})
     expect_same_table(dir / "a" / file, dir / "b" / file);
