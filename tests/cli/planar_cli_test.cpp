@@ -88,7 +88,7 @@ TEST(PlanarRun, WritesTheFilesAndColumnsOfTheIssue) {
   EXPECT_EQ(summary.text(0, "key_point_accuracy"), "");
 }
 
-// E21 (Fig 67: a completed map): Map D without noise, parts 2 and 3 on, large frustum, one loop
+// E21 (Fig 67: a completed map): Map D without noise, parts 2 and 3 on, small frustum, one loop
 // and the partial second. Every wall is mapped, the pose is exact wherever it is valid, every key
 // point claimed is a real wall end (keypoints.csv, issue 13), and the motion model carries the
 // corners (iterations.csv mm_* columns).

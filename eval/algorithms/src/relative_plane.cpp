@@ -170,11 +170,11 @@ class RelativePlane final : public PlaneAlgorithm {
  private:
   // edges.csv (diagnostic, spec §7.3): each group's last comparison of every chain edge — the piece
   // it used, both planes' lengths there and their canonical sizes in the group (Rule 28's L_e vs
-  // L*, Fig 87), key points, static flags, the Rule 15 tie and the offset.
+  // L*, Fig 87), key points, static flags, the Rule 15 tie, the offset and the chosen pair's σ.
   void write_edges(const std::filesystem::path& path) const {
     CsvWriter edges(path, {"group", "plane1", "plane2", "valid", "interval_start", "interval_end", "samples",
                            "length1", "length2", "canonical1", "canonical2", "kp1", "kp2", "static1", "static2",
-                           "ambiguous", "dx", "dz", "dpsi_deg"});
+                           "ambiguous", "dx", "dz", "dpsi_deg", "sigma"});
     for (const plane::RltXPoint& x : slam_.xpoints())
       for (std::size_t e = 0; e < x.edges().size(); ++e) {
         const plane::CompareResult& c = x.edges()[e];
@@ -183,7 +183,7 @@ class RelativePlane final : public PlaneAlgorithm {
         edges.row(x.id(), x.planes()[e], x.planes()[e + 1], c.valid, c.interval.start, c.interval.end, c.samples,
                   c.length1, c.length2, r1->max_length, r2->max_length, static_cast<int>(c.key_point1),
                   static_cast<int>(c.key_point2), c.static1, c.static2, c.ambiguous, c.delta.translation.x(),
-                  c.delta.translation.y(), c.delta.heading * 180.0 / std::numbers::pi);
+                  c.delta.translation.y(), c.delta.heading * 180.0 / std::numbers::pi, c.sigma);
       }
     edges.close();
   }

@@ -317,6 +317,7 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   }
   // Step B: the planes global matching re-acquired (Rule 21).
   if (options_.key_points && options_.rules.regroup_reacquired && !xpoints_.empty()) regroup_reacquired(result);
+  if (options_.key_points && options_.rules.regroup_unplaced && !xpoints_.empty()) regroup_unplaced(result);
   upkeep_unassigned();
   // Step D: the current group by charting (Rule 22); off, the group last started stays current,
   // as before Rule 22 in the thesis (4.3.5).
@@ -343,6 +344,22 @@ void RltXPointsS::regroup_reacquired(RelativePlaneStep& result) {
     if (grouped) ++result.planes_grouped;
     return grouped || !may_start;
   });
+}
+
+void RltXPointsS::regroup_unplaced(RelativePlaneStep& result) {
+  // Rule 19 extended [C] (options.hpp): a plane in view that is in groups but on no map entry
+  // (last iteration's BuildMap), settled there for unplaced_wait iterations, tries Rule 7 in the
+  // current group and its neighbours — new partners, a fresh comparison, a key point.
+  const std::vector<MapPlane>& map = builder_.map();
+  for (PlaneId p : assignment_) {
+    const RltPlane& plane = planes_[p];
+    if (plane.refs().empty() || static_cast<int>(plane.refs().size()) >= options_.regroup_memberships) continue;
+    if (p < static_cast<PlaneId>(map.size()) && map[p].mapped) continue;
+    const bool settled = std::ranges::all_of(plane.refs(), [&](const RltXPointRef& ref) {
+      return iteration_ - ref.join_iteration >= options_.unplaced_wait;
+    });
+    if (settled && join_group(p)) ++result.planes_grouped;
+  }
 }
 
 void RltXPointsS::chart_current_group() {

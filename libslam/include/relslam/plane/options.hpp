@@ -72,6 +72,13 @@ struct RuleSwitches {
   // compared over, so a plane re-seen whole is computed whole ("plane 5", Figs 80/81). Off:
   // it stays in the groups it had.
   bool regroup_reacquired = true;
+  // Rule 19 extended [C]: a plane none of its groups can place — the only partner it was
+  // compared with is its mirror across a corridor, both cut by the frustum at the same place, so
+  // Rule 15 ties both diagonals and no key point is found (walls 2, 8 and 13 of Map D's small
+  // frustum) — joins the current group or a neighbour like an unassigned plane, once it has been
+  // in its groups for `unplaced_wait` iterations, while it has fewer than regroup_memberships
+  // groups; the new partners give it its key point. Off: the thesis, it stays off the map.
+  bool regroup_unplaced = true;
   // Rule 22: the current group is the one holding most of the planes seen this iteration
   // (RltXPointChart). Off: the group last started stays current.
   bool current_group_chart = true;
@@ -235,6 +242,14 @@ struct RelativePlaneOptions {
   // off the rest of the series (a cut end taken for a static one) are left out of the average
   // [C: on; off is the thesis's plain split].
   bool trim_piece_ends = true;
+  // Rule 13 refined [C]: a comparison whose lowest key-point σ is above this holds no pair of ends
+  // at a fixed offset — one plane had no real end in view (seen cut at both ends as the small
+  // frustum's far corner sweeps it in during a turn, Fig 105's case) — and is invalid, so neither
+  // it nor its size is kept (Rule 36). The bound is the noise's: noise-free runs set 1e-6 (with
+  // same_length 1e-9); with noise no fixed value parts the two (measured: 0.04 keeps Map D's
+  // noise-free turns exact but costs the noisy runs walls, 0.08 misses the turn's 0.07) [T: 0,
+  // every comparison counts].
+  double rigid_sigma = 0;
   // Iterations a pair is compared over (Figs 74/75) [T: Pair].
   IntervalMode interval_mode = IntervalMode::Pair;
   // Which growth-phase piece a pair is compared over: Rule 18's most iterations, or the
@@ -251,6 +266,8 @@ struct RelativePlaneOptions {
   // Rule 21: a re-acquired plane starts a new group only while it belongs to fewer groups than
   // this [R, K_xrefs: the thesis's "a few"]; the order of the attempts is rule21_order.
   int regroup_memberships = 2;
+  // rules.regroup_unplaced: iterations a plane waits in its groups before it counts as unplaced [C].
+  int unplaced_wait = 20;
   Rule21Order rule21_order = Rule21Order::Walkthrough;
   // Part 3 (thesis 4.3.6): the motion model that carries the pose through one partial plane.
   // Runs with key_points only [C]: it grows planes from their static end. So do Rules 21 and 22
@@ -305,6 +322,8 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
   f.field("traverse_to_link", r.traverse_to_link, "Rule 12: link a new group through a traversal of the group graph");
   f.field("regroup_reacquired", r.regroup_reacquired,
           "Rule 21: a plane re-acquired by global matching joins or starts a group of its own");
+  f.field("regroup_unplaced", r.regroup_unplaced,
+          "Rule 19 extended: a plane no group can place joins another group to find its key point [C]");
   f.field("current_group_chart", r.current_group_chart,
           "Rule 22: the current group is the one holding most planes in view");
   f.field("motion_model", r.motion_model, "Rules 23-27: a motion model carries the pose through one partial plane");
@@ -411,6 +430,8 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.nested("growth_phase", o.growth_phase);
   f.field("trim_piece_ends", o.trim_piece_ends,
           "Rule 18 refined: drop samples at a piece's ends whose key-point offset stands off the rest [C]");
+  f.field("rigid_sigma", o.rigid_sigma,
+          "Rule 13 refined: a comparison whose lowest key-point sigma is above this is invalid, units (0: off) [C]");
   f.choice("interval_mode", o.interval_mode, "iterations a pair is compared over (Figs 74/75): pair or group",
            kIntervalModes);
   f.choice("interval_choice", o.interval_choice,
@@ -421,6 +442,8 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
           "part 2: key points, size correction, partial planes in the pose (Rules 13-19, 28) [C: off]");
   f.field("regroup_memberships", o.regroup_memberships,
           "Rule 21: a re-acquired plane starts a new group only with fewer memberships than this", at_least(1));
+  f.field("unplaced_wait", o.unplaced_wait,
+          "rules.regroup_unplaced: iterations in its groups before a plane counts as unplaced [C]", at_least(0));
   f.choice("rule21_order", o.rule21_order,
            "Rule 21: walkthrough (current, neighbours, new group) or new_group_first", kRule21Orders);
   f.nested("motion_model", o.motion_model);

@@ -142,6 +142,7 @@ class RltXPointsS : private RltXPointsState {
   XPointId create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking, PlaneId founder);
   void upkeep_unassigned();
   void regroup_reacquired(RelativePlaneStep& result);
+  void regroup_unplaced(RelativePlaneStep& result);
   void chart_current_group();
   void set_current(XPointId x);
   bool switch_to_group_holding_all();
