@@ -103,14 +103,27 @@ step p-e16-rule29        sweep p-e16-rule29
 step p-e17-interval-check sweep p-e17-interval-check
 
 # Chapter 5 and the companion paper (spec relative_plane_em.md §6.1, E23-E30): points -> EM ->
-# Relative Plane (Figs 46, 105-108, paper Figs 6-8), the EM test bench (Figs 55-61) and EM1 vs
-# EM2 on identical frames (E29). E27 times EM and the algorithm per iteration: one run at a time.
+# Relative Plane (Figs 46, 105-108, paper Figs 6-8; E23's w_ma variants, the E28 noise sweep), the EM
+# test bench (Figs 55-61) and EM1 vs EM2 on identical frames (E29). E27 times EM and the algorithm per
+# iteration: one run at a time.
 step p-em-office         run p-em-office p-em-office $(set_each $(short planar.iterations=1000))
 step p-em-office-noise   run p-em-office-noise p-em-office-noise $(set_each $(short planar.iterations=1000))
+# E23's moving-average variants (Rule 18's w_ma 5, 3, 8) without and with point noise (E24).
+step p-em-office-w-ma    relslam sweep scenarios/p-em-office.json --out "$out/p-em-office-w-ma" --force -q \
+                           --jobs "$jobs" $(set_each $(short planar.iterations=1000))
+step p-em-office-noise-w-ma relslam sweep scenarios/p-em-office-noise.json --out "$out/p-em-office-noise-w-ma" \
+                           --force -q --jobs "$jobs" $(set_each $(short planar.iterations=1000))
 step p-em-room           run p-em-room p-em-room $(set_each $(short planar.loops=1))
 step p-em-room-noise     run p-em-room-noise p-em-room-noise $(set_each $(short planar.loops=1))
 step p-em-demo           relslam sweep scenarios/p-em-demo.json --out "$out/p-em-demo" --force -q --jobs 1 \
                            $(set_each $(short planar.iterations=600))
+# E28: Map E, one loop, σ_pt 0 to 0.2 (seconds a run: quick mode runs one seed instead of three);
+# noise_sweep.py then writes the sweep's noise_sweep.csv.
+noise_sweep() {
+  sweep p-em-noise-sweep --seeds "$([ $quick -eq 1 ] && echo 1 || echo 3)" &&
+    /usr/bin/python3 scripts/plot/noise_sweep.py "$out/p-em-noise-sweep"
+}
+step p-em-noise-sweep    noise_sweep
 step em-bench            relslam em-bench scenarios/p-em-office-noise.json --out "$out/em-bench" --force -q \
                            --seeds "$([ $quick -eq 1 ] && echo 2 || echo 5)"
 step e29-office          relslam em-bench scenarios/p-em-compare-office.json --compare --out "$out/e29-office" \

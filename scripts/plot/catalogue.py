@@ -206,6 +206,16 @@ CATALOGUE = {
                    "3400+ (spec §6.3: well below 33 ms per iteration)."),
     "e29-em-compare": ("EM1 against EM2 on identical point frames (E29; not a thesis figure)",
                        "Thesis 3.5.4: EM algorithm 2 is about twice as fast as EM algorithm 1, with similar quality."),
+    "e23-w-ma": ("Map error per iteration with Rule 18's moving-average window changed (E23, E24; not a thesis "
+                 "figure)",
+                 "Thesis 5.2 (E23): a plane seen briefly during a turn leaves too few iterations for the growth-phase "
+                 "split; \"a possible solution is tested that changes the amount of planes for the moving average "
+                 "calculation ... Although this solves the problem, it would have an adverse effect when working with "
+                 "noisy data\" [ours: w_ma 5 (default) against 3 and 8 on E23 and on E24]."),
+    "e28-noise-sweep": ("Extraction and map against the point noise σ_pt (E28; the paper's text, no figure)",
+                        "Paper §III: with noise on each point the map is still good; as the noise rises the map "
+                        "degrades, and past some level EM has trouble finding planes [ours: Map E, one loop, EM2 "
+                        "with d_in = max(0.05, 3 σ_pt), σ_pt 0 to 0.2]."),
 }
 
 # issue 13 experiments: Relative Plane part 2 (thesis 4.3.3-4.3.7.1; spec E02, E07-E10, E12, E15, E18, E32).

@@ -14,6 +14,7 @@ import os
 import numpy as np
 
 import figures as fg
+import noise_sweep
 import relslam_plot as rp
 
 P = functools.partial
@@ -480,6 +481,8 @@ ISSUE13_CLAIMS = [
 ]
 
 # ---- issue 14 Chapter 5: points -> EM -> Relative Plane --------------------------------------
+EM_TROUBLE = 0.95  # EM "has trouble finding planes" once its frame-mean recall is under this [R]
+
 
 def em_map(run):
     """A Chapter 5 run's map (verdict as Chapter 4's) and its extraction's frame means."""
@@ -549,6 +552,39 @@ def e29_speed(*runs):
     return "; ".join(cells)
 
 
+def e23_w_ma(*sweeps):
+    """Each moving-average window of Rule 18 (the sweeps' variants, first seed) on E23 and E24: the map
+    beside the default's."""
+    cells = []
+    for run in sweeps:
+        run.file("sweep.csv")
+        maps = []
+        for (name,), folders in fg.plane_sweep(run.path):
+            s = plane_summary(run, os.path.relpath(folders[0], run.path))
+            maps.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
+                        f"{s['duplicates']:.0f} duplicate(s), final mean map error {s['final_mean_map_error']:.3g}, "
+                        f"pose valid {100 * s['pose_valid_fraction']:.1f} %")
+        cells.append(f"{os.path.basename(run.path)}: " + "; ".join(maps))
+    return " — ".join(cells)
+
+
+def e28_noise(run):
+    """E28 from noise_sweep.csv: per σ_pt the extraction and the map, then whether the map degrades
+    and from which σ_pt EM's recall falls under EM_TROUBLE."""
+    run.file("noise_sweep.csv")
+    t = noise_sweep.read(run.path)
+    sigma, error, recall = t["point_sigma"], t["final_mean_map_error"], t["em_recall"]
+    cells = [f"σ_pt {s:g}: EM recall {r:.3g}, precision {p:.3g}, normal error {n:.2g}°; map error {e:.3g}, "
+             f"{w:.1f} of {ws:.0f} walls, pose valid {100 * v:.0f} %"
+             for s, r, p, n, e, w, ws, v in zip(sigma, recall, t["em_precision"], t["mean_normal_err_deg"], error,
+                                                t["walls_mapped"], t["walls_seen"], t["pose_valid_fraction"])]
+    trouble = sigma[recall < EM_TROUBLE]
+    return (f"{int(t['seeds'].min())} seed(s) per σ_pt; map error {error[0]:.3g} at σ_pt {sigma[0]:g}, "
+            f"{error[-1]:.3g} at {sigma[-1]:g} ({'degrades' if error[-1] > error[0] else 'does not degrade'}); "
+            + (f"EM recall under {EM_TROUBLE:g} from σ_pt {trouble[0]:g}" if len(trouble) else
+               f"EM recall never under {EM_TROUBLE:g}") + " — " + "; ".join(cells))
+
+
 # (quantity, thesis value, run folders, claim function)
 CLAIMS = [
     ("loop length / iterations (S-F8)", "≈1145 units / ≈3800", ["s-f8"], loop),
@@ -613,6 +649,11 @@ CLAIMS = [
      "unattached; the defaults avoid these (3.5.4)", ["em-bench"], e30_bench),
     ("E29 EM2 vs EM1 on identical frames", "EM2 about twice as fast as EM1, similar quality (3.5.4)",
      ["e29-office", "e29-room"], e29_speed),
+    ("E23 moving-average window w_ma (Rule 18), E23 and E24", "changing the moving-average window fixes the "
+     "noise-free turn error but has an adverse effect with noisy data (5.2)",
+     ["p-em-office-w-ma", "p-em-office-noise-w-ma"], e23_w_ma),
+    ("E28 noise sweep, Map E, EM2", "the map degrades as the noise rises; past some level EM has trouble finding "
+     "planes (paper §III)", ["p-em-noise-sweep"], e28_noise),
 ] + ISSUE13_CLAIMS + ISSUE15_CLAIMS
 
 

@@ -23,6 +23,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import catalogue
+import noise_sweep
 import relslam_plot as rp
 
 FIGSIZE, DPI = (10, 6), 100  # 1000 x 600 pixels; plot_test.sh checks it
@@ -1683,6 +1684,57 @@ def em_compare(fig, *runs, labels):
     return "; ".join(shows)
 
 
+def w_ma_figure(fig, *sweeps, labels):
+    """Extra (E23 w_ma): the map error per iteration of each moving-average window, one panel per sweep
+    (Map D without and with point noise)."""
+    axes = np.atleast_1d(fig.subplots(len(sweeps), 1, sharex=True))
+    shows = []
+    for ax, sweep, label in zip(axes, sweeps, labels):
+        series = sweep_series(sweep, ["mean_map_error"], algorithm=PLANE)
+        cells = []
+        for name, d in series.items():
+            s = count_summary(variant_folder_of(sweep, name))
+            ax.plot(d["iteration"], d["mean_map_error"], lw=1, label=f"{name}: final {s['final_mean_map_error']:.3g}, "
+                    f"{s['walls_mapped']:.0f}/{s['walls_seen']:.0f} walls, pose valid "
+                    f"{100 * s['pose_valid_fraction']:.0f} %")
+            cells.append(f"{name} final mean map error {s['final_mean_map_error']:.3g}, {s['walls_mapped']:.0f} of "
+                         f"{s['walls_seen']:.0f} walls, pose valid {100 * s['pose_valid_fraction']:.0f} %")
+        ax.set_yscale("log")
+        finish(ax, "iteration" if ax is axes[-1] else "", MAP_ERROR)
+        ax.set_title(label, fontsize=9)
+        shows.append(f"{label}: " + ", ".join(cells))
+    return "; ".join(shows)
+
+
+def noise_sweep_figure(fig, sweep):
+    """Extra (E28): extraction and map against the point noise σ_pt, from the sweep's noise_sweep.csv
+    (scripts/plot/noise_sweep.py): recall, precision and normal error of EM; map error, walls mapped
+    and the pose-valid share of the Relative Plane map."""
+    t = noise_sweep.read(sweep)
+    sigma = t["point_sigma"]
+    (em, normal), (err, share) = fig.subplots(2, 2, sharex=True)
+    em.plot(sigma, t["em_recall"], "o-", label="EM recall (frame mean)")
+    em.plot(sigma, t["em_precision"], "s--", label="EM precision (frame mean)")
+    finish(em, "", "SegComp score at 0.8")
+    normal.plot(sigma, t["mean_normal_err_deg"], "o-", color="C2", label="normal error of correct planes")
+    finish(normal, "", "mean normal error (°)")
+    err.errorbar(sigma, t["final_mean_map_error"], yerr=np.nan_to_num(t["final_mean_map_error_std"]), fmt="o-",
+                 color="C3", capsize=3, label="final mean map error (± std over seeds)")
+    finish(err, "point noise σ_pt (units)", MAP_ERROR)
+    share.plot(sigma, t["walls_mapped"] / t["walls_seen"], "o-", color="C4", label="walls mapped / seen")
+    share.plot(sigma, t["pose_valid_fraction"], "s--", color="C5", label="iterations with a valid pose")
+    share.set_ylim(-0.05, 1.05)
+    finish(share, "point noise σ_pt (units)", "share")
+    seeds = int(t["seeds"].min())
+    return f"{seeds} seed(s) per σ_pt — " + "; ".join(
+        f"σ_pt {s:g}: recall {r:.3g}, precision {p:.3g}, normal error {n:.3g}°, map error {e:.3g}, "
+        f"{w:.1f} of {ws:.0f} walls, pose valid {100 * v:.0f} %"
+        for s, r, p, n, e, w, ws, v in zip(sigma, t["em_recall"], t["em_precision"], t["mean_normal_err_deg"],
+                                           t["final_mean_map_error"], t["walls_mapped"], t["walls_seen"],
+                                           t["pose_valid_fraction"]))
+
+
+E23_W_MA = ("p-em-office-w-ma", "p-em-office-noise-w-ma")
 E27 = ("p-em-demo",)
 E29 = ("e29-office", "e29-room")
 CHAPTER5 = [
@@ -1712,6 +1764,10 @@ CHAPTER5 = [
     Figure("e27-timing", "ms per iteration, EM and Relative Plane (E27)", E27, demo_timing),
     Figure("e29-em-compare", "EM1 vs EM2 (and the baseline) on identical frames (E29)", E29,
            P(em_compare, labels=("Map D, small frustum", "Map E, large frustum"))),
+    Figure("e23-w-ma", "the moving-average window w_ma of Rule 18 without and with point noise (E23, E24)",
+           E23_W_MA, P(w_ma_figure, labels=("Map D, points, no noise (E23)", "Map D, points, σ_pt 0.05 (E24)"))),
+    Figure("e28-noise-sweep", "extraction and map against the point noise, Map E, EM2 (E28)", ("p-em-noise-sweep",),
+           noise_sweep_figure),
 ]
 
 

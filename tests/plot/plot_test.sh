@@ -103,8 +103,25 @@ make_run p-em-demo sweep scenarios/p-em-demo.json --set planar.iterations=100 --
 make_run em-bench em-bench scenarios/p-em-office-noise.json --seeds 2
 make_run e29-office em-bench scenarios/p-em-compare-office.json --compare --set planar.iterations=40
 make_run e29-room em-bench scenarios/p-em-compare-room.json --compare --set planar.iterations=40
+# E23's w_ma variants on E23 and E24, and E28's noise sweep (two seeds, so noise_sweep.csv averages them).
+make_run p-em-office-w-ma sweep scenarios/p-em-office.json --set planar.iterations=150
+make_run p-em-office-noise-w-ma sweep scenarios/p-em-office-noise.json --set planar.iterations=150
+make_run p-em-noise-sweep sweep scenarios/p-em-noise-sweep.json --set planar.iterations=60 --seeds 2
+"$python" "$plot/noise_sweep.py" "$runs/p-em-noise-sweep" >/dev/null || die "noise_sweep.py failed"
+noise_csv=$runs/p-em-noise-sweep/noise_sweep.csv
+expect "noise_sweep.csv: header" [ "$(head -1 "$noise_csv")" = "variant,point_sigma,inlier_distance,seeds,frames,\
+em_recall,em_precision,mean_normal_err_deg,em_median_ms,final_mean_map_error,final_mean_map_error_std,walls_mapped,walls_seen,\
+duplicates,pose_valid_fraction" ]
+expect "noise_sweep.csv: one row per σ_pt, ascending, two seeds each" [ "$(tail -n +2 "$noise_csv" | cut -d, -f2,4 | \
+  tr '\n' ' ')" = "0,2 0.025,2 0.05,2 0.1,2 0.15,2 0.2,2 " ]
+expect "noise_sweep.csv: noise-free EM normal error under 0.01°" \
+  awk -F, 'NR == 2 { exit !($8 != "" && $8 < 0.01) }' "$noise_csv"
+out=$("$python" "$plot/noise_sweep.py" "$work/empty" 2>&1)
+expect "noise_sweep.py on a folder without a sweep: exit 1" [ $? -eq 1 ]
+expect "noise_sweep.py names the missing sweep.csv" grep -q "empty/sweep.csv: file not found" <<<"$out"
 
 expected+=(46 55 56 57 58 59 60 61 105 106 107 108 paper6 paper7 paper8 e27-timing e29-em-compare)  # Chapter 5
+expected+=(e23-w-ma e28-noise-sweep)
 expected+=(110 111 112 113 114 115 116 117 $(seq 119 126) $(seq 130 152) $(seq 167 171) components)
 if [ -d "$vp_data" ]; then
   make_run vp-1181 victoria-park --data "$vp_data" --window 1181:1230
@@ -182,7 +199,8 @@ for row in "loop length" "RltPoints / groups / final groups" "visible points per
   "E12 Rule 28" "E15 Map E loop closure" "E18 collinear pieces" "E32 time per iteration" \
   "E19 save system" "E20 pseudo plane merging" \
   "E23 Map D, points" "E24 E23 with point noise" "E25 Map E, points" "E26 E25 with point noise" \
-  "E27 paper demo without noise" "E27 paper demo with noise" "E27 real time including EM" "E30 EM test bench" "E29 EM2 vs EM1"; do
+  "E27 paper demo without noise" "E27 paper demo with noise" "E27 real time including EM" "E30 EM test bench" "E29 EM2 vs EM1" \
+  "E23 moving-average window" "E28 noise sweep"; do
   expect "claims.md row '$row'" grep -q "^| $row" "$claims_md"
 done
 expect "claims.md: E20 compares Rule 37 on and off" \
@@ -198,6 +216,12 @@ expect "claims.md: E29 compares EM1 and EM2 on both maps" \
   grep -q "^| E29 EM2 vs EM1.*| e29-office (40 frames): EM2 .* (EM1/EM2 [0-9.]*).*; e29-room (40 frames): " "$claims_md"
 expect "claims.md: E27 gives ms per iteration of EM and RP" \
   grep -q "^| E27 real time including EM.*| office_no_noise: EM [0-9.e-]* + RP [0-9.e-]* ms median" "$claims_md"
+expect "claims.md: E23's w_ma row gives every window without and with noise" \
+  grep -q "^| E23 moving-average window.*| p-em-office-w-ma: w_ma_3: .* w_ma_5: .* w_ma_8: .* — p-em-office-noise-w-ma: w_ma_3: " \
+  "$claims_md"
+expect "claims.md: E28 reads noise_sweep.csv, two seeds per σ_pt" \
+  grep -q "^| E28 noise sweep.*| 2 seed(s) per σ_pt; map error .* σ_pt 0.2: EM recall .*| \`p-em-noise-sweep/noise_sweep.csv\` |$" \
+  "$claims_md"
 expect "index.html has the paper's Fig 6 caption" grep -q "An example of the simulation used to test the algorithm" "$index"
 expect "claims.md: every simulated row has a number" \
   [ "$(grep -v 'Victoria Park' "$claims_md" | grep -c '| not run |')" -eq 0 ]
