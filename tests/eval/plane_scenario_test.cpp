@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <set>
 #include <vector>
 
@@ -41,6 +42,7 @@ struct IterationScore {
   PlaneMapError map;     // spec §7.2: e_ends against the majority wall, key point to key point
   double map_faced = 0;  // the sum of e_ends with a plane facing away scored against the wall turned round
   int rlt_planes = 0;    // RltPlanes so far
+  bool motion_model = false;  // a motion model carried the pose (Rules 23–27)
 };
 
 struct SimRun {
@@ -53,6 +55,7 @@ struct SimRun {
   std::map<int, PlaneError> final_error;  // RltPlane on the final map -> its error against its wall
   std::map<int, int> final_wall;          // ... and that wall
   std::map<int, int> motion_models_by;    // iteration -> motion models started so far
+  std::map<int, double> longest_seen;     // RltPlane -> its longest observation (Rule 17: its largest size seen)
 };
 
 // e_ends of `mapped` against `wall`, or against the wall seen from behind (ends swapped) when the
@@ -78,12 +81,15 @@ SimRun run_map(const sim::PlanarMap& map, std::uint64_t seed, const RelativePlan
     for (std::size_t i = 0; i < step.assignment.size(); ++i) {
       const int wall = frame.truth.planes[i].wall_id;
       votes.add(step.assignment[i], wall);
+      double& longest = out.longest_seen[step.assignment[i]];
+      longest = std::max(longest, frame.observation.planes[i].length());
       const PlaneObject seen = frame.observation.planes[i].transformed(frame.truth.world_T_robot);
       faces[step.assignment[i]].insert(seen.normal().dot(walls.at(wall).normal()) > 0);
     }
     out.global_matches += step.global_matches;
     IterationScore score;
     score.pose_valid = step.pose_valid;
+    score.motion_model = step.motion_model != nullptr;
     if (step.pose_valid) score.pose = planar_pose_error(step.world_T_robot, frame.truth.world_T_robot);
     mapped.clear();
     for (std::size_t p = 0; p < step.map.size(); ++p) {
@@ -498,6 +504,158 @@ TEST(PlaneScenario, MapDLargeFrustumWithNoiseMapsEveryWallWithinTheNoise) {
     ASSERT_GT(position.size(), 2400u) << "seed " << seed;
     std::ranges::nth_element(position, position.begin() + position.size() / 2);
     EXPECT_LT(position[position.size() / 2], 5 * 0.01) << "seed " << seed;
+  }
+}
+
+// Map E (spec §3.7; paper Fig 5, thesis Figs 69, 83–102), noise-free, its own large frustum, both
+// loops, parts 2 and 3 on with the noise-free constants above (the interval checks off, their
+// default). Every wall is mapped and the run is exact but for two errors the thesis accepts
+// (measured: 2845 of 2881 iterations valid, 1e-14 at all but one):
+//  - Rule 17 maps a plane at the largest size it was seen (spec §5.8, A47), so a plane never
+//    seen whole keeps its key-point end exact and is short by the part never seen. Three are:
+//    the inner block's side walls (walls 6, x = 17, and 9, x = 7; z ∈ [5.5, 10.5], 4.5 beside the
+//    path, so the 35° frustum shows them from z = 2.5 + 4.5 / tan 35° = 8.927 on: at most 1.573 of
+//    5), e_ends ½ (4.5 / tan 35° − 3) = 1.713 each; and plane 0, the start wall seen in part from
+//    the start (7.93 of 23, e_ends 7.54), which on the return becomes a second plane mapped whole
+//    (plane 9, exact): the duplicate the thesis keeps on purpose (Fig 90, E15). The long walls
+//    are never seen whole in one view (at most 20.35 of 23) and are still mapped exactly: the
+//    motion model grows them through the turns (Rule 23) and the chained sizes add up (Rule 28).
+//  - The iteration a motion model ends (1235, the first loop's fourth corner) the pose is
+//    GetPoset's again (Rule 16), and it grows the start wall's observation (plane 9, 19.41 of 23)
+//    from the key point of the motion model's membership, whose interval (1157–1235) reaches
+//    that iteration: key point 1, the west end, which Rule 23 kept while it grew the east end
+//    through the turn. In the observation key point 1 is the frustum's cut and key point 2 the
+//    wall's real end (x = 23.5): grown from the wrong end it is 23 − 19.41 = 3.59 off, averaged
+//    with the east wall's exact pose 1.796 along x, heading exact. From the next iteration Rule 19
+//    finds the key point of the new piece and the pose is exact again. A wrong key point for a
+//    few iterations is what the thesis accepts (Figs 76–79: "about four iterations"); here one.
+//    (Not taking key points from a motion model's membership once it has ended would avoid it.)
+TEST(PlaneScenario, MapENoiseFreeTwoLoopsIsExactButForTheErrorsTheThesisAccepts) {
+  const sim::PlanarMap map = noise_free(map_file("e_motion_room.json"));
+  ASSERT_EQ(map.path.loops, 2);
+  const SimRun run = run_map(map, 1, noise_free_key_points());
+  ASSERT_EQ(run.iterations.size(), 2881u);
+  int valid = 0;
+  std::vector<int> off;  // valid iterations with a pose error above kNoiseFree
+  for (int k = 0; k < static_cast<int>(run.iterations.size()); ++k) {
+    const IterationScore& s = run.iterations[k];
+    if (!s.pose_valid) continue;
+    ++valid;
+    EXPECT_LT(s.pose.heading_rad, kNoiseFree) << "iteration " << k;
+    if (s.pose.position < kNoiseFree) continue;
+    off.push_back(k);
+    // Only where a motion model has just ended, and no more than the wrong end's half gap.
+    EXPECT_TRUE(k > 0 && run.iterations[k - 1].motion_model && !s.motion_model) << "iteration " << k;
+    EXPECT_LT(s.pose.position, 0.5 * (23 - 19.4)) << "iteration " << k;
+  }
+  EXPECT_GE(valid, 2840);
+  EXPECT_LE(off.size(), 1u);  // measured: 1235, 1.796
+
+  // Every wall mapped; one wall (the start wall) twice.
+  EXPECT_EQ(run.mapped_of_wall.size(), map.world.walls.size());
+  std::set<int> duplicated;
+  for (const auto& [wall, mapped] : run.mapped_of_wall) {
+    EXPECT_GE(mapped, 1) << "wall " << wall;
+    if (mapped > 1) duplicated.insert(wall);
+  }
+  EXPECT_EQ(duplicated, std::set<int>{0});
+  // Each plane exact in angle and offset, its key-point end exact, never smaller than seen; the
+  // ones short of their wall exactly at their largest size seen.
+  expect_one_end_exact(run, map);
+  std::set<int> partial_walls;
+  double final_ends = 0;
+  for (const auto& [p, e] : run.final_error) {
+    const sim::Wall& wall = map.world.walls.at(run.final_wall.at(p));
+    const double length = e.length_ratio * (wall.b - wall.a).norm();
+    EXPECT_GE(length, run.longest_seen.at(p) - kNoiseFree) << "plane " << p;
+    final_ends += e.ends;
+    if (e.length_ratio > 1 - kNoiseFree) continue;
+    partial_walls.insert(run.final_wall.at(p));
+    EXPECT_NEAR(length, run.longest_seen.at(p), kNoiseFree) << "plane " << p;
+  }
+  EXPECT_EQ(partial_walls, (std::set<int>{0, 6, 9}));
+  // The final map error is the parts never seen: 7.535 + 2 × 1.713.
+  EXPECT_NEAR(final_ends, 0.5 * (23 - 7.929629983144714) + 4.5 / std::tan(35 * std::numbers::pi / 180) - 3, 1e-6);
+}
+
+// Spec §3.7's checks on Map E, at every corner of both loops (noise-free, as above): as the robot
+// nears a corner the side walls leave the 35° frustum and only the end wall is in view, cut on
+// both sides, from 1.6 units (32 iterations) before the corner; after three iterations without a
+// pose (Rule 26) the motion model starts, and carries the pose through the turn. The end wall
+// widens as the robot turns (Rule 23 grows the plane), until its far end comes into view; then
+// it shrinks a little — the planar frustum's far corners reach further than straight ahead
+// (Fig 89, spec §5.10.4). The next wall comes into view about 47° into the turn: at the
+// corners where it is 13.5 ahead, its end 2 beyond the path, at 82° − 35° = 46.6° (the first
+// iteration past it: 48°); where it is 21.5 ahead, at 49.7° (51°). The motion model ends there:
+// within min_readings − 1 iterations in the first loop (the new plane is grouped, Rules 8, 12), at
+// once in the second (Rule 29: a group holds every plane in view). The fourth corner is the
+// exception: its next wall, the east wall, is on the map already but no group holds it with the
+// start wall, and it is in too many groups to start one (Rule 21's cap), so the motion model lasts
+// until an inner-block wall that may still start a group comes into view 67°–75° into the turn
+// (measured: 11 and 16 iterations late; from the third loop on none may, see plane_memory_test).
+TEST(PlaneScenario, MapEMotionModelStartsAndEndsWhereSpec37Says) {
+  const sim::PlanarMap map = noise_free(map_file("e_motion_room.json"));
+  const sim::PlanarSimulator simulator(map, 1);
+  const SimRun run = run_map(map, 1, noise_free_key_points());
+  const RelativePlaneOptions options = noise_free_key_points();
+  const int n = simulator.iterations();
+  const auto heading = [&](int k) { return simulator.path().world_T_robot(k).heading; };
+  // The turns: [first, last] iterations whose heading differs from the one before.
+  std::vector<std::pair<int, int>> turns;
+  for (int k = 1; k < n; ++k) {
+    if (std::abs(wrap_angle(heading(k) - heading(k - 1))) < 1e-9) continue;
+    if (!turns.empty() && turns.back().second == k - 1)
+      turns.back().second = k;
+    else
+      turns.emplace_back(k, k);
+  }
+  ASSERT_EQ(turns.size(), 8u);
+  for (std::size_t c = 0; c < turns.size(); ++c) {
+    SCOPED_TRACE("corner " + std::to_string(c));
+    const int corner = turns[c].first - 1;  // at the corner, facing the end wall
+    // The motion model around this corner: [start, end), end the first iteration without it.
+    ASSERT_TRUE(run.iterations[corner].motion_model);
+    int start = corner;
+    while (run.iterations[start - 1].motion_model) --start;
+    int end = corner;
+    while (end < n && run.iterations[end].motion_model) ++end;
+    // The end wall alone, cut, from `lone` until the next wall comes into view at `enters`.
+    const sim::PlaneSimFrame at_corner = simulator.frame(corner);
+    ASSERT_EQ(at_corner.truth.planes.size(), 1u);
+    const int end_wall = at_corner.truth.planes[0].wall_id;
+    int lone = corner;
+    while (simulator.frame(lone - 1).truth.planes.size() == 1) --lone;
+    int enters = corner;
+    while (simulator.frame(enters).truth.planes.size() == 1) ++enters;
+    EXPECT_EQ(corner - lone, 32);  // 1.6 units before the corner
+    double previous = 0;
+    bool far_end_seen = false;
+    for (int k = lone; k < enters; ++k) {
+      const sim::PlaneSimFrame f = simulator.frame(k);
+      ASSERT_EQ(f.truth.planes.size(), 1u) << "iteration " << k;
+      EXPECT_EQ(f.truth.planes[0].wall_id, end_wall) << "iteration " << k;
+      const double length = f.observation.planes[0].length();
+      far_end_seen = far_end_seen || f.truth.planes[0].a_is_wall_end || f.truth.planes[0].b_is_wall_end;
+      if (k > corner) {
+        // Widening while both ends are cut; then at most 0.1 shorter an iteration (Fig 89).
+        EXPECT_GT(length, far_end_seen ? previous - 0.1 : previous) << "iteration " << k;
+      }
+      previous = length;
+    }
+    EXPECT_TRUE(far_end_seen);
+    const double entry_deg = std::abs(wrap_angle(heading(enters) - heading(corner))) * 180 / std::numbers::pi;
+    EXPECT_NEAR(entry_deg, c % 2 == 0 ? 48 : 51, 1e-9);  // spec §3.7: "at ψ ≈ 47°"
+    // The motion model's start and end.
+    EXPECT_EQ(start, lone + options.motion_model.start_after - 1);
+    const int late = end - enters;
+    if (c % 4 == 3) {
+      EXPECT_GE(late, 5);
+      EXPECT_LE(late, 20);
+    } else {
+      EXPECT_GE(late, 0);
+      EXPECT_LE(late, c < 4 ? options.min_readings - 1 : 0);
+    }
+    for (int k = start; k < end; ++k) EXPECT_TRUE(run.iterations[k].pose_valid) << "iteration " << k;
   }
 }
 
