@@ -486,9 +486,18 @@ def e11(run):
             f"map")
 
 
+LOST = 1.0  # units: a position error above this is a lost pose, not noise
+
+
 def e13(run):
     seed_folders(run)
-    return "; ".join(fg.grown_text(name, v) for name, v in fg.grown_lengths(run.path).items())
+    stats = fg.grown_lengths(run.path)
+    cells = []
+    for (name,), folders in fg.plane_sweep(run.path):
+        lost = [int(np.sum(fg.iterations(f, ["position_error"], fg.PLANE)["position_error"] > LOST)) for f in folders]
+        cells.append(fg.grown_text(name, stats[name]) + f"; position error above {LOST:g} in "
+                     f"{', '.join(map(str, lost))} iterations (per seed)")
+    return "; ".join(cells)
 
 
 def e14(run):
