@@ -68,7 +68,7 @@ set_each() { local a=(); for kv in "$@"; do a+=(--set "$kv"); done; echo "${a[@]
 
 echo "reproduce: thesis Chapters 4 and 6 into $out ($([ $quick -eq 1 ] && echo quick || echo full) mode); log in $log"
 
-# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01-E10, E12, E15, E18, E21, E31, E32).
+# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01-E22, E31, E32).
 # Seconds each, so quick mode runs them in full; the variant files go through sweep.
 step p-e01-invariance    run p-e01-invariance p-e01-invariance
 step p-four-planes       run p-four-planes p-four-planes
@@ -98,9 +98,14 @@ step p-e32-runtime       relslam sweep scenarios/p-e32-runtime.json --out "$out/
                            $([ $quick -eq 1 ] && echo "--param planar.loops=1,2")
 step p-room              run p-room p-room
 # issue 15 experiments (Relative Plane part 3): E16 (Rule 29), E17 (Rules 31-34: interval checks,
-# hints and roll-back).
+# hints and roll-back); the motion model's E11 (Map E1's first corner), E13 (Rule 23's growth
+# threshold), E14 (frustum shape) and E22 (one partial plane in view). Seconds each.
 step p-e16-rule29        sweep p-e16-rule29
 step p-e17-interval-check sweep p-e17-interval-check
+step p-e11-first-corner  sweep p-e11-first-corner $(seeds)
+step p-e13-grow-threshold sweep p-e13-grow-threshold $(seeds)
+step p-e14-frustum-shape sweep p-e14-frustum-shape
+step p-e22-one-partial-plane run p-e22-one-partial-plane p-e22-one-partial-plane
 
 # Chapter 5 and the companion paper (spec relative_plane_em.md §6.1, E23-E30): points -> EM ->
 # Relative Plane (Figs 46, 105-108, paper Figs 6-8; E23's w_ma variants, the E28 noise sweep), the EM

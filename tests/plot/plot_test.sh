@@ -87,12 +87,20 @@ make_run p-e18-collinear run scenarios/p-e18-collinear.json --set planar.iterati
 make_run p-e32-runtime sweep scenarios/p-e32-runtime.json --set planar.iterations=300
 make_run p-e19-save-system sweep scenarios/p-e19-save-system.json --set planar.iterations=300
 make_run p-e20-pseudo-merge sweep scenarios/p-e20-pseudo-merge.json --set planar.iterations=300
-# issue 15 experiments (Relative Plane part 3): E17's interval checks, hints and roll-back.
+# issue 15 experiments (Relative Plane part 3): E17's interval checks, hints and roll-back; the motion
+# model's E11 (whole, Map E1 is 351 iterations), E13, E14 (whole), E16 and E22 (the second corner is on
+# the shortened run's second "loop").
 make_run p-e17-interval-check sweep scenarios/p-e17-interval-check.json --set planar.iterations=400
+make_run p-e11-first-corner sweep scenarios/p-e11-first-corner.json --seeds 2
+make_run p-e13-grow-threshold sweep scenarios/p-e13-grow-threshold.json --set planar.iterations=300
+make_run p-e14-frustum-shape sweep scenarios/p-e14-frustum-shape.json
+make_run p-e16-rule29 sweep scenarios/p-e16-rule29.json --set planar.iterations=300
+make_run p-e22-one-partial-plane run scenarios/p-e22-one-partial-plane.json --set planar.iterations=600
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
 expected+=(68 $(seq 74 82) 87 90 91 92 97 e32-runtime)  # issue 13 experiments
 expected+=(94 98 99 101 102)  # issue 15: E17, E19, E20
+expected+=(69 83 84 85 86 88 89 93 95 96 100)  # issue 15: E22, E11, E13, E14, E16, E17, E19
 
 # Chapter 5 (points -> EM -> Relative Plane): short runs of E23-E27, the test bench, E29.
 make_run p-em-office run scenarios/p-em-office.json --set planar.iterations=150
@@ -198,6 +206,7 @@ for row in "loop length" "RltPoints / groups / final groups" "visible points per
   "E02 key-point pairs" "E07 interval mode" "E08 wrong key points heal" "E09 plane 5" "E10 Rule 22" \
   "E12 Rule 28" "E15 Map E loop closure" "E18 collinear pieces" "E32 time per iteration" \
   "E19 save system" "E20 pseudo plane merging" \
+  "E11 first motion-model test" "E13 growth threshold" "E14 frustum shape" "E16 Rule 29" "E22 one partial plane" \
   "E23 Map D, points" "E24 E23 with point noise" "E25 Map E, points" "E26 E25 with point noise" \
   "E27 paper demo without noise" "E27 paper demo with noise" "E27 real time including EM" "E30 EM test bench" "E29 EM2 vs EM1" \
   "E23 moving-average window" "E28 noise sweep"; do
@@ -226,6 +235,12 @@ expect "index.html has the paper's Fig 6 caption" grep -q "An example of the sim
 expect "claims.md: every simulated row has a number" \
   [ "$(grep -v 'Victoria Park' "$claims_md" | grep -c '| not run |')" -eq 0 ]
 expect "claims.md: no errors" not grep -q "| error:" "$claims_md"
+expect "claims.md: E11 places the motion model before the turn" \
+  grep -q "^| E11 first motion-model test.*| 2 seed(s): the motion model starts [0-9.]*-[0-9.]* units before the turn" \
+  "$claims_md"
+expect "claims.md: E14's planar small frustum sees past f = 7, the radial one does not" \
+  grep -q "^| E14 frustum shape.*planar_small: .*farthest end 8\.[01][0-9]*;.*radial_small: .*farthest end [67][.0-9]*;" \
+  "$claims_md"
 expect "claims.md: E17 counts the roll-backs with the checks on" \
   grep -q "^| E17 interval checks.*interval_check_off: .* 0 roll-back(s) .*interval_check_on: .* [1-9][0-9]* roll-back(s) from " "$claims_md"
 

@@ -31,6 +31,11 @@ CsvField mm_field(const IterationRow& r, auto value) {
   return s != nullptr && s->iteration == r.step.iteration ? csv_field(value(*s)) : CsvField{};
 }
 
+// A field of the active motion model itself; empty without one.
+CsvField mm_extent(const IterationRow& r, auto value) {
+  return r.step.motion_model != nullptr ? csv_field(value(*r.step.motion_model)) : CsvField{};
+}
+
 const Columns<IterationRow> kIterationColumns = {
     {"pose_valid", [](const IterationRow& r) { return csv_field(r.step.pose_valid); }},
     {"rlt_planes", [](const IterationRow& r) { return csv_field(r.slam.planes().size()); }},
@@ -65,6 +70,11 @@ const Columns<IterationRow> kIterationColumns = {
     {"mm_heading_deg", [](const IterationRow& r) {
        return mm_field(r, [](const auto& s) { return s.mm_T_robot.heading * 180.0 / std::numbers::pi; });
      }},
+    // The one plane it tracks and its extent along the plane's tangent from the plane's map
+    // midpoint at the start (spec §5.10.3 [s_min, s_max]; Rule 23 only ever widens it).
+    {"mm_plane", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.plane(); }); }},
+    {"mm_s_min", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.s_min(); }); }},
+    {"mm_s_max", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.s_max(); }); }},
 };
 
 // One RltPlane as planes.csv sees it, after the recorder's scored columns.
