@@ -30,6 +30,10 @@ struct RltXPointRef {
   double max_length = 0;
   double height = 0;
   int join_iteration = 0;  // when the plane joined the group [R: roll-back, Rule 33]
+  // Written by a motion model (Rule 23): its key point is the end that never moved over the whole
+  // track, not one that is in view at each of its iterations, so the pose (Rule 16) does not
+  // grow an observation from it [C].
+  bool tracked = false;
   // Rule 36 (spec §5.12): the best comparison so far of this plane (second side) with its chain
   // parent `reserve_partner` (first side) — the partner's size and key point at that time
   // included, so Rule 28's size correction stays right when it is used. Cleared when the chain
