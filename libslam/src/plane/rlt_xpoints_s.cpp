@@ -318,6 +318,7 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   // Step B: the planes global matching re-acquired (Rule 21).
   if (options_.key_points && options_.rules.regroup_reacquired && !xpoints_.empty()) regroup_reacquired(result);
   if (options_.key_points && options_.rules.regroup_unplaced && !xpoints_.empty()) regroup_unplaced(result);
+  if (motion_model_active_ && options_.key_points && options_.rules.current_group_chart) end_motion_model_on_the_map();
   upkeep_unassigned();
   // Step D: the current group by charting (Rule 22); off, the group last started stays current,
   // as before Rule 22 in the thesis (4.3.5).
@@ -360,6 +361,27 @@ void RltXPointsS::regroup_unplaced(RelativePlaneStep& result) {
     });
     if (settled && join_group(p)) ++result.planes_grouped;
   }
+}
+
+void RltXPointsS::end_motion_model_on_the_map() {
+  // Spec §5.10.4 [T/P]: the motion model ends once a second plane comes into view. Rule 29 ends
+  // it when one group holds every plane in view, a new group when the second plane is new. When
+  // the second plane is on the map already, in no group with the motion model's plane and at
+  // Rule 21's membership cap, neither comes (Map E's fourth corner from the third loop: the
+  // motion model tracked the start wall on, the pose drifting 0.05 an iteration). [C] Then the
+  // chart's group — the one holding most planes in view — becomes current; the pose is GetPoset's.
+  const std::vector<MapPlane>& map = builder_.map();
+  const PlaneId tracked = motion_models_.back().plane();
+  const bool second_on_map = std::ranges::any_of(assignment_, [&](PlaneId p) {
+    return p != tracked && p < static_cast<PlaneId>(map.size()) && map[p].mapped;
+  });
+  if (!second_on_map) return;
+  chart_.assign(xpoints_.size(), 0);
+  for (PlaneId p : assignment_)
+    for (const RltXPointRef& ref : planes_[p].refs())
+      if (!xpoints_[ref.xpoint].motion_model()) ++chart_[ref.xpoint];
+  const auto best = std::ranges::max_element(chart_);  // the first of the most: the lowest id
+  if (*best > 0) set_current(static_cast<XPointId>(best - chart_.begin()));
 }
 
 void RltXPointsS::chart_current_group() {
