@@ -509,7 +509,7 @@ TEST(PlaneScenario, MapDLargeFrustumWithNoiseMapsEveryWallWithinTheNoise) {
 
 // Map E (spec §3.7; paper Fig 5, thesis Figs 69, 83–102), noise-free, its own large frustum, both
 // loops, parts 2 and 3 on with the noise-free constants above (the interval checks off, their
-// default). Every wall is mapped and the pose is exact wherever it is valid (measured: 2845 of
+// default). Every wall is mapped and the pose is exact wherever it is valid (measured: 2841 of
 // 2881 iterations, 1e-14); the map holds the one error the thesis accepts:
 //  - Rule 17 maps a plane at the largest size it was seen (spec §5.8, A47), so a plane never
 //    seen whole keeps its key-point end exact and is short by the part never seen. Three are:
