@@ -318,7 +318,9 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   // Step B: the planes global matching re-acquired (Rule 21).
   if (options_.key_points && options_.rules.regroup_reacquired && !xpoints_.empty()) regroup_reacquired(result);
   if (options_.key_points && options_.rules.regroup_unplaced && !xpoints_.empty()) regroup_unplaced(result);
-  if (motion_model_active_ && options_.key_points && options_.rules.current_group_chart) end_motion_model_on_the_map();
+  if (motion_model_active_ && options_.key_points && options_.rules.return_to_visited_group &&
+      options_.rules.current_group_chart)
+    end_motion_model_on_the_map();
   upkeep_unassigned();
   // Step D: the current group by charting (Rule 22); off, the group last started stays current,
   // as before Rule 22 in the thesis (4.3.5).
@@ -370,6 +372,7 @@ void RltXPointsS::end_motion_model_on_the_map() {
   // Rule 21's membership cap, neither comes (Map E's fourth corner from the third loop: the
   // motion model tracked the start wall on, the pose drifting 0.05 an iteration). [C] Then the
   // chart's group — the one holding most planes in view — becomes current; the pose is GetPoset's.
+  // Part of Rule 29 (a return to where the robot has been): off with it.
   const std::vector<MapPlane>& map = builder_.map();
   const PlaneId tracked = motion_models_.back().plane();
   const bool second_on_map = std::ranges::any_of(assignment_, [&](PlaneId p) {
