@@ -379,12 +379,21 @@ void RltXPointsS::end_motion_model_on_the_map() {
     return p != tracked && p < static_cast<PlaneId>(map.size()) && map[p].mapped;
   });
   if (!second_on_map) return;
-  chart_.assign(xpoints_.size(), 0);
-  for (PlaneId p : assignment_)
-    for (const RltXPointRef& ref : planes_[p].refs())
-      if (!xpoints_[ref.xpoint].motion_model()) ++chart_[ref.xpoint];
+  fill_chart(false);
   const auto best = std::ranges::max_element(chart_);  // the first of the most: the lowest id
   if (*best > 0) set_current(static_cast<XPointId>(best - chart_.begin()));
+}
+
+void RltXPointsS::fill_chart(bool oneway_links) {
+  // RltXPointChart's counts: per group (motion models aside), the planes in view it holds.
+  chart_.assign(xpoints_.size(), 0);
+  for (PlaneId p : assignment_) {
+    for (const RltXPointRef& ref : planes_[p].refs())
+      if (!xpoints_[ref.xpoint].motion_model()) ++chart_[ref.xpoint];
+    if (!oneway_links) continue;
+    for (XPointId y : planes_[p].oneway_xpoints())  // Rule 37: as if merged with its duplicates
+      if (planes_[p].ref(y) == nullptr) ++chart_[y];    // (unless it has since joined that group)
+  }
 }
 
 void RltXPointsS::chart_current_group() {
@@ -392,13 +401,7 @@ void RltXPointsS::chart_current_group() {
   // seen this iteration; a tie keeps the current group, other ties the lowest id [R]. A motion
   // model stays current until it ends (Rules 26, 29).
   if (motion_model_active_ || xpoints_.empty()) return;
-  chart_.assign(xpoints_.size(), 0);
-  for (PlaneId p : assignment_) {
-    for (const RltXPointRef& ref : planes_[p].refs())
-      if (!xpoints_[ref.xpoint].motion_model()) ++chart_[ref.xpoint];
-    for (XPointId y : planes_[p].oneway_xpoints())  // Rule 37: as if merged with its duplicates
-      if (planes_[p].ref(y) == nullptr) ++chart_[y];    // (unless it has since joined that group)
-  }
+  fill_chart(true);
   XPointId best = current_;
   int best_count = current_ != kNone ? chart_[current_] : 0;
   for (XPointId x = 0; x < static_cast<XPointId>(xpoints_.size()); ++x)

@@ -145,6 +145,7 @@ class RltXPointsS : private RltXPointsState {
   void regroup_unplaced(RelativePlaneStep& result);
   void chart_current_group();
   void end_motion_model_on_the_map();
+  void fill_chart(bool oneway_links);
   void set_current(XPointId x);
   bool switch_to_group_holding_all();
   int mend_merge_after_loop_closing(const PlanarPose& world_T_robot);
