@@ -370,9 +370,10 @@ TEST(PlaneScenario, MapDSmallFrustumWholeRunIsExactWhereverThePoseIsValid) {
 // The save system (Rules 35, 36; spec §5.12, E19 / Figs 98–99 in small): with a store of 300
 // observations per RltPlane the iterations two planes shared are overwritten long before the loop
 // ends, their comparison can no longer be made, and without the save system their group loses
-// them — the planes vanish from the map (measured: 12 of 36 walls left). Either rule keeps them:
-// Rule 35 restores the group's best complete result (34 of 36), Rule 36 each pair's best
-// comparison (36 of 36, also with both on; the full store maps all 36).
+// them — the planes vanish from the map (measured: 31 of 36 walls left; 12 before Rule 11 came
+// ahead of the unassigned list, when the loop closure also added duplicate groups). Either rule
+// keeps them: Rule 35 restores the group's best complete result, Rule 36 each pair's best
+// comparison (36 of 36 each, and with both on; the full store maps all 36).
 TEST(PlaneScenario, MapDSmallStoreKeepsItsPlanesOnlyWithTheSaveSystem) {
   sim::PlanarMap map = noise_free(map_file("d_office_loop.json"));
   map.sensor.frustum = sim::ViewingFrustum::large();
@@ -386,8 +387,8 @@ TEST(PlaneScenario, MapDSmallStoreKeepsItsPlanesOnlyWithTheSaveSystem) {
   const auto walls_mapped = [](const SimRun& run) {
     return std::ranges::count_if(run.mapped_of_wall, [](const auto& wall) { return wall.second >= 1; });
   };
-  EXPECT_LE(walls_mapped(run_with(false, false)), 20);
-  EXPECT_GE(walls_mapped(run_with(true, false)), 34);
+  EXPECT_LE(walls_mapped(run_with(false, false)), 31);
+  EXPECT_EQ(walls_mapped(run_with(true, false)), 36);
   const SimRun rule36 = run_with(false, true);
   EXPECT_EQ(walls_mapped(rule36), 36);
   EXPECT_EQ(walls_mapped(run_with(true, true)), 36);
@@ -399,18 +400,18 @@ TEST(PlaneScenario, MapDSmallStoreKeepsItsPlanesOnlyWithTheSaveSystem) {
   EXPECT_LT(w.heading, kNoiseFree);
 }
 
-// Rule 37 (MendMergeAfterLoopClosing, spec §5.5.5) on Map D with noise, large frustum, two loops
-// (seed 1): when Rule 29 returns from a motion model to a visited group, a plane in view whose wall
-// has a second RltPlane on the map gets a one-way link to that duplicate's group (measured: one,
-// at iteration 1694). The link is for charting only — the group does not list the plane and the
-// plane has no membership in it — and here it changes nothing: every pose, every current group
-// and the final map are bit for bit those of the run without the rule. (The thesis's failure,
-// Fig 101's wrong current group, is not reproduced on our maps; E20 measures it on Map E.)
+// Rule 37 (MendMergeAfterLoopClosing, spec §5.5.5) on Map E with noise, two loops (seed 2):
+// when Rule 29 returns from a motion model to a visited group, a plane in view whose wall has a
+// second RltPlane on the map gets a one-way link to that duplicate's group (measured: one). The
+// link is for charting only — the group does not list the plane and the plane has no membership
+// in it — and here it changes nothing: every pose, every current group and the final map are bit
+// for bit those of the run without the rule. (The thesis's failure, Fig 101's wrong current
+// group, is not reproduced; E20 measures it. Map D no longer gives a link: since Rule 11 comes
+// before the unassigned list, its noisy runs keep no duplicate to link to.)
 TEST(PlaneScenario, Rule37OneWayLinksChartOnlyAndLeaveTheGroupsAlone) {
-  sim::PlanarMap map = map_file("d_office_loop.json");
-  map.sensor.frustum = sim::ViewingFrustum::large();
+  sim::PlanarMap map = map_file("e_motion_room.json");
   map.path.loops = 2;
-  const sim::PlanarSimulator simulator(map, 1);
+  const sim::PlanarSimulator simulator(map, 2);
   RelativePlaneOptions on;
   on.key_points = true;
   RelativePlaneOptions off = on;
@@ -449,9 +450,12 @@ TEST(PlaneScenario, Rule37OneWayLinksChartOnlyAndLeaveTheGroupsAlone) {
 // shows one partial wall at each corner: the whole run (one loop and the partial second that
 // closes it) is exact wherever the pose is valid (measured: 2477 of 2501 iterations, 1e-14),
 // every one of the 36 walls is mapped with its key-point end exact, and a motion model carried
-// each of the five corners. One wall has a second RltPlane: wall 3, seen only in part from the
-// start, is seen again on the return beyond the part mapped and cannot be matched to it — the
-// duplicate the thesis keeps on purpose (Fig 90, plane 9 ≡ plane 2, E15).
+// each of the five corners. No wall has a second RltPlane: wall 3, seen only in part from the
+// start, is seen again on the return beyond the part mapped; global matching (Rule 11, ahead of
+// the unassigned list as in the thesis's AddPlane) gives it back to its plane, which grows to the
+// whole wall (it used to be the duplicate the thesis keeps on purpose, Fig 90, E15). Wall 2, on
+// the map at 3.95 of 4 from the one group that placed it, is later cut at its other end: that end
+// of the map entry is not the wall's, and the pose does not use it (MapPlane::holds_end).
 TEST(PlaneScenario, MapDLargeFrustumLoopIsExactAndMapsEveryWall) {
   sim::PlanarMap map = noise_free(map_file("d_office_loop.json"));
   map.sensor.frustum = sim::ViewingFrustum::large();
@@ -462,21 +466,22 @@ TEST(PlaneScenario, MapDLargeFrustumLoopIsExactAndMapsEveryWall) {
   EXPECT_LT(w.heading, kNoiseFree);
   EXPECT_EQ(run.motion_models_by.rbegin()->second, 5);
   EXPECT_EQ(run.mapped_of_wall.size(), map.world.walls.size());
-  int duplicated = 0;
-  for (const auto& [wall, mapped] : run.mapped_of_wall) {
-    EXPECT_GE(mapped, 1) << "wall " << wall;
-    duplicated += mapped > 1;
+  for (const auto& [wall, mapped] : run.mapped_of_wall) EXPECT_EQ(mapped, 1) << "wall " << wall;
+  for (const auto& [p, e] : run.final_error) {
+    if (run.final_wall.at(p) == 3) {
+      EXPECT_NEAR(e.length_ratio, 1, kNoiseFree);
+    }
   }
-  EXPECT_LE(duplicated, 1);
   expect_one_end_exact(run, map);
 }
 
 // Map D with the sensor's noise (spec §3.8: σ_p 0.01, σ_r 0.3°), large frustum, parts 2 and 3 on
 // with their default constants, five seeds. Measured (seeds 1–5): all 36 walls mapped in every
-// run; final mean e_ends 0.026–0.084 (noise-free: 0.033, mostly the parts of walls never seen);
+// run; final mean e_ends 0.025–0.041 (noise-free: 0.0085, the parts of walls never seen whole);
 // median position error 0.018–0.033 (the pose is taken against a map chained through a dozen
-// groups, each link adding its averaging error); 1–2 walls with a second plane (the one the thesis
-// keeps, Fig 90, and at most one more); key points right in 98–99 % of the claims (seeds 1–3) — a
+// groups, each link adding its averaging error); no wall with a second plane (before Rule 11 came
+// ahead of the unassigned list and the offset test allowed a plane's turn about its midpoint: 1–2,
+// a far wall failing Rule 1 in a turn and wall 3 on the return); key points right in 98–99 % of the claims (seeds 1–3) — a
 // wrong one lasts 20–40 iterations, not the thesis's "about four" (Figs 76–79), until its piece
 // ends. Bounds: mean e_ends within the noise-free value plus 10 σ_p; median pose error 5 σ_p.
 TEST(PlaneScenario, MapDLargeFrustumWithNoiseMapsEveryWallWithinTheNoise) {
@@ -493,17 +498,47 @@ TEST(PlaneScenario, MapDLargeFrustumWithNoiseMapsEveryWallWithinTheNoise) {
       duplicated += mapped > 1;
     }
     EXPECT_EQ(complete, static_cast<int>(map.world.walls.size())) << "seed " << seed;
-    EXPECT_LE(duplicated, 2) << "seed " << seed;
+    EXPECT_EQ(duplicated, 0) << "seed " << seed;
     double ends = 0;
     for (const auto& [p, e] : run.final_error) ends += e.ends;
     const double mean_ends = ends / static_cast<double>(run.final_error.size());
-    EXPECT_LT(mean_ends, 0.033 + 10 * 0.01) << "seed " << seed;
+    EXPECT_LT(mean_ends, 0.0085 + 10 * 0.01) << "seed " << seed;
     std::vector<double> position;
     for (const IterationScore& s : run.iterations)
       if (s.pose_valid) position.push_back(s.pose.position);
     ASSERT_GT(position.size(), 2400u) << "seed " << seed;
     std::ranges::nth_element(position, position.begin() + position.size() / 2);
     EXPECT_LT(position[position.size() / 2], 5 * 0.01) << "seed " << seed;
+  }
+}
+
+// The thesis's Map D (small frustum) with the sensor's noise, seeds 1–3: every wall mapped, and
+// the only wall with a second plane is wall 3, seen in part from the start and again on the
+// return beyond the part mapped — the duplicate the thesis keeps on purpose (Fig 90, E15).
+// Before Rule 11 came ahead of the unassigned list, 4–5 walls a run were mapped twice: on the
+// return each re-entered the view as a sliver at the frustum's edge, which a pose error of a few
+// hundredths kept below Rule 11's overlap share, became a new RltPlane, and took every later
+// observation of its wall. Measured: pose valid 96.4–96.8 %, final mean e_ends 0.12–0.14
+// (noise-free 0.062: wall 3's first piece and the walls never seen whole). Bound: the noise-free
+// value plus 10 σ_p.
+TEST(PlaneScenario, MapDSmallFrustumWithNoiseMapsOnlyWall3Twice) {
+  const sim::PlanarMap map = map_file("d_office_loop.json");
+  RelativePlaneOptions options;
+  options.key_points = true;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const SimRun run = run_map(map, seed, options);
+    std::set<int> duplicated;
+    for (const auto& [wall, mapped] : run.mapped_of_wall) {
+      EXPECT_GE(mapped, 1) << "seed " << seed << " wall " << wall;
+      if (mapped > 1) duplicated.insert(wall);
+    }
+    EXPECT_EQ(run.mapped_of_wall.size(), map.world.walls.size()) << "seed " << seed;
+    EXPECT_EQ(duplicated, std::set<int>{3}) << "seed " << seed;
+    double ends = 0;
+    for (const auto& [p, e] : run.final_error) ends += e.ends;
+    EXPECT_LT(ends / static_cast<double>(run.final_error.size()), 0.062 + 10 * 0.01) << "seed " << seed;
+    const auto valid = std::ranges::count_if(run.iterations, [](const IterationScore& s) { return s.pose_valid; });
+    EXPECT_GT(valid, 2350) << "seed " << seed;
   }
 }
 

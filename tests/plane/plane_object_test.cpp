@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 
 namespace relslam::plane {
@@ -70,6 +71,25 @@ TEST(MatchPlane, CollinearNeighbourSegmentIsRejectedByTheOverlapRule) {
 TEST(MatchPlane, OffsetJumpFails) {
   PlaneObject current = moved(wall_ahead(), PlanarPose::from(1.0, 0, 0), 11);  // 1 unit farther
   EXPECT_EQ(match_plane(wall_ahead(), current, MatchBounds{}), -1);
+}
+
+// The sensor's rotation noise turns a plane about its own midpoint (spec §3.8). A piece far along
+// its wall — 27 units from the foot of the perpendicular, as a far wall in the large frustum —
+// turned by 1° moves its offset d by 27·sin 1° = 0.47, past c_d = 0.3; the robot turning by the
+// same angle would leave d unchanged. The offset test allows what the angle explains.
+TEST(MatchPlane, FarPieceTurnedAboutItsMidpointStillMatches) {
+  const PlaneObject previous{{3, 26}, {3, 28}, 0.0, 2.5, 10};
+  const PlanarPose turn_about_midpoint =
+      PlanarPose::from(3, 27, std::numbers::pi / 180) * PlanarPose::from(-3, -27, 0);
+  const PlaneObject current = moved(previous, turn_about_midpoint, 11);
+  EXPECT_GT(std::abs(current.offset() - previous.offset()), 0.45);
+  EXPECT_GT(match_plane(previous, current, MatchBounds{}), 0);
+  MatchBounds thesis;
+  thesis.rotation_about_midpoint = false;
+  EXPECT_EQ(match_plane(previous, current, thesis), -1);
+  // Not a licence for any offset: the same piece 0.5 farther, not turned, still fails.
+  const PlaneObject farther = moved(previous, PlanarPose::from(0.5, 0, 0), 11);
+  EXPECT_EQ(match_plane(previous, farther, MatchBounds{}), -1);
 }
 
 TEST(PlaneObjectOperations, KeyPointsAndAssumedMidpointsFollowRule14) {

@@ -31,6 +31,18 @@ TEST(RltPlane, GetPlaneFindsEveryStoredIterationAcrossWrapAround) {
   for (int i = 1; i < plane.size(); ++i) EXPECT_LT(plane[i - 1].iteration, plane[i].iteration);
 }
 
+TEST(RltPlane, LongestSeenRemembersAnOverwrittenObservation) {
+  // A wall growing into view and leaving it again: lengths 1, 4, 2, 1 in a store of two.
+  const auto seen = [](double length, int iteration) { return PlaneObject{{1, 0}, {1 + length, 0}, 0.0, 2.5, iteration}; };
+  RltPlane plane(0, seen(1, 0), 2);
+  EXPECT_EQ(plane.longest_seen(), 1.0);
+  plane.add(seen(4, 1));
+  plane.add(seen(2, 2));
+  plane.add(seen(1, 3));
+  ASSERT_EQ(plane[0].iteration, 2);  // the 4-long observation is gone from the store
+  EXPECT_EQ(plane.longest_seen(), 4.0);
+}
+
 TEST(RltPlane, KeepsTheFirstObservationAndTheWholeIntervalAfterOverwriting) {
   RltPlane plane(3, seen_at(5), 2);
   for (int t = 6; t <= 9; ++t) plane.add(seen_at(t));

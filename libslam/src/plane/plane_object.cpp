@@ -50,7 +50,11 @@ double match_plane(const PlaneObject& previous, const PlaneObject& current, cons
   const double min_dot = std::cos(bounds.max_normal_angle_rad);
   if (aligned < min_dot) return -1;
   // Offsets compare along the same normal direction (they flip with a flipped normal).
-  const double offset_change = std::abs(previous.offset() - (dot < 0 ? -current.offset() : current.offset()));
+  double offset_change = std::abs(previous.offset() - (dot < 0 ? -current.offset() : current.offset()));
+  if (bounds.rotation_about_midpoint) {
+    const double along = std::abs(current.tangent().dot(current.midpoint()));
+    offset_change = std::max(0.0, offset_change - along * std::sqrt(std::max(0.0, 1.0 - aligned * aligned)));
+  }
   if (offset_change > bounds.max_offset_change) return -1;
   const Box box_previous(previous, bounds.box_margin), box_current(current, bounds.box_margin);
   const int inside = box_previous.points_inside(box_current) + box_current.points_inside(box_previous);

@@ -154,6 +154,7 @@ void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltP
     entry.length = ref->max_length;
     entry.source = xpoint.id();
     entry.key_point = ref->key_point;
+    entry.size_static = ref->size_static;
     const PlaneObject& seen = planes[p].latest();
     entry.plane = PlaneObject::from_pose(entry.world_T_plane, entry.length, seen.y_lo, seen.y_lo + ref->height);
   }
@@ -186,7 +187,7 @@ RltPoset RltMapBuilder::get_poset(std::span<const RegisteredObservation> observa
       bad.push_back(&o);
       continue;
     }
-    add(o, adjust_size(*o.observation, entry.length, kp));
+    if (entry.holds_end(kp, planes[o.plane].longest_seen(), options.same_length)) add(o, adjust_size(*o.observation, entry.length, kp));
   }
   // Rule 19 for the rest: key points from comparisons with the good planes of this iteration,
   // then with the other bad ones (spec §5.9).
@@ -195,7 +196,7 @@ RltPoset RltMapBuilder::get_poset(std::span<const RegisteredObservation> observa
     for (const RegisteredObservation* b : bad)
       if (b != o) others.push_back(&planes[b->plane]);
     const KeyPoint kp = key_point_at(planes[o->plane], o->observation->iteration, others, options);
-    if (kp != KeyPoint::None)
+    if (kp != KeyPoint::None && map_[o->plane].holds_end(kp, planes[o->plane].longest_seen(), options.same_length))
       mean.add(calculate_offset(map_[o->plane].plane, adjust_size(*o->observation, map_[o->plane].length, kp)));
   }
   return {mean.mean(), mean.count() > 0, mean.count()};

@@ -18,6 +18,7 @@ void RltPlane::add(const PlaneObject& observation) {
     throw std::logic_error("RltPlane::add: plane " + std::to_string(id_) + " got iteration " +
                            std::to_string(observation.iteration) + " after " + std::to_string(last_iteration()));
   intervals_.add(observation.iteration);
+  longest_ = std::max(longest_, observation.length());
   if (size_ < capacity_) {
     storage_.push_back(observation);  // still growing: the oldest stays at index 0
     ++size_;

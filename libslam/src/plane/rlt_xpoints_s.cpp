@@ -195,23 +195,41 @@ void RltXPointsS::add_planes(const PlaneFrame& frame, RelativePlaneStep& result)
   const std::vector<MapPlane>& map = builder_.map();
 
   // Rule 1: each observation against the previous observation of every recently seen RltPlane
-  // (thesis 4.2.1: "the last added untransformed plane in every rltplane"). Deviation: the
-  // thesis tries the current group, its neighbours, the map, then the unassigned list, as a
-  // saving; those groups hold every RltPlane that can pass the gap test, and the map only
-  // takes observations no recent plane matched, so the outcome is the same.
-  matches_.clear();
-  for (int i = 0; i < static_cast<int>(stamped_.size()); ++i)
-    for (PlaneId p : recent_) {
-      const bool mapped = p < static_cast<PlaneId>(map.size()) && map[p].mapped;
-      if (!rules.local_registration && mapped) continue;  // Rule 1 off: mapped planes via the pose
-      const double score = match_plane(planes_[p].latest(), stamped_[i], options_.local_match, rules.normal_direction);
-      if (score >= 0) matches_.push_back({i, p, score});
+  // (thesis 4.2.1: "the last added untransformed plane in every rltplane"), in the thesis's
+  // order (4.5 AddPlane, spec §5.4.2): the RltPlanes in groups first, then the map (Rule 11),
+  // and only then the unassigned list. Deviation: the thesis tries the current group and its
+  // neighbours before the other groups, as a saving; every RltPlane that can pass the gap test
+  // is in `recent_`, and the best score wins among them, so the outcome is the same. The
+  // unassigned list must come after the map: a wall re-entering the view as a sliver at the
+  // frustum's edge overlaps its mapped plane too little under a small pose error and becomes
+  // a new RltPlane; were it matched before the map, every later (larger) observation would
+  // follow it there and the wall would be mapped twice (Map D with noise, loop closure).
+  // Deviation [C]: while the pose is lost (no pose this iteration or the last) the unassigned
+  // list comes first, as the map would be searched with a pose held from long ago.
+  auto match_recent = [&](bool grouped) {
+    matches_.clear();
+    for (int i = 0; i < static_cast<int>(stamped_.size()); ++i) {
+      if (assignment_[i] != kNone) continue;
+      for (PlaneId p : recent_) {
+        const bool mapped = p < static_cast<PlaneId>(map.size()) && map[p].mapped;
+        if (grouped != (mapped || !planes_[p].refs().empty())) continue;
+        if (!rules.local_registration && mapped) continue;  // Rule 1 off: mapped planes via the pose
+        const double score = match_plane(planes_[p].latest(), stamped_[i], options_.local_match, rules.normal_direction);
+        if (score >= 0) matches_.push_back({i, p, score});
+      }
     }
-  register_matches(result.local_matches);
+    register_matches(result.local_matches);
+  };
+  match_recent(true);
 
-  // Rule 11: what no recent RltPlane took is placed with a pose and matched to the map.
+  // Rule 11: what no grouped RltPlane took is placed with a pose and matched to the map.
+  bool unassigned_matched = false;
   if (rules.global_matching && last_valid_pose_.valid && std::ranges::count(assignment_, kNone) > 0) {
-    const PlanarPose world_T_robot = pose_for_global_matching();
+    const auto [world_T_robot, fresh] = pose_for_global_matching();
+    if (!fresh) {
+      match_recent(false);
+      unassigned_matched = true;
+    }
     matches_.clear();
     for (int i = 0; i < static_cast<int>(stamped_.size()); ++i)
       if (assignment_[i] == kNone)
@@ -219,6 +237,7 @@ void RltXPointsS::add_planes(const PlaneFrame& frame, RelativePlaneStep& result)
                                     taken_, matches_);
     register_matches(result.global_matches, &reacquired_now_);
   }
+  if (!unassigned_matched) match_recent(false);
 
   // Anything left is a plane not seen before: a new RltPlane in the unassigned list.
   for (int i = 0; i < static_cast<int>(stamped_.size()); ++i)
@@ -228,23 +247,25 @@ void RltXPointsS::add_planes(const PlaneFrame& frame, RelativePlaneStep& result)
     }
 }
 
-PlanarPose RltXPointsS::pose_for_global_matching() {
+std::pair<PlanarPose, bool> RltXPointsS::pose_for_global_matching() {
   // The thesis places them with the previous iteration's pose (4.2.2). Deviation [C]: this
   // iteration's, from what Rule 1 registered, when that gives one — still computed from this
   // iteration's observations against the map, never carried forward. While turning the previous
   // pose lags by a whole step: 1.5° at 28 units moves a wall by 0.7, past the matching bounds,
   // and the re-seen wall would become a duplicate.
+  const bool recent = last_valid_iteration_ >= iteration_ - 1;
   if (motion_model_active_) {
     RltXMMPoint& mm = motion_models_.back();
     mm.compute(planes_, options_.motion_model);
-    if (const std::optional<PlanarPose> tracked = mm.world_T_robot(iteration_)) return *tracked;
-    return last_valid_pose_.world_T_robot;
+    if (const std::optional<PlanarPose> tracked = mm.world_T_robot(iteration_)) return {*tracked, true};
+    return {last_valid_pose_.world_T_robot, recent};
   }
   registered_.clear();
   for (std::size_t i = 0; i < stamped_.size(); ++i)
     if (assignment_[i] != kNone) registered_.push_back({&stamped_[i], assignment_[i]});
   const RltPoset now = builder_.get_poset(registered_, planes_, options_);
-  return now.valid ? now.world_T_robot : last_valid_pose_.world_T_robot;
+  if (now.valid) return {now.world_T_robot, true};
+  return {last_valid_pose_.world_T_robot, recent};
 }
 
 void RltXPointsS::register_matches(int& counter, std::vector<PlaneId>* registered) {

@@ -306,6 +306,8 @@ void describe(OptionsOf<MatchBounds> auto& b, auto& f, bool local) {
           local ? "Rule 1: at most this many iterations since the RltPlane's last observation"
                 : "iterations between the two observations; negative: no test (global matching)",
           holds(!local || b.max_iteration_gap >= 1, "must be >= 1: Rule 1 needs the gap test"));
+  f.field("rotation_about_midpoint", b.rotation_about_midpoint,
+          "the offset test allows what a turn of the plane about its midpoint explains (rotation noise)");
 }
 
 // The scenario keys of RuleSwitches (relative_plane.rules.*): each rule the thesis turns on or off.

@@ -37,6 +37,13 @@ struct MatchBounds {
   // must not be taken over by another that appears at the same relative place later [T];
   // negative: no iteration test (global matching) [R, c_gap].
   int max_iteration_gap = 5;
+  // The offset test allows the part of |d_prev − d_cur| that the normals' angle explains as a
+  // turn of the plane about its own midpoint: the sensor's rotation noise turns each plane about
+  // its midpoint (spec §3.8), which moves the offset by the midpoint's distance along the plane
+  // from the foot of the perpendicular times the angle (0.3° at 27 units along: 0.14), while
+  // the robot's own turn leaves d unchanged. Off: the thesis's bare offset test, under which a
+  // far wall in the large frustum fails Rule 1 and is mapped twice [C].
+  bool rotation_about_midpoint = true;
 };
 
 // Rule 11's bounds: room for the pose error of backtracking [R, spec §5.14 c_dot_g, c_d_g,

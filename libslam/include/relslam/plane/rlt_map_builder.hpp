@@ -26,6 +26,19 @@ struct MapPlane {
   double length = 0;
   XPointId source = kNone;  // the group that placed it
   KeyPoint key_point = KeyPoint::None;
+  // The placing comparison saw the plane keep its size (RltXPointRef::size_static): both ends
+  // are the wall's.
+  bool size_static = false;
+
+  // Whether the entry's end k is a real end of the wall, so an observation grown from k (Rule 16)
+  // may be put onto the entry. An entry shorter than the plane's longest observation (by more
+  // than τ_len) is a piece: mapped at the largest size its group compared, it is right at its
+  // key-point end only, and from the other end the pose would be off by the part its group never
+  // saw (Map D, large frustum: wall 2 mapped at 3.95 of 4 by the one group it joined, seen whole
+  // later, then cut at its other end). Any other entry is taken as whole.
+  bool holds_end(KeyPoint k, double longest_seen, double same_length) const {
+    return size_static || key_point == KeyPoint::None || key_point == k || longest_seen <= length + same_length;
+  }
 };
 
 // RltPoset (thesis 4.4.3.18): a pose and whether it could be computed.

@@ -29,6 +29,9 @@ class RltPlane {
   int last_iteration() const { return latest().iteration; }
   // The first observation ever, kept after the array overwrote it (Rule 4's anchor).
   const PlaneObject& first_observation() const { return first_; }
+  // The longest observation ever added, overwritten ones included: a map entry shorter than
+  // this is known not to be the whole wall (RltMapBuilder::get_poset).
+  double longest_seen() const { return longest_; }
   // Observations ever added (the thesis's "readings"), overwritten ones included.
   int readings() const { return intervals_.total_size(); }
   // Every iteration the plane was seen in, overwritten ones included (GetInterval).
@@ -62,6 +65,7 @@ class RltPlane {
  private:
   PlaneId id_;
   PlaneObject first_;
+  double longest_ = 0;
   std::vector<PlaneObject> storage_;
   int capacity_;
   int head_ = 0;  // physical index of the oldest kept observation

@@ -130,7 +130,9 @@ class RltXPointsS : private RltXPointsState {
 
   void start_iteration(int iteration);
   void add_planes(const PlaneFrame& frame, RelativePlaneStep& result);
-  PlanarPose pose_for_global_matching();
+  // Rule 11's pose, and whether it is of this iteration or the last (`fresh`) rather than
+  // held from longer ago while the pose was lost.
+  std::pair<PlanarPose, bool> pose_for_global_matching();
   void register_matches(int& counter, std::vector<PlaneId>* registered = nullptr);
   void add_to_plane(PlaneId plane, const PlaneObject& observation);
   PlaneId create_plane(const PlaneObject& observation, int input_index);
