@@ -249,11 +249,18 @@ const std::vector<ScriptedWall> kShortLivedGroup = {
     {210, 4, {{40, 70}}},         // Q
 };
 
+// Part 1 (key_points off): full-size planes, no Rule 22 charting, no Rule 21 regrouping.
+RelativePlaneOptions part1() {
+  RelativePlaneOptions options;
+  options.key_points = false;
+  return options;
+}
+
 TEST(RltXPointsS, Rule12TraversalLinksANewGroupPastAShortLivedWorkingGroup) {
   const std::vector<PlaneFrame> frames = scripted_frames(kShortLivedGroup, 71);
-  RelativePlaneOptions off;
+  RelativePlaneOptions off = part1();
   off.rules.traverse_to_link = false;
-  RltXPointsS with, without(off);
+  RltXPointsS with(part1()), without(off);
   for (const PlaneFrame& frame : frames) {
     const RelativePlaneStep step = with.step(frame);
     without.step(frame);
@@ -313,7 +320,7 @@ TEST(RltXPointsS, Rule12LinkPlacesTheNewPlaneExactly) {
 // current when the robot is back among an older group's planes only.
 TEST(RltXPointsS, CurrentGroupIsTheGroupLastCreated) {
   const std::vector<PlaneFrame> frames = scripted_frames(kShortLivedGroup, 71);
-  RltXPointsS slam;
+  RltXPointsS slam(part1());
   for (const PlaneFrame& frame : frames) {
     const RelativePlaneStep step = slam.step(frame);
     const int t = frame.iteration;
@@ -328,7 +335,7 @@ TEST(RltXPointsS, CurrentGroupIsTheGroupLastCreated) {
 
 TEST(RltXPointsS, HallwayReturnLegKeepsTheLastGroupCurrent) {
   const test::PlaneRun world = hallway_there_and_back();
-  RltXPointsS slam({}, world.world_T_robot.front());
+  RltXPointsS slam(part1(), world.world_T_robot.front());
   const int turn_end = 360 + 36;  // MOVE 36 by 0.1, TURN 180° by 5°
   XPointId at_turn = kNone;
   for (const PlaneFrame& frame : world.frames) {

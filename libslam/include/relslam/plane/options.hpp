@@ -259,10 +259,10 @@ struct RelativePlaneOptions {
   ChainOrder chain_order = ChainOrder::Creation;
   // Part 2 (thesis 4.3.3–4.3.5): compare planes by their key points (Rules 13–15, 18, 19),
   // chain with size correction (Rules 2, 6, 28), place each plane at its largest size from its
-  // key point (Rule 17, A47) and take the pose from partially seen planes (Rule 16). Off: part 1,
-  // full-size midpoints only, which stays reproducible [T: on in the thesis; C: off by default
-  // until part 2 is complete].
-  bool key_points = false;
+  // key point (Rule 17, A47) and take the pose from partially seen planes (Rule 16); with it the
+  // motion model and Rules 21, 22, 28–37. Off: part 1, full-size midpoints only, which the
+  // scenarios of the part-1 experiments (E01, E03–E07, E31) set to stay reproducible [T].
+  bool key_points = true;
   // Rule 21: a re-acquired plane starts a new group only while it belongs to fewer groups than
   // this [R, K_xrefs: the thesis's "a few"]; the order of the attempts is rule21_order.
   int regroup_memberships = 2;
@@ -441,7 +441,7 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.choice("chain_order", o.chain_order, "order of a new group's chain: creation, or reversed (E31, Rule 2)",
            kChainOrders);
   f.field("key_points", o.key_points,
-          "part 2: key points, size correction, partial planes in the pose (Rules 13-19, 28) [C: off]");
+          "parts 2-3: key points, size correction, partial planes in the pose, motion model (Rules 13-37); false: part 1 [T]");
   f.field("regroup_memberships", o.regroup_memberships,
           "Rule 21: a re-acquired plane starts a new group only with fewer memberships than this", at_least(1));
   f.field("unplaced_wait", o.unplaced_wait,
