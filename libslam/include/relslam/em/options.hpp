@@ -92,8 +92,8 @@ struct Em2Options {
   // of a wall was left unassigned (a short wall then under SegComp's 0.8 overlap, e.g. Map D
   // iteration 2225: 31 of 40 points, the bottom 0.55 never reached from a seed near the top) or
   // seeded a thin plane of its own whose fit was too far off to merge (a noise plane). At 20
-  // all but 2 in 1,000 planes settle before the cap, most in 7–16 rounds (uncapped, those few
-  // never settle: their density check swaps a strip in and out) [C].
+  // all but 3–4 in 1,000 planes settle before the cap, after 7 (Map D) and 12 (Map E) rounds on
+  // average (uncapped, those few never settle: their density check swaps a strip in and out) [C].
   int grow_rounds = 20;
   // The overlapping grid ("overlapping quadtree", thesis 3.2.2, 6.2.4) over (x, z): cell size C
   // and overlap O. A plane grows only within its seed point's cell, so it reaches at most
