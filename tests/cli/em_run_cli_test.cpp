@@ -21,9 +21,9 @@ using Table = test::CsvTable;
 std::string scene(const std::string& file) { return file.substr(5, file.size() - 10); }
 
 // Map D's whole path (2501 frames) and Map E's first 250 (its first wall and corner). On the
-// whole of Map E, 1 (EM1) and 3 (EM2) of 2881 noise-free frames have a short piece missed (its
-// plane below SegComp's 0.8 overlap), and a few normal errors up to 0.07° (README, "Plane
-// extraction").
+// whole of Map E, 1 of 2881 noise-free frames has a short piece missed with EM1 (its plane below
+// SegComp's 0.8 overlap; none with EM2 since its planes grow until they settle, 3 before), and a
+// few have normal errors up to 0.07° (README, "Plane extraction").
 constexpr int kOfficeFrames = 2501;
 constexpr int kRoomFrames = 250;
 // The baseline is ~100 times slower: its first frames only.

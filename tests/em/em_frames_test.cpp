@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <tuple>
@@ -213,6 +214,44 @@ TEST(EmExtraction, CollinearPiecesOfACorridorStaySeparate) {
         }
       }
     }
+}
+
+// The share of a wall's visible points that its best plane holds (SegComp's overlap, spec §7.2).
+double best_share(const Outcome& out, int wall) {
+  const std::vector<int>& ids = out.frame.truth.wall_ids;
+  const auto visible = std::count(ids.begin(), ids.end(), wall);
+  std::ptrdiff_t best = 0;
+  for (const std::vector<int>& support : out.planes.support)
+    best = std::max(best, std::count_if(support.begin(), support.end(),
+                                        [&](int i) { return ids[static_cast<std::size_t>(i)] == wall; }));
+  return visible > 0 ? static_cast<double>(best) / static_cast<double>(visible) : 0.0;
+}
+
+TEST(EmExtraction, Em2GrowsAShortWallOverItsWholeHeight) {
+  // Two frames of the issue 14 table (σ_pt 0.05, seed 1) where EM2 missed a short wall beside
+  // long ones: p-em-office-noise iteration 2225 (Map D, wall 5: 0.7 long, 40 points) and
+  // p-em-room-noise iteration 2874 (Map E, wall 5: 1 long, 65 points). The seed fell near one
+  // end of the wall's 2.5 height; at the spec's 6 growth rounds (e_exp each) the plane stopped
+  // 0.5–0.7 short of the other end, and the points left there were too few for a plane of their
+  // own and for EM2's stop rule (31 of 40 and 50 of 65: under SegComp's 0.8, so missed). Growth
+  // now runs until the plane settles (Em2Options::grow_rounds).
+  struct Case {
+    View view;
+    int wall;
+  };
+  const std::vector<Case> cases = {
+      {{test::office_loop(), PlanarPose::from(26.25, 1.5, 0), sim::ViewingFrustum::small(), 2225}, 5},
+      {{test::motion_room(), PlanarPose::from(11.7, 2.5, 0), sim::ViewingFrustum::large(), 2874}, 5}};
+  const EmOptions o = EmOptions::for_point_sigma(0.05);
+  EmOptions spec_rounds = o;
+  spec_rounds.em2.grow_rounds = 6;
+  for (const Case& c : cases) {
+    const Outcome out = extract(c.view, Variant::Em2, 0.05, o);
+    expect_every_wall_once(out, Variant::Em2, 0.05, o, where(c.view));
+    EXPECT_GE(best_share(out, c.wall), 0.95) << where(c.view) << ": " << out.score.describe();
+    EXPECT_LT(best_share(extract(c.view, Variant::Em2, 0.05, spec_rounds), c.wall), 0.8)
+        << where(c.view) << ": the frame no longer shows what 6 growth rounds missed";
+  }
 }
 
 TEST(EmExtraction, NearestAssignmentAlsoFindsSeparateWalls) {

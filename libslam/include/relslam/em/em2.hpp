@@ -14,8 +14,8 @@ namespace relslam::em {
 // The planes of one frame's points (robot frame), from scratch, with the EM stream seeded by
 // `seed` (em_frame_seed). Non-finite points are ignored. Per EM iteration (spec §4.4): the
 // unassigned points (usage 0) are listed; one random one seeds a plane with its two nearest
-// unassigned neighbours from the grid; the plane grows for em2.grow_rounds rounds (widen the
-// box by bound_expansion, gather the accepted points of the seed's grid cell, refit, density
+// unassigned neighbours from the grid; the plane grows for at most em2.grow_rounds rounds (widen
+// the box by bound_expansion, gather the accepted points of the seed's grid cell, refit, density
 // check), stopping early once its points no longer change; it is kept if it has min_support
 // points, its points' usage goes up, and it merges with any earlier plane it matches. The loop
 // ends when at most max(em2.left_min, em2.left_fraction · points) points are unassigned, after
