@@ -84,17 +84,17 @@ struct Em2Options {
   double left_fraction = 0.02;
   // Growth rounds per plane at most: expand, gather, refit, density check; growth ends earlier
   // once a round leaves the plane's points unchanged [T "end the iterative process after a few
-  // iterations", 3.5.3 step 5].
-  // Deviation (spec §4.6: 6): a round widens the plane's box by at most e_exp, and a plane grows
-  // over its seed's grid query, up to C + 2·O = 6 across, so it may need (C + 2·O) / e_exp = 20
-  // rounds to take in all of its wall there. At 6 most planes were cut off mid-growth (every
-  // third frame of Maps D and E at σ_pt 0.05: 2 of 3 planes on D, 19 of 20 on E), and the rest
-  // of a wall was left unassigned (a short wall then under SegComp's 0.8 overlap, e.g. Map D
-  // iteration 2225: 31 of 40 points, the bottom 0.55 never reached from a seed near the top) or
-  // seeded a thin plane of its own whose fit was too far off to merge (a noise plane). At 20
-  // all but 3–4 in 1,000 planes settle before the cap, after 7 (Map D) and 12 (Map E) rounds on
-  // average (uncapped, those few never settle: their density check swaps a strip in and out) [C].
-  int grow_rounds = 20;
+  // iterations", 3.5.3 step 5; spec §4.6: 6].
+  // A round widens the plane's box by at most e_exp, and a plane grows over its seed's grid
+  // query, up to C + 2·O = 6 across, so it may need (C + 2·O) / e_exp = 20 rounds to take in all
+  // of its wall there. At 6 most planes stop mid-growth (2 of 3 on Map D, 19 of 20 on Map E at
+  // σ_pt 0.05) and on a few frames the rest of a short wall is left unassigned (Map D iteration
+  // 2225: 31 of 40 points, under SegComp's 0.8) or seeds a noise plane: 20 finds every piece
+  // (recall and precision at or above the Open3D baseline's, README "Plane extraction"). It
+  // stays 6 by default because the settled planes also take in the neighbouring wall's points
+  // within d_in at a corner, which moves their ends out (noise-free Map E: mean end error
+  // 0.0067 → 0.0118) and makes every EM map worse (E23 final mean e_ends 0.12 → 0.42) [T].
+  int grow_rounds = 6;
   // The overlapping grid ("overlapping quadtree", thesis 3.2.2, 6.2.4) over (x, z): cell size C
   // and overlap O. A plane grows only within its seed point's cell, so it reaches at most
   // C + 2·O across; larger walls are grown in pieces and joined by the merge [R].
