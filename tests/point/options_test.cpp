@@ -32,6 +32,20 @@ TEST(PointSlamOptions, AdaptivePrevGroupMinFollowsThePointsInView) {
   EXPECT_EQ(prev_group_min(temporary_level_defaults(), Preset::Adaptive, 100.0), 6);
 }
 
+// Two-point registration (issue 16) places a group on two anchors: PrevGroupMin's floor is then
+// 2, reached only where the points in view are few; the thesis preset never has it.
+TEST(PointSlamOptions, TwoPointRegistrationLowersTheAdaptiveFloorToTwo) {
+  const GroupLevelOptions final_level = final_level_defaults();
+  EXPECT_EQ(prev_group_min(final_level, Preset::Adaptive, 4.0, 2), 2);
+  EXPECT_EQ(prev_group_min(final_level, Preset::Adaptive, 26.0, 2), 5);
+  EXPECT_EQ(prev_group_min(final_level, Preset::Thesis, 4.0, 2), 20);
+  PointSlamOptions adaptive = preset_options(Preset::Adaptive);
+  EXPECT_EQ(fewest_anchors(adaptive), 2);
+  adaptive.two_point_registration = false;
+  EXPECT_EQ(fewest_anchors(adaptive), 3);
+  EXPECT_EQ(fewest_anchors(preset_options(Preset::Thesis)), 3);
+}
+
 TEST(NoiseBounds, ThesisBoundsUpToSigmaTenthThenInProportion) {
   const PointSlamOptions thesis;
   for (double sigma : {0.0, 0.05, 0.1}) {

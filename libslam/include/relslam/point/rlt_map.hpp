@@ -9,7 +9,10 @@
 #include "relslam/point/rlt_ungrouped_list.hpp"
 #include "relslam/spatial/global_index.hpp"
 
+#include <deque>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace relslam::point {
@@ -58,6 +61,22 @@ struct RltMap {
   // position of every member it owns; anchors are registration sources and never rewritten by
   // this group (spec 5.5).
   void anchor(RltGroup& group);
+  // Deviation (adaptive preset, issue 16, PointSlamOptions::two_point_registration): the robot
+  // poses registered to the map (the map frame's, to three or more mapped points, or to two),
+  // kept for history_window iterations as the priors of two-point registration. A no-op when it
+  // is off.
+  void record_map_pose(int k, const Rigid3& world_T_robot);
+  // world_T_robot from two mapped points in view (their robot-frame observations and map
+  // positions), the rotation about their line from the latest recorded pose. Nothing when
+  // two-point registration is off, before the first recorded pose, or for a steep line.
+  std::optional<Rigid3> pose_from_two_points(const Eigen::Vector3d& robot0, const Eigen::Vector3d& robot1,
+                                             const Eigen::Vector3d& world0, const Eigen::Vector3d& world1) const;
+  // world_T_robot from one mapped point in view: the latest recorded pose's rotation, the
+  // translation putting the observation on the map position. Nothing when two-point
+  // registration is off or before the first recorded pose.
+  std::optional<Rigid3> pose_from_one_point(const Eigen::Vector3d& robot, const Eigen::Vector3d& world) const;
+  // Forgets the recorded poses (the map frame moved).
+  void forget_map_poses() { map_poses_.clear(); }
   // Gives a point its map position (and its place in the global index).
   void set_global(PointId id, const Eigen::Vector3d& g);
   // Retires a group (thesis 6.3.3: a group never changes; it is replaced): off its members'
@@ -69,6 +88,15 @@ struct RltMap {
   std::vector<PointId> take_changed();
 
  private:
+  // A group with exactly two anchors on the map: registered by them, the rotation about their
+  // line from the latest recorded pose at an iteration the group used (that pose composed with
+  // the group's basis frame there). Nothing without such a pose.
+  std::optional<Rigid3> register_on_two_anchors(const RltGroup& group) const;
+
+  bool two_point_ = false;     // two_point_registration_on(options)
+  double max_line_sine_ = 0;   // sine of two_point_max_elevation_deg
+  int pose_window_ = 0;        // history_window(options)
+  std::deque<std::pair<int, Rigid3>> map_poses_;  // (iteration, world_T_robot), oldest first
   std::vector<PointId> changed_;
   std::vector<int> changed_at_;  // per point: the iteration it was last marked
 };
