@@ -218,8 +218,10 @@ struct PointSlamOptions {
   // map (the rotation closest to it, register_two_points in rlt_icp.hpp). It gives the current
   // pose when exactly two mapped points are in view (pose_source two_points, ahead of
   // pose_from_unmapped), and places a group with two anchors (PrevGroupMin's floor is then 2).
-  // At density 5 (about 4 points in view) the map otherwise stalls for good once fewer than
-  // three mapped points stay in view. Ignored by the thesis preset.
+  // With one mapped point in view and no registration to provisional positions, the pose keeps
+  // that pose's rotation and takes its position from the point (pose_source one_point) instead
+  // of being held. At density 5 (about 4 points in view) the map otherwise stalls for good once
+  // fewer than three mapped points stay in view. Ignored by the thesis preset.
   bool two_point_registration = true;
   // Steepest line, degrees above the robot's floor (its x-z plane: +y is up, observation.hpp),
   // that two-point registration accepts [C]: the prior's yaw error reaches the result scaled by
@@ -316,8 +318,8 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
           holds(!o.provisional_root || o.pose_from_unmapped,
                 "needs pose_from_unmapped (its groups register to provisional positions)"));
   f.field("two_point_registration", o.two_point_registration,
-          "adaptive: two mapped points in view register the pose and a group, the rotation about their line from "
-          "the latest map-registered pose (beyond the thesis)");
+          "adaptive: two mapped points in view register the pose and a group, one the pose's position; the "
+          "rotation (about their line) from the latest map-registered pose (beyond the thesis)");
   f.field("two_point_max_elevation_deg", o.two_point_max_elevation_deg,
           "steepest line two-point registration accepts, degrees above the robot's floor", above(0.0),
           at_most(90.0));
