@@ -6,6 +6,10 @@
 //  2. E32: Map D with many loops, ms per iteration binned by the number of RltPlanes, mapped
 //     planes and visible planes. The thesis's claim (4.2.2, 4.3.8) is that the time follows the
 //     planes in view, not the map size, so the RltPlane bins should be flat.
+//  3. parts 2 and 3 on Map D at 1/2/4 loops and Rule 22 on/off (below);
+//  4. issue 15: Map E, two loops, with the interval checks and roll-backs on (Rules 31–34): median
+//     and p99 ms per iteration with the replays counted in, the share of the time spent
+//     replaying; and the resident memory of a 20,000-iteration run (BM_MapELongRunMemory).
 // Frames are simulated before the timed region; each step() is timed with steady_clock.
 // RELSLAM_PLANE_RUNTIME_DIR=DIR also writes every run's per-iteration CSV there (see write_csv).
 #include "relslam/eval/io/planar_map_file.hpp"
@@ -13,6 +17,8 @@
 #include "relslam/sim/planar_simulator.hpp"
 
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -38,11 +44,12 @@ struct Run {
   std::vector<PlaneFrame> frames;
 };
 
-Run simulate(const sim::PlanarMap& map) {
-  const sim::PlanarSimulator simulator(map, 1);
+Run simulate(const sim::PlanarMap& map, std::uint64_t seed = 1, int iterations = -1) {
+  const sim::PlanarSimulator simulator(map, seed);
+  const int n = iterations < 0 ? simulator.iterations() : std::min(iterations, simulator.iterations());
   Run run{simulator.path().world_T_robot(0), {}};
-  run.frames.reserve(static_cast<std::size_t>(simulator.iterations()));
-  for (int k = 0; k < simulator.iterations(); ++k) run.frames.push_back(simulator.frame(k).observation);
+  run.frames.reserve(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) run.frames.push_back(simulator.frame(k).observation);
   return run;
 }
 
@@ -262,6 +269,130 @@ void BM_Rule22Revisit(benchmark::State& state) {
 }
 BENCHMARK(BM_Rule22Revisit)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 
+// Part 4 (issue 15): Map E (its own large frustum and Gaussian noise, two loops) with parts 2
+// and 3 and the interval checks on (Rules 31–34, off by default): a check that fails sends a hint
+// and the step rolls back and replays, inside step(), so each step's time includes its replays.
+// Median and p99 ms per iteration pooled over seeds 1–3 (three runs each), and the share of the
+// time spent in RollBack (restore and replay, the Profiler's roll_back_ms).
+struct RollBackTotals {
+  std::vector<double> ms;
+  double replay_ms = 0, total_ms = 0;
+  int rollbacks = 0, replayed = 0, runs = 0;
+};
+RollBackTotals map_e_pooled;
+std::vector<std::string> rollback_lines;
+
+plane::RelativePlaneOptions with_roll_backs() {
+  plane::RelativePlaneOptions options = parts_2_and_3();
+  options.rules.interval_check = true;
+  return options;
+}
+
+void BM_MapETwoLoopsRollBacks(benchmark::State& state) {
+  const auto seed = static_cast<std::uint64_t>(state.range(0));
+  const Run run = simulate(map_file("e_motion_room.json"), seed);
+  RollBackTotals t;
+  for (auto _ : state) {
+    plane::RltXPointsS slam(with_roll_backs(), run.world_T_start);
+    double sum = 0;
+    for (const PlaneFrame& frame : run.frames) {
+      const auto start = std::chrono::steady_clock::now();
+      const plane::RelativePlaneStep step = slam.step(frame);
+      const double ms = ms_since(start);
+      t.ms.push_back(ms);
+      sum += ms;
+      t.replay_ms += step.timings.roll_back_ms;
+      t.rollbacks += step.roll_back.rollbacks;
+      t.replayed += step.roll_back.replayed_iterations;
+    }
+    t.total_ms += sum;
+    ++t.runs;
+    state.SetIterationTime(sum / 1e3);
+  }
+  state.counters["median_ms"] = quantile(t.ms, 0.5);
+  state.counters["p99_ms"] = quantile(t.ms, 0.99);
+  state.counters["replay_share"] = t.replay_ms / t.total_ms;
+  char line[200];
+  std::snprintf(line, sizeof line, "%4d %6zu %9.4f %8.4f %8.3f %9.1f %9.1f %8.2f", static_cast<int>(seed),
+                run.frames.size(), quantile(t.ms, 0.5), quantile(t.ms, 0.99), quantile(t.ms, 1.0),
+                static_cast<double>(t.rollbacks) / t.runs, static_cast<double>(t.replayed) / t.runs,
+                100 * t.replay_ms / t.total_ms);
+  rollback_lines.emplace_back(line);
+  map_e_pooled.ms.insert(map_e_pooled.ms.end(), t.ms.begin(), t.ms.end());
+  map_e_pooled.replay_ms += t.replay_ms, map_e_pooled.total_ms += t.total_ms;
+  map_e_pooled.rollbacks += t.rollbacks, map_e_pooled.replayed += t.replayed, map_e_pooled.runs += t.runs;
+}
+BENCHMARK(BM_MapETwoLoopsRollBacks)->DenseRange(1, 3)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// Item 2 of issue 15's bounded-memory test, measured: Map E looped for 20,000 iterations (14
+// loops) with the thesis's 1200-observation store and the roll-back checkpoints on. The resident
+// set now (/proc/self/statm) and the process's peak (getrusage ru_maxrss) before the run (the
+// frames already simulated) and at 5,000, 10,000, 15,000 and 20,000 iterations: bounded memory
+// shows as a flat resident set once the stores are full. The peak is the whole process's: run
+// this benchmark alone (--benchmark_filter=BM_MapELongRunMemory) for figures of this run only.
+double resident_mb() {
+  std::ifstream statm("/proc/self/statm");
+  long total = 0, resident = 0;
+  statm >> total >> resident;
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
+}
+std::vector<std::string> memory_lines;
+
+void BM_MapELongRunMemory(benchmark::State& state) {
+  sim::PlanarMap map = map_file("e_motion_room.json");
+  map.path.loops = 14;
+  const int iterations = static_cast<int>(state.range(0));
+  const Run run = simulate(map, 1, iterations);
+  for (auto _ : state) {
+    memory_lines.clear();
+    const auto sample = [&](int k, const plane::RltXPointsS& slam) {
+      std::size_t stored = 0;
+      for (const plane::RltPlane& p : slam.planes()) stored += static_cast<std::size_t>(p.size());
+      char line[200];
+      std::snprintf(line, sizeof line, "%6d %8.1f %8.1f %6zu %6zu %8zu %6zu %6zu", k, resident_mb(), peak_rss_mb(),
+                    slam.planes().size(), slam.xpoints().size(), stored, slam.storage().checkpoints(),
+                    slam.storage().frames());
+      memory_lines.emplace_back(line);
+    };
+    plane::RltXPointsS slam(with_roll_backs(), run.world_T_start);
+    sample(0, slam);
+    double sum = 0;
+    for (std::size_t k = 0; k < run.frames.size(); ++k) {
+      const auto start = std::chrono::steady_clock::now();
+      slam.step(run.frames[k]);
+      sum += ms_since(start);
+      if ((k + 1) % 5000 == 0) sample(static_cast<int>(k + 1), slam);
+    }
+    state.SetIterationTime(sum / 1e3);
+  }
+  state.counters["peak_rss_mb"] = peak_rss_mb();
+}
+BENCHMARK(BM_MapELongRunMemory)->Arg(20000)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void print_roll_backs() {
+  if (!rollback_lines.empty()) {
+    std::printf("\nMap E, two loops, parts 2-3 with the interval checks and roll-backs on (Rules 31-34), Gaussian noise; "
+                "each step's time includes its replays; 3 runs per seed\n%4s %6s %9s %8s %8s %9s %9s %8s\n",
+                "seed", "iters", "median_ms", "p99_ms", "max_ms", "rollbacks", "replayed", "replay%");
+    for (const std::string& line : rollback_lines) std::printf("%s\n", line.c_str());
+    const RollBackTotals& t = map_e_pooled;
+    std::printf("all  %6zu %9.4f %8.4f %8.3f %9.1f %9.1f %8.2f\n", t.ms.size(), quantile(t.ms, 0.5),
+                quantile(t.ms, 0.99), quantile(t.ms, 1.0), static_cast<double>(t.rollbacks) / t.runs,
+                static_cast<double>(t.replayed) / t.runs, 100 * t.replay_ms / t.total_ms);
+  }
+  if (!memory_lines.empty()) {
+    std::printf("\nMap E looped, 20,000 iterations, plane_capacity 1200, roll-back checkpoints on: resident and "
+                "peak memory (MB, whole process) as the run goes\n%6s %8s %8s %6s %6s %8s %6s %6s\n",
+                "iter", "rss_mb", "peak_mb", "rlt", "groups", "stored", "ckpts", "inputs");
+    for (const std::string& line : memory_lines) std::printf("%s\n", line.c_str());
+  }
+}
+
 void print_key_points() {
   if (!key_point_lines.empty()) {
     std::printf("\nParts 2 and 3 (relative_plane.key_points) on Map D, large frustum, seed 1; each step's fastest of "
@@ -339,5 +470,6 @@ int main(int argc, char** argv) {
   print_maps();
   print_e32();
   print_key_points();
+  print_roll_backs();
   return 0;
 }

@@ -68,7 +68,7 @@ set_each() { local a=(); for kv in "$@"; do a+=(--set "$kv"); done; echo "${a[@]
 
 echo "reproduce: thesis Chapters 4 and 6 into $out ($([ $quick -eq 1 ] && echo quick || echo full) mode); log in $log"
 
-# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01-E10, E12, E15, E18, E21, E31, E32).
+# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01-E22, E31, E32).
 # Seconds each, so quick mode runs them in full; the variant files go through sweep.
 step p-e01-invariance    run p-e01-invariance p-e01-invariance
 step p-four-planes       run p-four-planes p-four-planes
@@ -90,19 +90,45 @@ step p-e09-plane5        sweep p-e09-plane5
 step p-e12-rule28        sweep p-e12-rule28
 step p-e15-loop-closure-map-e sweep p-e15-loop-closure-map-e $(seeds)
 step p-e18-collinear     run p-e18-collinear p-e18-collinear
+# issue 15 (part 3): E19's save system needs the 1200-slot store to wrap (four loops of Map D; quick
+# mode runs two, which may be too few for it to wrap); E20: Rule 37 on Map E, two loops.
+step p-e19-save-system   sweep p-e19-save-system $(set_each $(short planar.loops=2))
+step p-e20-pseudo-merge  sweep p-e20-pseudo-merge $(seeds)
 step p-e32-runtime       relslam sweep scenarios/p-e32-runtime.json --out "$out/p-e32-runtime" --force -q --jobs 1 \
                            $([ $quick -eq 1 ] && echo "--param planar.loops=1,2")
 step p-room              run p-room p-room
+# issue 15 experiments (Relative Plane part 3): E16 (Rule 29), E17 (Rules 31-34: interval checks,
+# hints and roll-back); the motion model's E11 (Map E1's first corner), E13 (Rule 23's growth
+# threshold), E14 (frustum shape) and E22 (one partial plane in view). Seconds each.
+step p-e16-rule29        sweep p-e16-rule29
+step p-e17-interval-check sweep p-e17-interval-check
+step p-e11-first-corner  sweep p-e11-first-corner $(seeds)
+step p-e13-grow-threshold sweep p-e13-grow-threshold $(seeds)
+step p-e14-frustum-shape sweep p-e14-frustum-shape
+step p-e22-one-partial-plane run p-e22-one-partial-plane p-e22-one-partial-plane
 
 # Chapter 5 and the companion paper (spec relative_plane_em.md §6.1, E23-E30): points -> EM ->
-# Relative Plane (Figs 46, 105-108, paper Figs 6-8), the EM test bench (Figs 55-61) and EM1 vs
-# EM2 on identical frames (E29). E27 times EM and the algorithm per iteration: one run at a time.
+# Relative Plane (Figs 46, 105-108, paper Figs 6-8; E23's w_ma variants, the E28 noise sweep), the EM
+# test bench (Figs 55-61) and EM1 vs EM2 on identical frames (E29). E27 times EM and the algorithm per
+# iteration: one run at a time.
 step p-em-office         run p-em-office p-em-office $(set_each $(short planar.iterations=1000))
 step p-em-office-noise   run p-em-office-noise p-em-office-noise $(set_each $(short planar.iterations=1000))
+# E23's moving-average variants (Rule 18's w_ma 5, 3, 8) without and with point noise (E24).
+step p-em-office-w-ma    relslam sweep scenarios/p-em-office.json --out "$out/p-em-office-w-ma" --force -q \
+                           --jobs "$jobs" $(set_each $(short planar.iterations=1000))
+step p-em-office-noise-w-ma relslam sweep scenarios/p-em-office-noise.json --out "$out/p-em-office-noise-w-ma" \
+                           --force -q --jobs "$jobs" $(set_each $(short planar.iterations=1000))
 step p-em-room           run p-em-room p-em-room $(set_each $(short planar.loops=1))
 step p-em-room-noise     run p-em-room-noise p-em-room-noise $(set_each $(short planar.loops=1))
 step p-em-demo           relslam sweep scenarios/p-em-demo.json --out "$out/p-em-demo" --force -q --jobs 1 \
                            $(set_each $(short planar.iterations=600))
+# E28: Map E, one loop, σ_pt 0 to 0.2 (seconds a run: quick mode runs one seed instead of three);
+# noise_sweep.py then writes the sweep's noise_sweep.csv.
+noise_sweep() {
+  sweep p-em-noise-sweep --seeds "$([ $quick -eq 1 ] && echo 1 || echo 3)" &&
+    /usr/bin/python3 scripts/plot/noise_sweep.py "$out/p-em-noise-sweep"
+}
+step p-em-noise-sweep    noise_sweep
 step em-bench            relslam em-bench scenarios/p-em-office-noise.json --out "$out/em-bench" --force -q \
                            --seeds "$([ $quick -eq 1 ] && echo 2 || echo 5)"
 step e29-office          relslam em-bench scenarios/p-em-compare-office.json --compare --out "$out/e29-office" \

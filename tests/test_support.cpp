@@ -102,6 +102,13 @@ std::filesystem::path victoria_park_data() {
   return std::filesystem::exists(dir / "measurements.dat") ? dir : std::filesystem::path();
 }
 
+std::vector<std::string> scenario_run_args(const std::string& scenario, const std::filesystem::path& out,
+                                           const std::vector<std::string>& settings) {
+  std::vector<std::string> args = {"run", source_path("scenarios/" + scenario).string(), "--out", out.string(), "-q"};
+  for (const std::string& s : settings) args.insert(args.end(), {"--set", s});
+  return args;
+}
+
 CliResult run_relslam(const std::vector<std::string>& arguments) {
   std::vector<const char*> argv = {"relslam"};
   for (const std::string& a : arguments) argv.push_back(a.c_str());

@@ -52,4 +52,8 @@ struct CliResult {
 };
 CliResult run_relslam(const std::vector<std::string>& arguments);
 
+// `relslam run scenarios/<scenario> --out <out> -q --set <each of settings>`.
+std::vector<std::string> scenario_run_args(const std::string& scenario, const std::filesystem::path& out,
+                                           const std::vector<std::string>& settings);
+
 }  // namespace relslam::test

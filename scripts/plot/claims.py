@@ -1,5 +1,5 @@
 """The thesis's numbers (spec relative_point.md §10) and the Relative Plane facts it states (spec
-relative_plane_em.md §6.1, §6.3: E01-E10, E12, E15, E18, E21, E31, E32) next to ours, computed from the
+relative_plane_em.md §6.1, §6.3: E01-E22, E31, E32) next to ours, computed from the
 run folders.
 
 Each row names the thesis value, our value and the files it came from; a row whose run folder is
@@ -14,6 +14,7 @@ import os
 import numpy as np
 
 import figures as fg
+import noise_sweep
 import relslam_plot as rp
 
 P = functools.partial
@@ -386,9 +387,39 @@ def e18(run):
     until = "throughout" if first_bad is None else f"until iteration {first_bad}"
     valid = np.nonzero(d["pose_valid"] == 1)[0]
     last = f", last valid pose at iteration {d['iteration'][valid[-1]]:.0f}" if len(valid) else ""
-    return (f"Rule 30 off (the default; on gives the same run here): pose exact {until}{last}; {edges_tied} tied chain edge(s), "
+    return (f"distance test on, Rule 30 off (the defaults): pose exact {until}{last}; {edges_tied} tied chain edge(s), "
             f"{claims_tied} tied key-point claims; {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
             f"final mean map error {s['final_mean_map_error']:.3g}")
+
+
+def e19(run):
+    def describe(folder):
+        s = plane_summary(run, os.path.relpath(folder, run.path))
+        return (f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, pose valid "
+                f"{100 * s['pose_valid_fraction']:.1f} %, final mean map error {s['final_mean_map_error']:.3g}")
+    return per_variant(run, ("save_on", "rule35_only", "rule36_only", "save_off", "big_store_save_off"), "planes.csv",
+                       describe)
+
+
+def e20(run):
+    """Rule 37 on against off, seed by seed: iterations with another current group, one-way links, plane 1's e_ends."""
+    variants = dict(fg.plane_sweep(run.path))
+    if ("rule37_on",) not in variants or ("rule37_off",) not in variants:
+        raise rp.DataError(f"{os.path.join(run.path, 'sweep.csv')}: column variant: needs rule37_on and rule37_off")
+    cells = []
+    for on, off in zip(variants[("rule37_on",)], variants[("rule37_off",)]):
+        it = [rp.read_table(run.file(os.path.relpath(f, run.path), fg.PLANE, "iterations.csv"),
+                            ["current_group", "oneway_links"], text=("current_group",)) for f in (on, off)]
+        n = min(len(it[0]["current_group"]), len(it[1]["current_group"]))
+        differ = sum(it[0]["current_group"][k] != it[1]["current_group"][k] for k in range(n))
+        plane1 = []
+        for f in (on, off):
+            t = rp.read_table(run.file(os.path.relpath(f, run.path), fg.PLANE, "planes.csv"), ["id", "e_ends"])
+            hit = np.nonzero(t["id"] == 1)[0]
+            plane1.append(f"{t['e_ends'][hit[0]]:.3g}" if len(hit) else "not mapped")
+        cells.append(f"{os.path.basename(on)}: {int(np.nansum(it[0]['oneway_links']))} one-way link(s), current group "
+                     f"differs in {differ} iteration(s), plane 1 e_ends {plane1[0]} on / {plane1[1]} off")
+    return "; ".join(cells)
 
 
 def e32(run):
@@ -396,6 +427,134 @@ def e32(run):
     return "; ".join(f"{k} loop(s): median {v[0]:.3g} ms (first tenth {v[1]:.3g}, last tenth {v[2]:.3g}), {v[3]} "
                      f"RltPlanes" for k, v in fg.runtime_by_size(run.path).items())
 
+
+# issue 15: Relative Plane part 3: the motion model (Rules 23-27, 29: E11, E13, E14, E16, E22) and the interval
+# checks, hints and roll-back (Rules 31-34: E17).
+
+def e17(run):
+    run.file("sweep.csv")
+    cells = []
+    for name in ("interval_check_off", "interval_check_on"):
+        rel = os.path.relpath(fg.variant_folder_of(run.path, name), run.path)
+        s = plane_summary(run, rel)
+        t = rp.read_table(run.file(rel, "summary.csv"), ["algorithm", "hints", "rollbacks", "replayed_iterations"],
+                          text=("algorithm",))
+        i = list(t["algorithm"]).index(fg.PLANE)
+        cells.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, final mean map error "
+                     f"{s['final_mean_map_error']:.3g}, final position error {s['final_position_error']:.3g}, "
+                     f"{t['rollbacks'][i]:.0f} roll-back(s) from {t['hints'][i]:.0f} hint(s), "
+                     f"{t['replayed_iterations'][i]:.0f} iterations replayed")
+    return "; ".join(cells)
+
+
+PLANE_FILES = (os.path.join(fg.PLANE, "iterations.csv"), os.path.join(fg.PLANE, "planes.csv"))
+
+
+def seed_folders(run, names=PLANE_FILES):
+    """Every run folder of a planar sweep (all variants and seeds), recording the files (relative to a run
+    folder) read from each."""
+    run.file("sweep.csv")
+    folders = [f for _, fs in fg.plane_sweep(run.path, ("seed",)) for f in fs]
+    for folder in folders:
+        for name in names:
+            run.file(os.path.relpath(folder, run.path), name)
+    return folders
+
+
+def e11(run):
+    """Pooled over the seeds: where the motion model starts and ends, the end wall's growth, wrong key
+    points inside and outside it, and the map-error events."""
+    starts, ends, grown, inside, outside, events, quick, joined, longest = [], [], [], [0, 0], [0, 0], 0, 0, 0, 0
+    folders = seed_folders(run, PLANE_FILES + (os.path.join(fg.PLANE, "keypoints.csv"),))
+    for folder in folders:
+        e, before, heading = fg.first_corner(folder)
+        starts.append(before)
+        ends.append(heading)
+        grown.append(e["length"] / e["true_length"])
+        split = fg.key_points_by_phase(folder)
+        inside = [a + b for a, b in zip(inside, split["in"])]
+        outside = [a + b for a, b in zip(outside, split["out"])]
+        n, q, _, _ = fg.event_healing(folder)
+        events, quick = events + n, quick + q
+        joined += sum(e[3] for e in fg.map_error_events(folder))
+        longest = max([longest] + [ep[3] for ep in fg.wrong_episodes(folder)])
+    return (f"{len(folders)} seed(s): the motion model starts {min(starts):.2g}-{max(starts):.2g} units before the "
+            f"turn (the end of the hallway) and ends {min(ends):.0f}-{max(ends):.0f}° into it; the end wall's tracked "
+            f"length at its end {min(grown):.3f}-{max(grown):.3f} of its true length; wrong key-point claims (the "
+            f"end claimed is not a real wall end in view) {inside[0]} of {inside[1]} inside the motion model, "
+            f"{outside[0]} of {outside[1]} outside (longest wrong run {longest} iterations); {events} map-error "
+            f"events, {quick} healed within {fg.HEAL_ITERATIONS} iterations, {joined} of them a new plane joining the "
+            f"map")
+
+
+LOST = 1.0  # units: a position error above this is a lost pose, not noise
+
+
+def e13(run):
+    seed_folders(run)
+    stats = fg.grown_lengths(run.path)
+    cells = []
+    for (name,), folders in fg.plane_sweep(run.path):
+        lost = [int(np.sum(fg.iterations(f, ["position_error"], fg.PLANE)["position_error"] > LOST)) for f in folders]
+        cells.append(fg.grown_text(name, stats[name]) + f"; position error above {LOST:g} in "
+                     f"{', '.join(map(str, lost))} iterations (per seed)")
+    return "; ".join(cells)
+
+
+def e14(run):
+    seed_folders(run, (os.path.join(fg.PLANE, "planes.csv"), "plane_observations.csv", "ground_truth_path.tum"))
+    cells = []
+    for name, (frustum, shape, wall, seen, mapped, true) in fg.frustum_turns(run.path).items():
+        k = int(np.argmax(seen["length"]))
+        cells.append(f"{name}: wall {wall} in view up to {seen['length'][k]:.3g} (ψ {seen['psi_deg'][k]:.0f}°), "
+                     f"{seen['length'][-1]:.3g} at the turn's end, farthest end {np.max(seen['range']):.3g}; mapped "
+                     f"{mapped:.3g} of {true:.3g}")
+    return "; ".join(cells)
+
+
+def e16(run):
+    cells = []
+    for name in ("rule29_on", "rule29_off"):
+        folder = fg.variant_folder_of(run.path, name)
+        for file in ("iterations.csv", "groups.csv", "planes.csv"):
+            run.file(os.path.relpath(folder, run.path), fg.PLANE, file)
+        n, back, groups = fg.motion_model_exits(folder)
+        s = plane_summary(run, os.path.relpath(folder, run.path))
+        cells.append(f"{name}: {groups} groups; {back} of {n} motion models ended in a group made before them; "
+                     f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, final mean map error "
+                     f"{s['final_mean_map_error']:.3g}")
+    return "; ".join(cells)
+
+
+def e22(run):
+    run.file(fg.PLANE, "iterations.csv")
+    run.file("plane_observations.csv")
+    k, first, last = fg.one_plane_iteration(run.path)
+    d = run.iterations(["mm_active", "visible_planes", "position_error"], fg.PLANE)
+    loops, n = fg.run_loops(run.path)
+    last_loop = d["iteration"] >= n * (loops - 1) / loops
+    single = last_loop & (d["visible_planes"] == 1)
+    return (f"on the last loop {int(np.sum(single))} iterations have a single plane in view, the motion model active "
+            f"in {int(np.sum(single & (d['mm_active'] == 1)))} of them; the first corner's stretch {first}-{last}, "
+            f"position error there max {np.nanmax(d['position_error'][(d['iteration'] >= first) & (d['iteration'] <= last)]):.3g}")
+
+
+ISSUE15_CLAIMS = [
+    ("E11 first motion-model test, Map E1 (Figs 83-86)", "the motion model starts at the end of the hallway; the end "
+     "wall grows during the turn; a short key-point failure on the large plane gives a large but brief map error "
+     "that fixes itself (4.3.6)", ["p-e11-first-corner"], e11),
+    ("E13 growth threshold (Fig 88)", "with noise a plane can be grown a little past its true size while turning; "
+     "left as is (4.3.6)", ["p-e13-grow-threshold"], e13),
+    ("E14 frustum shape (Fig 89)", "planar frustum: the end wall grows then shrinks while turning and is mapped "
+     "larger than it is seen; not realistic, fixed by enlarging the frustum (4.3.6)", ["p-e14-frustum-shape"], e14),
+    ("E16 Rule 29 (Fig 93)", "leaving a motion model where the robot has been returns to the old RltXPoint instead "
+     "of making a new one (4.3.6)", ["p-e16-rule29"], e16),
+    ("E17 interval checks, hints and roll-back (Figs 94-96)", "off: a plane seen as another leaves is compared "
+     "over a tiny interval and barely mapped; hints and roll-back fix it cleanly (4.3.7.2)",
+     ["p-e17-interval-check"], e17),
+    ("E22 one partial plane (Fig 69, paper Fig 5)", "at a corner on the second loop only one partial plane is in "
+     "view and the motion model is active (4.2.4, paper §II.E)", ["p-e22-one-partial-plane"], e22),
+]
 
 ISSUE13_CLAIMS = [
     ("E02 key-point pairs of a growing and a shrinking plane (Fig 68)", "the pair from the two static ends has the "
@@ -414,13 +573,20 @@ ISSUE13_CLAIMS = [
     ("E15 Map E loop closure: Rules 4 and 19 (Figs 90-92)", "a duplicate kept on purpose; without the first-reading "
      "resize a wrong global alignment; without Rule 19 planes too small or badly placed (4.3.6)",
      ["p-e15-loop-closure-map-e"], e15),
-    ("E18 collinear pieces, Rule 30 off (Fig 97)", "the collinear pair ties both diagonals and misplaces a plane; "
-     "Rule 30 fixes it (4.3.7.1)", ["p-e18-collinear"], e18),
+    ("E18 collinear pieces (Fig 97)", "the collinear pair ties both diagonals and misplaces a plane; "
+     "a distance test or Rule 30 fixes it (4.3.7.1)", ["p-e18-collinear"], e18),
+    ("E19 save system, 1200-slot store (Figs 98-100)", "without the save system planes vanish after the "
+     "wrap-around; with it, or a much bigger store, they stay; either of Rules 35 and 36 is enough (4.3.7.3)",
+     ["p-e19-save-system"], e19),
+    ("E20 pseudo plane merging, Rule 37 (Figs 101/102)", "off: after a motion model a wall seen again as a new "
+     "plane leaves the wrong group current and plane 1 mis-mapped; on: right (4.3.7.4)", ["p-e20-pseudo-merge"], e20),
     ("E32 time per iteration vs map size", "follows the planes in view, not the map size: flat over a long run "
      "(4.2.2, 4.3.8)", ["p-e32-runtime"], e32),
 ]
 
 # ---- issue 14 Chapter 5: points -> EM -> Relative Plane --------------------------------------
+EM_TROUBLE = 0.95  # EM "has trouble finding planes" once its frame-mean recall is under this [R]
+
 
 def em_map(run):
     """A Chapter 5 run's map (verdict as Chapter 4's) and its extraction's frame means."""
@@ -490,6 +656,39 @@ def e29_speed(*runs):
     return "; ".join(cells)
 
 
+def e23_w_ma(*sweeps):
+    """Each moving-average window of Rule 18 (the sweeps' variants, first seed) on E23 and E24: the map
+    beside the default's."""
+    cells = []
+    for run in sweeps:
+        run.file("sweep.csv")
+        maps = []
+        for (name,), folders in fg.plane_sweep(run.path):
+            s = plane_summary(run, os.path.relpath(folders[0], run.path))
+            maps.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
+                        f"{s['duplicates']:.0f} duplicate(s), final mean map error {s['final_mean_map_error']:.3g}, "
+                        f"pose valid {100 * s['pose_valid_fraction']:.1f} %")
+        cells.append(f"{os.path.basename(run.path)}: " + "; ".join(maps))
+    return " — ".join(cells)
+
+
+def e28_noise(run):
+    """E28 from noise_sweep.csv: per σ_pt the extraction and the map, then whether the map degrades
+    and from which σ_pt EM's recall falls under EM_TROUBLE."""
+    run.file("noise_sweep.csv")
+    t = noise_sweep.read(run.path)
+    sigma, error, recall = t["point_sigma"], t["final_mean_map_error"], t["em_recall"]
+    cells = [f"σ_pt {s:g}: EM recall {r:.3g}, precision {p:.3g}, normal error {n:.2g}°; map error {e:.3g}, "
+             f"{w:.1f} of {ws:.0f} walls, pose valid {100 * v:.0f} %"
+             for s, r, p, n, e, w, ws, v in zip(sigma, recall, t["em_precision"], t["mean_normal_err_deg"], error,
+                                                t["walls_mapped"], t["walls_seen"], t["pose_valid_fraction"])]
+    trouble = sigma[recall < EM_TROUBLE]
+    return (f"{int(t['seeds'].min())} seed(s) per σ_pt; map error {error[0]:.3g} at σ_pt {sigma[0]:g}, "
+            f"{error[-1]:.3g} at {sigma[-1]:g} ({'degrades' if error[-1] > error[0] else 'does not degrade'}); "
+            + (f"EM recall under {EM_TROUBLE:g} from σ_pt {trouble[0]:g}" if len(trouble) else
+               f"EM recall never under {EM_TROUBLE:g}") + " — " + "; ".join(cells))
+
+
 # (quantity, thesis value, run folders, claim function)
 CLAIMS = [
     ("loop length / iterations (S-F8)", "≈1145 units / ≈3800", ["s-f8"], loop),
@@ -554,7 +753,12 @@ CLAIMS = [
      "unattached; the defaults avoid these (3.5.4)", ["em-bench"], e30_bench),
     ("E29 EM2 vs EM1 on identical frames", "EM2 about twice as fast as EM1, similar quality (3.5.4)",
      ["e29-office", "e29-room"], e29_speed),
-] + ISSUE13_CLAIMS
+    ("E23 moving-average window w_ma (Rule 18), E23 and E24", "changing the moving-average window fixes the "
+     "noise-free turn error but has an adverse effect with noisy data (5.2)",
+     ["p-em-office-w-ma", "p-em-office-noise-w-ma"], e23_w_ma),
+    ("E28 noise sweep, Map E, EM2", "the map degrades as the noise rises; past some level EM has trouble finding "
+     "planes (paper §III)", ["p-em-noise-sweep"], e28_noise),
+] + ISSUE13_CLAIMS + ISSUE15_CLAIMS
 
 
 def rows(runs):

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Thesis charts from the run folders `relslam` writes: Chapter 4's Relative Plane figures (Figs 64-82,
-87, 90-92, 97, the paper's Figs 1-4) and Chapter 6's Relative Point figures (Figs 110-171).
+"""Thesis charts from the run folders `relslam` writes: Chapter 4's Relative Plane figures (Figs 64-102,
+the paper's Figs 1-5), Chapter 5's (Figs 46, 55-61, 105-108, the paper's Figs 6-8) and Chapter 6's
+Relative Point figures (Figs 110-171).
 
 Every figure reads only CSV/JSON files below RUNS (the folder names of scripts/reproduce.sh, listed
 in FIGURES) and writes one PNG, OUT/fig<N>.png (extras: OUT/components.png, OUT/vp-timing.png), of
@@ -23,6 +24,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import catalogue
+import noise_sweep
 import relslam_plot as rp
 
 FIGSIZE, DPI = (10, 6), 100  # 1000 x 600 pixels; plot_test.sh checks it
@@ -448,9 +450,14 @@ def true_walls(run):
 
 
 def true_path(run):
-    """{iteration, x, z, psi_deg} of ground_truth_path.tum (TUM time = iteration). The planar turn by
-    ψ is a rotation about −y (core/planar_pose.hpp), so q = (0, −sin ψ/2, 0, cos ψ/2)."""
-    t = rp.read_tum(os.path.join(run, "ground_truth_path.tum"))
+    """{iteration, x, z, psi_deg} of ground_truth_path.tum (TUM time = iteration)."""
+    return planar_track(os.path.join(run, "ground_truth_path.tum"))
+
+
+def planar_track(path):
+    """{iteration, x, z, psi_deg} of a planar run's TUM file. The planar turn by ψ is a rotation about −y
+    (core/planar_pose.hpp), so q = (0, −sin ψ/2, 0, cos ψ/2)."""
+    t = rp.read_tum(path)
     psi = np.degrees(2 * np.arctan2(-np.asarray(t["qy"]), np.asarray(t["qw"])))
     return {"iteration": np.asarray(t["t"]), "x": np.asarray(t["x"]), "z": np.asarray(t["z"]),
             "psi_deg": (psi + 180) % 360 - 180}
@@ -1128,16 +1135,22 @@ def per_wall_bars(fig, sweep, column, ylabel, names=None):
     return "; ".join(texts)
 
 
-def variant_overlays(fig, sweep, names):
-    """The final maps of some variants side by side (true walls yellow, planes blue, groups)."""
+def variant_overlays(fig, sweep, names, groups=False):
+    """The final maps of some variants side by side (true walls yellow, planes blue; with `groups` each
+    group's X label and member lines, and the start group's planes in the text)."""
     axes = np.atleast_1d(fig.subplots(1, len(names)))
     for ax, name in zip(axes, names):
-        plane_overlay(ax, variant_folder_of(sweep, name), groups=False, title=name)
+        plane_overlay(ax, variant_folder_of(sweep, name), groups=groups, title=name)
     texts = []
     for name in names:
-        s = count_summary(variant_folder_of(sweep, name))
+        run = variant_folder_of(sweep, name)
+        s = count_summary(run)
         texts.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
                      f"{s['duplicates']:.0f} duplicates, final mean map error {s['final_mean_map_error']:.3g}")
+        if groups:
+            layout = group_layout(run)[0]
+            texts[-1] += (f", {len(layout)} groups on the map, X0 holds plane(s) "
+                          + (", ".join(map(str, layout[0][2])) if 0 in layout else "none"))
     return "; ".join(texts)
 
 
@@ -1238,8 +1251,8 @@ def collinear_run(run):
 
 
 def collinear_figure(fig, run):
-    """Fig 97 (E18): Map D with the small frustum, Rule 30 off (its default): exact until the collinear
-    pieces tie, then the map error and the pose go."""
+    """Fig 97 (E18): Map D with the small frustum, the defaults (the distance test on, Rule 30 off): the
+    collinear pieces tie both diagonals (Rule 15) and the distance test takes the real ends."""
     d, first_bad, ambiguous_claims, ambiguous_edges = collinear_run(run)
     axes = fig.subplots(2, 1, sharex=True)
     axes[0].plot(d["iteration"], d["map_error"], lw=1, label="map error (sum of e_ends)")
@@ -1259,6 +1272,57 @@ def collinear_figure(fig, run):
             f"{d['iteration'][valid[-1]] if len(valid) else float('nan'):.0f}; {ambiguous_claims} key-point claims and "
             f"{ambiguous_edges} chain edges tied both diagonals (Rule 15); {s['walls_mapped']:.0f} of "
             f"{s['walls_seen']:.0f} walls mapped, pose valid {100 * s['pose_valid_fraction']:.0f} %")
+
+
+# E19 (Figs 98, 99) and E20 (Figs 101, 102) ----------------------------------------------------
+
+E19 = ("p-e19-save-system",)
+E20 = ("p-e20-pseudo-merge",)
+
+
+def planes_on_map_figure(fig, sweep):
+    """Fig 98 (E19): planes on the map per iteration for each save-system variant; without Rules 35 and
+    36 planes vanish once the 1200-slot store wraps."""
+    ax = fig.subplots()
+    texts = []
+    for (name,), folders in plane_sweep(sweep):
+        d = iterations(folders[0], ["planes_in_map"], PLANE)
+        ax.plot(d["iteration"], d["planes_in_map"], lw=1, label=name)
+        s = count_summary(folders[0])
+        texts.append(f"{name}: {int(d['planes_in_map'][-1])} planes at the end, {s['walls_mapped']:.0f} of "
+                     f"{s['walls_seen']:.0f} walls mapped")
+    finish(ax, "iteration", "planes on the map")
+    return "; ".join(texts)
+
+
+def shade_motion_model(ax, d, top):
+    """Grey behind the iterations with an active motion model (iterations.csv mm_active), up to `top`."""
+    ax.fill_between(d["iteration"], 0, top * d["mm_active"], step="post", color="grey", alpha=0.2,
+                    label="motion model")
+
+
+def current_group_figure(fig, sweep):
+    """Fig 101 (E20): the current group per iteration with Rule 37 off and on (first seed), and where
+    one-way links were added."""
+    runs = dict(plane_sweep(sweep))
+    axes = fig.subplots(2, 1, sharex=True)
+    texts = []
+    for ax, name in zip(axes, ("rule37_off", "rule37_on")):
+        if (name,) not in runs:
+            raise rp.DataError(f"{os.path.join(sweep, 'sweep.csv')}: column variant: no {name!r}")
+        d = iterations(runs[(name,)][0], ["current_group", "oneway_links", "mm_active"], PLANE)
+        ax.plot(d["iteration"], d["current_group"], drawstyle="steps-post", lw=1, label=f"current group, {name}")
+        shade_motion_model(ax, d, np.nanmax(d["current_group"]))
+        added = np.nonzero(d["oneway_links"] > 0)[0]
+        if len(added):
+            ax.plot(d["iteration"][added], d["current_group"][added], "rv", label="one-way links added")
+        finish(ax, "iteration" if name == "rule37_on" else "", "group")
+        texts.append(f"{name}: {int(np.nansum(d['oneway_links']))} one-way link(s)")
+    off = iterations(runs[("rule37_off",)][0], ["current_group"], PLANE)["current_group"]
+    on = iterations(runs[("rule37_on",)][0], ["current_group"], PLANE)["current_group"]
+    n = min(len(on), len(off))
+    differ = int(np.sum(~((on[:n] == off[:n]) | (np.isnan(on[:n]) & np.isnan(off[:n])))))
+    return "; ".join(texts) + f"; the current group differs in {differ} iteration(s)"
 
 
 # E32 ------------------------------------------------------------------------------------------
@@ -1319,13 +1383,455 @@ ISSUE13_FIGURES = [
            P(per_wall_bars, column="len_ratio", ylabel="mapped length / true length")),
     Figure(92, "map error per wall with and without Rules 4 and 19, E15", E15,
            P(per_wall_bars, column="e_ends", ylabel="e_ends (units)")),
-    Figure(97, "collinear pieces on Map D, small frustum, Rule 30 off, E18", ("p-e18-collinear",),
+    Figure(94, "interval checks, hints and roll-back off and on (Rules 31-34), Map E, E17",
+           ("p-e17-interval-check",),
+           P(plane_variants, columns=("map_error", "planes_in_map", "rollbacks"),
+             ylabels=("map error (units)", "planes on the map", "roll-backs"))),
+    Figure(97, "collinear pieces on Map D, small frustum, Rule 15's tie decided by the distance test, E18",
+           ("p-e18-collinear",),
            collinear_figure),
+    Figure(98, "planes on the map per iteration, save system variants, E19", E19, planes_on_map_figure),
+    Figure(99, "final maps without and with the save system (Rules 35, 36), E19", E19,
+           P(variant_overlays, names=("save_off", "save_on"))),
+    Figure(101, "current group per iteration, Rule 37 off and on, E20", E20, current_group_figure),
+    Figure(102, "final maps with Rule 37 off and on, E20", E20, P(variant_overlays, names=("rule37_off", "rule37_on"))),
     Figure("e32-runtime", "E32: run time per iteration against the map size", ("p-e32-runtime",), runtime_figure),
 ]
 FIGURES = sorted([f for f in FIGURES if isinstance(f.id, int)] + [f for f in ISSUE13_FIGURES if isinstance(f.id, int)],
                  key=lambda f: f.id) + [f for f in FIGURES if not isinstance(f.id, int)] + \
     [f for f in ISSUE13_FIGURES if not isinstance(f.id, int)]
+
+# ---- issue 15 experiments: Relative Plane part 3 (spec relative_plane_em.md §6.1 E11, E13, E14, E16, E17,
+# E19, E22; thesis 4.2.4, 4.3.6-4.3.7.3): the motion model (Rules 23-27, 29) and its artefacts. As above,
+# claims.py calls the same helpers.
+
+FRUSTUMS = {"small": (30.0, 7.0), "large": (35.0, 30.0)}  # spec §3.3 presets: half angle (degrees), far distance
+VIEWED = {"color": "red", "lw": 3.5, "solid_capstyle": "butt", "zorder": 5}  # the part in view (Fig 69, paper Fig 5)
+
+
+def first_seed(sweep):
+    """The first run folder of a planar sweep (also of one without variants, over seeds only)."""
+    return plane_sweep(sweep, ("seed",))[0][1][0]
+
+
+def wrap_deg(angle):
+    return (np.asarray(angle) + 180) % 360 - 180
+
+
+def wall_lengths(run):
+    w = rp.read_table(os.path.join(run, "ground_truth_walls.csv"), ["id", "length"])
+    return {int(i): float(n) for i, n in zip(w["id"], w["length"])}
+
+
+def mm_episodes(run):
+    """Each motion model of a run (consecutive iterations with mm_active on one mm_plane), as a dict: first
+    and last iteration, plane, its true wall and the wall's length, and the tracked length
+    (mm_s_max − mm_s_min) at its first and last iteration."""
+    d = iterations(run, ["mm_active", "mm_plane", "mm_s_min", "mm_s_max"], PLANE)
+    p = plane_table(run, "planes.csv", ["id", "true_wall"])
+    wall_of = {int(i): int(w) for i, w in zip(p["id"], p["true_wall"]) if np.isfinite(w)}
+    lengths = wall_lengths(run)
+    active = np.nonzero(d["mm_active"] == 1)[0]
+    starts = [k for k in active if k == 0 or d["mm_active"][k - 1] != 1 or d["mm_plane"][k - 1] != d["mm_plane"][k]]
+    out = []
+    for first in starts:
+        last = first
+        while last + 1 < len(d["iteration"]) and d["mm_active"][last + 1] == 1 and \
+                d["mm_plane"][last + 1] == d["mm_plane"][first]:
+            last += 1
+        plane = int(d["mm_plane"][first])
+        wall = wall_of.get(plane, -1)
+        out.append({"first": int(d["iteration"][first]), "last": int(d["iteration"][last]), "plane": plane,
+                    "wall": wall, "true_length": lengths.get(wall, float("nan")),
+                    "start_length": d["mm_s_max"][first] - d["mm_s_min"][first],
+                    "length": d["mm_s_max"][last] - d["mm_s_min"][last]})
+    return out
+
+
+def no_motion_model(run):
+    return rp.DataError(f"{os.path.join(run, PLANE, 'iterations.csv')}: column mm_active: no motion model")
+
+
+def observed_wall(run, wall):
+    """One wall's observations (plane_observations.csv, robot frame, the robot at the origin): {iteration,
+    length in view, range of its farther end, heading (true, degrees)}."""
+    o = rp.read_table(os.path.join(run, "plane_observations.csv"),
+                      ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+    sel = o["true_wall"] == wall
+    it = o["iteration"][sel]
+    path = true_path(run)
+    heading = dict(zip(path["iteration"], path["psi_deg"]))
+    return {"iteration": it,
+            "length": np.hypot(o["kp2_x"][sel] - o["kp1_x"][sel], o["kp2_z"][sel] - o["kp1_z"][sel]),
+            "range": np.maximum(np.hypot(o["kp1_x"][sel], o["kp1_z"][sel]), np.hypot(o["kp2_x"][sel], o["kp2_z"][sel])),
+            "psi_deg": np.array([heading.get(i, np.nan) for i in it])}
+
+
+def turn_iterations(run):
+    """The iterations of the run's first turn in place: the true heading changes, the position does not."""
+    path = true_path(run)
+    turning = np.abs(wrap_deg(np.diff(path["psi_deg"]))) > 1e-6
+    first = np.nonzero(turning)[0]
+    if len(first) == 0:
+        raise rp.DataError(f"{os.path.join(run, 'ground_truth_path.tum')}: the robot never turns")
+    last = first[0]
+    while last + 1 < len(turning) and turning[last + 1]:
+        last += 1
+    return path["iteration"][first[0]:last + 2]
+
+
+def mapped_length(run, wall):
+    """The longest mapped plane of a wall (planes.csv), NaN when none is mapped."""
+    p = plane_table(run, "planes.csv", ["true_wall", "length"])
+    lengths = p["length"][(p["true_wall"] == wall) & np.isfinite(p["length"])]
+    return float(lengths.max()) if len(lengths) else float("nan")
+
+
+def draw_view(ax, run, iteration, walls=None):
+    """The robot at an iteration (true pose, a triangle looking along its heading) and what it saw then:
+    each observed plane (of `walls`, else all) moved into the world by the true pose, red. Returns the
+    pieces drawn as [(a, b, wall)] in the world."""
+    t, psi = robot_pose(run, iteration)
+    rot = planar_rotation(psi)
+    pieces = [(rot @ a + t, rot @ b + t, w) for a, b, w in extracted_planes(run, iteration)
+              if walls is None or w in walls]
+    for i, (a, b, _) in enumerate(pieces):
+        ax.plot([a[0], b[0]], [a[1], b[1]], label="in view at that iteration" if i == 0 else None, **VIEWED)
+    ax.plot([t[0]], [t[1]], marker=(3, 0, np.degrees(psi) - 90), ms=12, color="black", ls="none", zorder=6,
+            label=f"robot at iteration {iteration} (true pose)")
+    ax.legend(fontsize=7)
+    return pieces
+
+
+# E11 (Figs 83-86) ------------------------------------------------------------------------------
+
+E11 = ("p-e11-first-corner",)
+
+
+def first_corner(run):
+    """The first motion model of an E1 run against the truth: its episode, how far the robot was from the
+    turn when it started (units of path), and the true heading when it ended."""
+    episodes = mm_episodes(run)
+    if not episodes:
+        raise no_motion_model(run)
+    e = episodes[0]
+    path = true_path(run)
+    turn = turn_iterations(run)
+    at = {int(i): k for k, i in enumerate(path["iteration"])}
+    k0, k1 = at[e["first"]], at[int(turn[0])]
+    before = float(np.sum(np.hypot(np.diff(path["x"][k0:k1 + 1]), np.diff(path["z"][k0:k1 + 1]))))
+    return e, before, float(path["psi_deg"][at[e["last"]]] - path["psi_deg"][k1])
+
+
+def key_points_by_phase(run):
+    """(wrong, checked) key-point claims inside and outside the motion models: {"in": (...), "out": (...)}."""
+    d = iterations(run, ["kp_checked", "kp_wrong", "mm_active"], PLANE)
+    mm = d["mm_active"] == 1
+    return {"in": (int(np.sum(d["kp_wrong"][mm])), int(np.sum(d["kp_checked"][mm]))),
+            "out": (int(np.sum(d["kp_wrong"][~mm])), int(np.sum(d["kp_checked"][~mm])))}
+
+
+def first_corner_map(fig, sweep):
+    """Fig 83 (E11): Map E1's final map, the true and estimated paths, the motion model's poses red."""
+    run = first_seed(sweep)
+    ax = fig.subplots()
+    plane_overlay(ax, run)
+    est = planar_track(os.path.join(run, PLANE, "trajectory.tum"))
+    d = iterations(run, ["mm_active"], PLANE)
+    mm = np.isin(est["iteration"], d["iteration"][d["mm_active"] == 1])
+    ax.plot(est["x"][mm], est["z"][mm], ".", color="red", ms=3, zorder=4, label="estimated poses, motion model")
+    ax.legend(fontsize=8)
+    e, before, heading = first_corner(run)
+    s = count_summary(run)
+    return (f"seed 1: the motion model tracks plane {e['plane']} (wall {e['wall']}) from iteration {e['first']}, "
+            f"{before:.2g} units before the turn, to {e['last']}, {heading:.0f}° into it; {s['walls_mapped']:.0f} of "
+            f"{s['walls_seen']:.0f} seen walls mapped, final mean map error {s['final_mean_map_error']:.3g} per plane "
+            f"(e_ends counts the parts of the long walls never seen)")
+
+
+def mm_pose_track(fig, sweep):
+    """Fig 84 (E11): the pose through the corner: position error, and the estimated against the true
+    heading (the motion model's own heading in its frame as dots), the motion model shaded."""
+    run = first_seed(sweep)
+    d = iterations(run, ["position_error", "mm_active", "mm_heading_deg"], PLANE)
+    truth, est = true_path(run), planar_track(os.path.join(run, PLANE, "trajectory.tum"))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    top.plot(d["iteration"], d["position_error"], lw=1, label="position error")
+    shade_motion_model(top, d, np.nanmax(d["position_error"]))
+    finish(top, "", POS)
+    bottom.plot(truth["iteration"], truth["psi_deg"], lw=2.5, color="orange", label="true heading")
+    bottom.plot(est["iteration"], est["psi_deg"], lw=1, color="tab:blue", label="estimated heading")
+    bottom.plot(d["iteration"], d["mm_heading_deg"], ".", ms=2, color="red", label="motion model frame heading")
+    shade_motion_model(bottom, d, np.nanmax(truth["psi_deg"]))
+    finish(bottom, "iteration", "heading ψ (degrees)")
+    mm = d["mm_active"] == 1
+    return (f"seed 1: position error inside the motion model mean {np.nanmean(d['position_error'][mm]):.3g}, max "
+            f"{np.nanmax(d['position_error'][mm]):.3g}; outside mean {np.nanmean(d['position_error'][~mm]):.3g}, "
+            f"max {np.nanmax(d['position_error'][~mm]):.3g}")
+
+
+def mm_growth(fig, sweep):
+    """Fig 85 (E11): the motion model's track: its distance to the wall, and the wall's tracked length
+    (mm_s_max − mm_s_min) beside the length in view, against the iteration."""
+    run = first_seed(sweep)
+    e, _, _ = first_corner(run)
+    d = iterations(run, ["mm_distance", "mm_s_min", "mm_s_max", "mm_active"], PLANE)
+    seen = observed_wall(run, e["wall"])
+    lo, hi = e["first"] - 30, e["last"] + 30
+    window = (d["iteration"] >= lo) & (d["iteration"] <= hi)
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    top.plot(d["iteration"][window], d["mm_distance"][window], lw=1.2, label="D: distance to the wall (mm_distance)")
+    finish(top, "", "units")
+    bottom.plot(d["iteration"][window], (d["mm_s_max"] - d["mm_s_min"])[window], lw=2, label="tracked length")
+    w = (seen["iteration"] >= lo) & (seen["iteration"] <= hi)
+    bottom.plot(seen["iteration"][w], seen["length"][w], lw=1, label=f"length in view of wall {e['wall']}")
+    bottom.axhline(e["true_length"], color="black", ls="--", lw=0.8, label=f"true length {e['true_length']:.3g}")
+    shade_motion_model(bottom, {k: v[window] for k, v in d.items()}, e["true_length"])
+    finish(bottom, "iteration", "units")
+    return (f"seed 1: wall {e['wall']} tracked from {e['start_length']:.3g} (its mapped length at the start) to "
+            f"{e['length']:.3g} at the end, {e['length'] / e['true_length']:.3f} of its true {e['true_length']:.3g}; "
+            f"longest in view {np.max(seen['length'][w]):.3g}")
+
+
+def mm_key_points(fig, sweep):
+    """Fig 86 (E11): key-point claims per iteration, right and wrong against the truth, and the map error
+    with its events (a jump of at least EVENT_JUMP), the motion model shaded."""
+    run = first_seed(sweep)
+    d = iterations(run, ["map_error", "kp_checked", "kp_wrong", "mm_active"], PLANE)
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    top.plot(d["iteration"], d["map_error"], lw=1, label="map error (sum of e_ends)")
+    events = map_error_events(run)
+    at = {int(i): k for k, i in enumerate(d["iteration"])}
+    top.plot([e[0] for e in events], [d["map_error"][at[e[0]]] for e in events], "rv",
+             label=f"events (a jump of ≥ {EVENT_JUMP:g})")
+    shade_motion_model(top, d, np.nanmax(d["map_error"]))
+    finish(top, "", "map error (units)")
+    bottom.bar(d["iteration"], d["kp_checked"], width=1, color="lightgrey", label="key points claimed")
+    bottom.bar(d["iteration"], d["kp_wrong"], width=1, color="red", label="wrong (not a real wall end)")
+    shade_motion_model(bottom, d, np.nanmax(d["kp_checked"]))
+    finish(bottom, "iteration", "claims")
+    split = key_points_by_phase(run)
+    n, quick, never, _ = event_healing(run)
+    return (f"seed 1: wrong key-point claims {split['in'][0]} of {split['in'][1]} inside the motion model, "
+            f"{split['out'][0]} of {split['out'][1]} outside; {n} map-error events ({quick} healed within "
+            f"{HEAL_ITERATIONS} iterations, {never} never), {sum(e[3] for e in events)} of them a new plane joining "
+            f"the map")
+
+
+# E13 (Fig 88) ---------------------------------------------------------------------------------
+
+def grown_lengths(sweep):
+    """{variant: (tracked length / true length at each motion model's end, the grown planes' mapped
+    len_ratio, seeds)} over every seed of a planar sweep."""
+    out = {}
+    for (name,), folders in plane_sweep(sweep):
+        tracked, mapped = [], []
+        for folder in folders:
+            p = plane_table(folder, "planes.csv", ["id", "len_ratio"])
+            ratio = {int(i): r for i, r in zip(p["id"], p["len_ratio"])}
+            for e in mm_episodes(folder):
+                tracked.append(e["length"] / e["true_length"])
+                mapped.append(ratio.get(e["plane"], float("nan")))
+        out[name] = (np.array(tracked), np.array(mapped), len(folders))
+    return out
+
+
+GROWN_TOP = 1.04  # Fig 88's y axis ends here ("a little past its true size"); ratios beyond are written
+
+
+def grow_threshold_figure(fig, sweep):
+    """Fig 88 (E13): per growth threshold, each motion model's tracked length at its end over the wall's
+    true length, and the mapped length ratio of the planes it grew (every seed)."""
+    stats = grown_lengths(sweep)
+    axes = fig.subplots(1, 2, sharey=True)
+    for ax, index, ylabel in zip(axes, (0, 1), ("tracked length at the motion model's end / true length",
+                                                 "grown plane's mapped length / true length (planes.csv)")):
+        for i, (name, values) in enumerate(stats.items()):
+            v = values[index][np.isfinite(values[index])]
+            x = i + np.linspace(-0.2, 0.2, len(v))
+            ax.plot(x, np.minimum(v, GROWN_TOP), "o", ms=4, alpha=0.7, color=f"C{i}")
+            ax.plot([i - 0.3, i + 0.3], [np.median(v)] * 2, color="black", lw=1.5)
+            over = v[v > GROWN_TOP]  # far past the true size: drawn at the top, their values written
+            if len(over):
+                ax.annotate(", ".join(f"{r:.3g}" for r in over), (i, GROWN_TOP), xytext=(0, -12), ha="center",
+                            textcoords="offset points", fontsize=7)
+        ax.axhline(1, color="grey", lw=0.8, ls="--")
+        ax.set_xticks(range(len(stats)), list(stats), fontsize=8)
+        finish(ax, "relative_plane.motion_model.grow_threshold", ylabel, legend=False)
+    return "; ".join(grown_text(name, v) for name, v in stats.items())
+
+
+def grown_text(name, values):
+    tracked, mapped, seeds = values
+    over = tracked[tracked > 1.001]
+    return (f"{name}: {len(tracked)} motion models over {seeds} seed(s), tracked length / true median "
+            f"{np.nanmedian(tracked):.4f}, max {np.nanmax(tracked):.4f}, {len(over)} past the true size by over "
+            f"0.1 %; grown planes' mapped len_ratio median {np.nanmedian(mapped):.4f}, max {np.nanmax(mapped):.4f}")
+
+
+# E14 (Fig 89) ---------------------------------------------------------------------------------
+
+def run_frustum(run):
+    """(frustum preset, shape) of a planar run from its manifest's scenario."""
+    path = os.path.join(run, "manifest.json")
+    try:
+        planar = read_json(path)["scenario"]["planar"]
+        return planar["frustum"], planar["frustum_shape"]
+    except (KeyError, TypeError):
+        raise rp.DataError(f"{path}: no scenario.planar.frustum / frustum_shape") from None
+
+
+def end_wall_turn(run):
+    """The wall seen in most iterations of the first turn (the corner's end wall), its observations in
+    the turn, and its mapped length."""
+    turn = turn_iterations(run)
+    o = rp.read_table(os.path.join(run, "plane_observations.csv"), ["iteration", "true_wall"])
+    walls, counts = np.unique(o["true_wall"][np.isin(o["iteration"], turn)], return_counts=True)
+    if len(walls) == 0:
+        raise rp.DataError(f"{os.path.join(run, 'plane_observations.csv')}: no wall seen in the turn")
+    wall = int(walls[np.argmax(counts)])
+    seen = observed_wall(run, wall)
+    sel = np.isin(seen["iteration"], turn)
+    return wall, {k: v[sel] for k, v in seen.items()}, mapped_length(run, wall)
+
+
+def frustum_turns(sweep):
+    """{variant: (frustum, shape, wall, observations in the turn, mapped length, true length)}."""
+    out = {}
+    for (name,), folders in plane_sweep(sweep):
+        wall, seen, mapped = end_wall_turn(folders[0])
+        out[name] = (*run_frustum(folders[0]), wall, seen, mapped, wall_lengths(folders[0])[wall])
+    return out
+
+
+def frustum_figure(fig, sweep):
+    """Fig 89 (E14): the end wall's length in view and the range of its farther end against the heading
+    through the turn, per frustum shape and size; its mapped length dashed; the far distance f and the
+    trapezoid's corner reach f / cos α dotted."""
+    turns = frustum_turns(sweep)
+    left, right = fig.subplots(1, 2)
+    texts = []
+    for i, (name, (frustum, shape, wall, seen, mapped, true)) in enumerate(turns.items()):
+        style = {"color": f"C{i}", "ls": "-" if shape == "planar" else "--"}
+        left.plot(seen["psi_deg"], seen["length"], lw=1.2, label=f"{name}: wall {wall} in view", **style)
+        left.axhline(mapped, lw=0.8, alpha=0.7, color=f"C{i}", ls=":")
+        right.plot(seen["psi_deg"], seen["range"], lw=1.2, label=name, **style)
+        k = int(np.argmax(seen["length"]))
+        texts.append(f"{name}: in view up to {seen['length'][k]:.3g} at ψ {seen['psi_deg'][k]:.0f}°, "
+                     f"{seen['length'][-1]:.3g} at the turn's end; farthest end {np.max(seen['range']):.3g} away; "
+                     f"mapped {mapped:.3g} of {true:.3g}")
+    for frustum in sorted({v[0] for v in turns.values()} & set(FRUSTUMS)):
+        alpha, far = FRUSTUMS[frustum]
+        if far < np.nanmax([np.max(v[3]["range"]) for v in turns.values()]) * 1.5:
+            right.axhline(far, color="black", lw=0.8, ls=":", label=f"{frustum}: f = {far:g}")
+            right.axhline(far / np.cos(np.radians(alpha)), color="grey", lw=0.8, ls=":",
+                          label=f"{frustum}: f / cos α = {far / np.cos(np.radians(alpha)):.3g}")
+    finish(left, "true heading ψ (degrees)", "length in view (units; dotted: mapped length)")
+    finish(right, "true heading ψ (degrees)", "range of the farther end (units)")
+    return "; ".join(texts)
+
+
+# E16 (Fig 93) ---------------------------------------------------------------------------------
+
+def motion_model_exits(run):
+    """(motion models, how many ended in a group created before they started, groups at the end)."""
+    d = iterations(run, ["current_group"], PLANE)
+    g = plane_table(run, "groups.csv", ["group_id", "created_iter"])
+    created = dict(zip(g["group_id"].astype(int), g["created_iter"]))
+    episodes = mm_episodes(run)
+    back = 0
+    for e in episodes:
+        after = np.nonzero((d["iteration"] > e["last"]) & np.isfinite(d["current_group"]))[0]
+        back += len(after) > 0 and created.get(int(d["current_group"][after[0]]), e["first"]) < e["first"]
+    return len(episodes), back, len(g["group_id"])
+
+
+# E22 (Fig 69, paper Fig 5) and E19 (Fig 100) ----------------------------------------------------
+
+E22 = ("p-e22-one-partial-plane",)
+
+
+def one_plane_iteration(run):
+    """The middle iteration of the first stretch of the last loop in which the motion model is active
+    and a single plane is in view."""
+    loops, n = run_loops(run)
+    d = iterations(run, ["mm_active", "visible_planes"], PLANE)
+    sel = np.nonzero((d["iteration"] >= n * (loops - 1) / max(loops, 1)) & (d["mm_active"] == 1)
+                     & (d["visible_planes"] == 1))[0]
+    if len(sel) == 0:
+        raise rp.DataError(f"{os.path.join(run, PLANE, 'iterations.csv')}: no motion model with one plane in view "
+                           f"on the last loop")
+    stretch = sel[:np.argmax(np.diff(np.append(sel, sel[-1] + 2)) > 1) + 1]
+    return int(d["iteration"][stretch[len(stretch) // 2]]), int(d["iteration"][stretch[0]]), \
+        int(d["iteration"][stretch[-1]])
+
+
+def one_partial_plane(fig, run):
+    """Fig 69 / paper Fig 5 (E22): the map, the robot at a corner of its last loop with the motion model
+    active, and the part of the single wall in its view, red."""
+    k, first, last = one_plane_iteration(run)
+    ax = fig.subplots()
+    plane_overlay(ax, run)
+    pieces = draw_view(ax, run, k)
+    d = iterations(run, ["position_error", "mm_active", "visible_planes"], PLANE)
+    row = int(np.nonzero(d["iteration"] == k)[0][0])
+    lengths = wall_lengths(run)
+    return (f"iteration {k} (of the stretch {first}-{last} on the last loop): motion model "
+            f"{'on' if d['mm_active'][row] == 1 else 'off'}, {d['visible_planes'][row]:.0f} plane in view: "
+            + ", ".join(f"wall {w}, {np.linalg.norm(b - a):.3g} of its {lengths[w]:.3g} units" for a, b, w in pieces)
+            + f"; position error {d['position_error'][row]:.3g}")
+
+
+def first_seen_far(run):
+    """The wall first seen from farthest away: (wall, iteration, distance of its nearer observed end)."""
+    o = rp.read_table(os.path.join(run, "plane_observations.csv"),
+                      ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+    best = None
+    for wall in sorted(set(o["true_wall"]) - {-1}):
+        k = int(np.nonzero(o["true_wall"] == wall)[0][0])
+        near = min(np.hypot(o["kp1_x"][k], o["kp1_z"][k]), np.hypot(o["kp2_x"][k], o["kp2_z"][k]))
+        if best is None or near > best[2]:
+            best = (int(wall), int(o["iteration"][k]), float(near))
+    if best is None:
+        raise rp.DataError(f"{os.path.join(run, 'plane_observations.csv')}: no wall seen")
+    return best
+
+
+def first_seen_figure(fig, sweep, name):
+    """Fig 100 (E19): the wall first seen from farthest away, red, from where the robot first saw it (the
+    large frustum, no occlusion), over variant `name`'s final map."""
+    run = variant_folder_of(sweep, name)
+    wall, k, near = first_seen_far(run)
+    ax = fig.subplots()
+    plane_overlay(ax, run, title=f"{name}: the final map; wall {wall} as first seen")
+    draw_view(ax, run, k, walls={wall})
+    on_map = np.isfinite(mapped_length(run, wall))
+    return (f"{name}: wall {wall} is first seen at iteration {k}, its nearer end {near:.3g} units away; "
+            f"{'on' if on_map else 'not on'} the final map")
+
+
+E16, E17 = ("p-e16-rule29",), ("p-e17-interval-check",)
+ISSUE15_FIGURES = [
+    Figure(69, "only one partial plane in view on the second loop, E22 (also paper Fig. 5)", E22, one_partial_plane),
+    Figure(83, "the first motion-model test: Map E1 FirstCorner, E11", E11, first_corner_map),
+    Figure(84, "the pose through the corner, motion model shaded, E11", E11, mm_pose_track),
+    Figure(85, "the motion model's track and the end wall's growth, E11", E11, mm_growth),
+    Figure(86, "key-point claims and map-error events through the corner, E11", E11, mm_key_points),
+    Figure(88, "growth threshold 0 (thesis), 0.02 and 0.05: the grown planes' lengths, E13",
+           ("p-e13-grow-threshold",), grow_threshold_figure),
+    Figure(89, "frustum failure: the end wall in view while turning, planar vs radial frustum, E14",
+           ("p-e14-frustum-shape",), frustum_figure),
+    Figure(93, "finished motion-model runs of Map E with Rule 29 on and off, E16", E16,
+           P(variant_overlays, names=("rule29_on", "rule29_off"), groups=True)),
+    Figure(95, "the start group with the interval checks off, E17", E17,
+           P(variant_overlays, names=("interval_check_off",), groups=True)),
+    Figure(96, "the start group with the interval checks, hints and roll-back on, E17", E17,
+           P(variant_overlays, names=("interval_check_on",), groups=True)),
+    Figure(100, "a wall first seen from far away (large frustum, no occlusion), E19", E19,
+           P(first_seen_figure, name="save_off")),
+]
+FIGURES = sorted([f for f in FIGURES + ISSUE15_FIGURES if isinstance(f.id, int)], key=lambda f: f.id) + \
+    [f for f in FIGURES + ISSUE15_FIGURES if not isinstance(f.id, int)]
 
 # ---- issue 14 Chapter 5: points -> EM -> Relative Plane (spec relative_plane_em.md §6.1 E23-E30) --
 
@@ -1627,6 +2133,57 @@ def em_compare(fig, *runs, labels):
     return "; ".join(shows)
 
 
+def w_ma_figure(fig, *sweeps, labels):
+    """Extra (E23 w_ma): the map error per iteration of each moving-average window, one panel per sweep
+    (Map D without and with point noise)."""
+    axes = np.atleast_1d(fig.subplots(len(sweeps), 1, sharex=True))
+    shows = []
+    for ax, sweep, label in zip(axes, sweeps, labels):
+        series = sweep_series(sweep, ["mean_map_error"], algorithm=PLANE)
+        cells = []
+        for name, d in series.items():
+            s = count_summary(variant_folder_of(sweep, name))
+            ax.plot(d["iteration"], d["mean_map_error"], lw=1, label=f"{name}: final {s['final_mean_map_error']:.3g}, "
+                    f"{s['walls_mapped']:.0f}/{s['walls_seen']:.0f} walls, pose valid "
+                    f"{100 * s['pose_valid_fraction']:.0f} %")
+            cells.append(f"{name} final mean map error {s['final_mean_map_error']:.3g}, {s['walls_mapped']:.0f} of "
+                         f"{s['walls_seen']:.0f} walls, pose valid {100 * s['pose_valid_fraction']:.0f} %")
+        ax.set_yscale("log")
+        finish(ax, "iteration" if ax is axes[-1] else "", MAP_ERROR)
+        ax.set_title(label, fontsize=9)
+        shows.append(f"{label}: " + ", ".join(cells))
+    return "; ".join(shows)
+
+
+def noise_sweep_figure(fig, sweep):
+    """Extra (E28): extraction and map against the point noise σ_pt, from the sweep's noise_sweep.csv
+    (scripts/plot/noise_sweep.py): recall, precision and normal error of EM; map error, walls mapped
+    and the pose-valid share of the Relative Plane map."""
+    t = noise_sweep.read(sweep)
+    sigma = t["point_sigma"]
+    (em, normal), (err, share) = fig.subplots(2, 2, sharex=True)
+    em.plot(sigma, t["em_recall"], "o-", label="EM recall (frame mean)")
+    em.plot(sigma, t["em_precision"], "s--", label="EM precision (frame mean)")
+    finish(em, "", "SegComp score at 0.8")
+    normal.plot(sigma, t["mean_normal_err_deg"], "o-", color="C2", label="normal error of correct planes")
+    finish(normal, "", "mean normal error (°)")
+    err.errorbar(sigma, t["final_mean_map_error"], yerr=np.nan_to_num(t["final_mean_map_error_std"]), fmt="o-",
+                 color="C3", capsize=3, label="final mean map error (± std over seeds)")
+    finish(err, "point noise σ_pt (units)", MAP_ERROR)
+    share.plot(sigma, t["walls_mapped"] / t["walls_seen"], "o-", color="C4", label="walls mapped / seen")
+    share.plot(sigma, t["pose_valid_fraction"], "s--", color="C5", label="iterations with a valid pose")
+    share.set_ylim(-0.05, 1.05)
+    finish(share, "point noise σ_pt (units)", "share")
+    seeds = int(t["seeds"].min())
+    return f"{seeds} seed(s) per σ_pt — " + "; ".join(
+        f"σ_pt {s:g}: recall {r:.3g}, precision {p:.3g}, normal error {n:.3g}°, map error {e:.3g}, "
+        f"{w:.1f} of {ws:.0f} walls, pose valid {100 * v:.0f} %"
+        for s, r, p, n, e, w, ws, v in zip(sigma, t["em_recall"], t["em_precision"], t["mean_normal_err_deg"],
+                                           t["final_mean_map_error"], t["walls_mapped"], t["walls_seen"],
+                                           t["pose_valid_fraction"]))
+
+
+E23_W_MA = ("p-em-office-w-ma", "p-em-office-noise-w-ma")
 E27 = ("p-em-demo",)
 E29 = ("e29-office", "e29-room")
 CHAPTER5 = [
@@ -1656,6 +2213,10 @@ CHAPTER5 = [
     Figure("e27-timing", "ms per iteration, EM and Relative Plane (E27)", E27, demo_timing),
     Figure("e29-em-compare", "EM1 vs EM2 (and the baseline) on identical frames (E29)", E29,
            P(em_compare, labels=("Map D, small frustum", "Map E, large frustum"))),
+    Figure("e23-w-ma", "the moving-average window w_ma of Rule 18 without and with point noise (E23, E24)",
+           E23_W_MA, P(w_ma_figure, labels=("Map D, points, no noise (E23)", "Map D, points, σ_pt 0.05 (E24)"))),
+    Figure("e28-noise-sweep", "extraction and map against the point noise, Map E, EM2 (E28)", ("p-em-noise-sweep",),
+           noise_sweep_figure),
 ]
 
 

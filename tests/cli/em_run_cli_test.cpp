@@ -17,14 +17,6 @@ using test::read_csv;
 using test::run_relslam;
 using Table = test::CsvTable;
 
-std::vector<std::string> run_args(const std::string& scenario, const std::filesystem::path& out,
-                                  const std::vector<std::string>& settings) {
-  std::vector<std::string> args = {"run", test::source_path("scenarios/" + scenario).string(), "--out", out.string(),
-                                   "-q"};
-  for (const std::string& s : settings) args.insert(args.end(), {"--set", s});
-  return args;
-}
-
 // "office" of "p-em-office.json".
 std::string scene(const std::string& file) { return file.substr(5, file.size() - 10); }
 
@@ -39,7 +31,7 @@ constexpr int kBaselineFrames = 30;
 
 TEST(EmRun, WritesEmFramesAndTheExtractionTime) {
   test::ScratchDir dir;
-  const auto r = run_relslam(run_args("p-em-office.json", dir / "run", {"planar.iterations=5"}));
+  const auto r = run_relslam(test::scenario_run_args("p-em-office.json", dir / "run", {"planar.iterations=5"}));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Table frames = read_csv(dir / "run/em_frames.csv");
   EXPECT_EQ(frames.header,
@@ -67,9 +59,10 @@ TEST_P(NoiseFreeFrames, EveryVisibleWallFoundExactly) {
   if (extractor == "ransac_open3d" && !eval::extractor_available(eval::PlaneExtractorKind::RansacOpen3d))
     GTEST_SKIP() << "built without Open3D";
   test::ScratchDir dir;
-  const auto r = run_relslam(run_args(scenario, dir / "run",
-                                      {"planar.noise.point_sigma=0", "planar.iterations=" + std::to_string(frames),
-                                       "relative_plane.extractor=" + extractor}));
+  const auto r =
+      run_relslam(test::scenario_run_args(scenario, dir / "run",
+                                          {"planar.noise.point_sigma=0", "planar.iterations=" + std::to_string(frames),
+                                           "relative_plane.extractor=" + extractor}));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Table t = read_csv(dir / "run/em_frames.csv");
   ASSERT_EQ(t.rows.size(), static_cast<std::size_t>(frames));
@@ -90,7 +83,9 @@ INSTANTIATE_TEST_SUITE_P(E23E25, NoiseFreeFrames,
                                          FramesCase{"p-em-room.json", kRoomFrames, "em1"},
                                          FramesCase{"p-em-office.json", kBaselineFrames, "ransac_open3d"},
                                          FramesCase{"p-em-room.json", kBaselineFrames, "ransac_open3d"}),
-                         [](const auto& info) { return scene(std::get<0>(info.param)) + "_" + std::get<2>(info.param); });
+                         [](const auto& info) {
+                           return scene(std::get<0>(info.param)) + "_" + std::get<2>(info.param);
+                         });
 
 // Issue 14 §5: the noise-free pipeline maps every wall. Part 1 alone (key points off) maps what
 // the plane sensor's runs map (p-office 6 of 36 walls, p-room 3 of 10); with key points (parts
@@ -102,8 +97,8 @@ class NoiseFreePipeline : public testing::TestWithParam<PipelineCase> {};
 TEST_P(NoiseFreePipeline, WithKeyPointsMapsEveryWall) {
   const auto& [scenario, walls] = GetParam();
   test::ScratchDir dir;
-  const auto r = run_relslam(run_args(scenario, dir / "run",
-                                      {"planar.noise.point_sigma=0", "relative_plane.key_points=true", "planar.loops=1"}));
+  const auto r = run_relslam(test::scenario_run_args(
+      scenario, dir / "run", {"planar.noise.point_sigma=0", "relative_plane.key_points=true", "planar.loops=1"}));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Table summary = read_csv(dir / "run/summary.csv");
   EXPECT_EQ(summary.text(0, "status"), "ok");
@@ -119,8 +114,8 @@ INSTANTIATE_TEST_SUITE_P(E23E25, NoiseFreePipeline,
 TEST(EmRun, SameSeedSameEmFrames) {
   test::ScratchDir dir;
   const std::vector<std::string> quick = {"planar.iterations=15"};
-  ASSERT_EQ(run_relslam(run_args("p-em-room-noise.json", dir / "a", quick)).exit_code, 0);
-  ASSERT_EQ(run_relslam(run_args("p-em-room-noise.json", dir / "b", quick)).exit_code, 0);
+  ASSERT_EQ(run_relslam(test::scenario_run_args("p-em-room-noise.json", dir / "a", quick)).exit_code, 0);
+  ASSERT_EQ(run_relslam(test::scenario_run_args("p-em-room-noise.json", dir / "b", quick)).exit_code, 0);
   const Table a = read_csv(dir / "a/em_frames.csv"), b = read_csv(dir / "b/em_frames.csv");
   ASSERT_EQ(a.rows.size(), b.rows.size());
   const int ms = a.column("ms");
@@ -134,7 +129,8 @@ TEST(EmRun, SameSeedSameEmFrames) {
 
 TEST(EmRun, UnknownExtractorIsAnInputError) {
   test::ScratchDir dir;
-  const auto r = run_relslam(run_args("p-em-office.json", dir / "run", {"relative_plane.extractor=em3"}));
+  const auto r =
+      run_relslam(test::scenario_run_args("p-em-office.json", dir / "run", {"relative_plane.extractor=em3"}));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("relative_plane.extractor"), std::string::npos) << r.err;
 }

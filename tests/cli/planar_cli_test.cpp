@@ -88,10 +88,10 @@ TEST(PlanarRun, WritesTheFilesAndColumnsOfTheIssue) {
   EXPECT_EQ(summary.text(0, "key_point_accuracy"), "");
 }
 
-// E21 (Fig 67: a completed map): Map D without noise, parts 2 and 3 on, large frustum, one loop
+// E21 (Fig 67: a completed map): Map D without noise, parts 2 and 3 on, small frustum, one loop
 // and the partial second. Every wall is mapped, the pose is exact wherever it is valid, every key
 // point claimed is a real wall end (keypoints.csv, issue 13), and the motion model carries the
-// corners (iterations.csv mm_* columns).
+// corners (iterations.csv mm_* columns), its plane's tracked extent only widening.
 TEST(PlanarRun, E21CompletedMapHasEveryWallAndOnlyRightKeyPoints) {
   test::ScratchDir dir;
   const auto r = run_relslam(run_args("p-e21-completed-map.json", dir / "run"));
@@ -105,8 +105,15 @@ TEST(PlanarRun, E21CompletedMapHasEveryWallAndOnlyRightKeyPoints) {
     if (iterations.text(i, "mm_active") == "1") {
       ++motion_model;
       EXPECT_GT(iterations.number(i, "mm_distance"), 0) << "iteration " << i;
+      EXPECT_LT(iterations.number(i, "mm_s_min"), iterations.number(i, "mm_s_max")) << "iteration " << i;
+      // Rule 23 only widens the tracked plane while one motion model lasts.
+      if (i > 0 && iterations.text(i - 1, "mm_plane") == iterations.text(i, "mm_plane")) {
+        EXPECT_LE(iterations.number(i, "mm_s_min"), iterations.number(i - 1, "mm_s_min")) << "iteration " << i;
+        EXPECT_GE(iterations.number(i, "mm_s_max"), iterations.number(i - 1, "mm_s_max")) << "iteration " << i;
+      }
     } else {
       EXPECT_EQ(iterations.text(i, "mm_distance"), "") << "iteration " << i;
+      EXPECT_EQ(iterations.text(i, "mm_plane"), "") << "iteration " << i;
     }
     if (iterations.text(i, "pose_valid") != "1") continue;
     ++valid;

@@ -108,6 +108,25 @@ TEST(CompareWithKeyPoints, AFirstSampleCutAtTheRealEndIsTrimmedFromThePiece) {
   EXPECT_GT((untrimmed.delta.translation - truth.translation).norm(), 0.005);
 }
 
+// A wall seen only as a middle piece, cut at both ends (the small frustum's far corner sweeping it
+// in during a turn, Fig 105; Map D's iterations 718–720): no pair of ends keeps its offset. The
+// thesis compares it anyway and places the wall wrong; rigid_sigma calls the comparison invalid,
+// and leaves a rigid pair alone.
+TEST(CompareWithKeyPoints, APieceCutAtBothEndsIsInvalidWithRigidSigma) {
+  const ClippedWall middle{{-1, -6}, {7, -6}, [](int t) { return 2 + 0.3 * t; }, [](int t) { return 4 + 0.6 * t; }};
+  const std::vector<PlaneObject> first = seen(kAcross, 0, 3), second = seen(middle, 0, 3);
+  const CompareResult thesis = compare_with_key_points(first, second, RelativePlaneOptions{});
+  ASSERT_TRUE(thesis.valid);
+  EXPECT_GT(thesis.sigma, 0.05);
+
+  RelativePlaneOptions rigid;
+  rigid.rigid_sigma = 1e-6;
+  EXPECT_FALSE(compare_with_key_points(first, second, rigid).valid);
+  const CompareResult passed = compare_with_key_points(seen(kAcross), seen(passed_wall()), rigid);
+  ASSERT_TRUE(passed.valid);
+  EXPECT_LT(passed.sigma, 1e-9);
+}
+
 TEST(CompareWithKeyPoints, InvalidWithoutEnoughCommonIterations) {
   const ClippedWall passed = passed_wall();
   EXPECT_FALSE(compare_with_key_points(seen(kAcross, 0, 50), seen(passed, 50, 50), RelativePlaneOptions{}).valid);

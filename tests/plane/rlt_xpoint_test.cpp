@@ -106,5 +106,43 @@ TEST(RltXPoint, Rule7JoinsOnlyAPlaneSeenWithEveryMember) {
   EXPECT_THROW(group.set_chain({0, 1, 3}), std::logic_error);
 }
 
+// Rule 37 (spec §5.5.5): a one-way link is for charting only. The group does not list the plane,
+// the plane has no membership in it, and the group computes exactly what it computes without the
+// link (every field of every reference and edge bit for bit).
+TEST(RltXPoint, Rule37OneWayLinkNeitherJoinsTheGroupNorChangesItsComputation) {
+  RelativePlaneOptions options;
+  options.key_points = true;
+  const auto group_of_three = [&](std::vector<RltPlane>& planes) {
+    RltXPoint group(0, 0, {0, 1, 2});
+    for (PlaneId p = 0; p < 3; ++p) planes[p].join(0, 0);
+    return group;
+  };
+  std::vector<RltPlane> plain = four_planes(0.05), linked = four_planes(0.05);
+  RltXPoint without = group_of_three(plain), with = group_of_three(linked);
+  EXPECT_TRUE(linked[3].add_oneway(0));
+  EXPECT_FALSE(linked[3].add_oneway(0));  // once
+  EXPECT_FALSE(linked[1].add_oneway(0));  // a member has its two-way membership
+  without.compute(plain, options);
+  with.compute(linked, options);
+  EXPECT_EQ(with.planes(), (std::vector<PlaneId>{0, 1, 2}));
+  EXPECT_EQ(linked[3].ref(0), nullptr);
+  EXPECT_EQ(linked[3].oneway_xpoints(), (std::vector<XPointId>{0}));
+  for (PlaneId p = 0; p < 3; ++p) {
+    const RltXPointRef &a = *plain[p].ref(0), &b = *linked[p].ref(0);
+    EXPECT_TRUE(a.valid && b.valid) << "plane " << p;
+    EXPECT_EQ(a.pose.translation, b.pose.translation) << "plane " << p;
+    EXPECT_EQ(a.pose.heading, b.pose.heading) << "plane " << p;
+    EXPECT_EQ(a.max_length, b.max_length) << "plane " << p;
+    EXPECT_EQ(a.key_point, b.key_point) << "plane " << p;
+    EXPECT_EQ(a.samples, b.samples) << "plane " << p;
+  }
+  ASSERT_EQ(without.edges().size(), with.edges().size());
+  for (std::size_t e = 0; e < with.edges().size(); ++e) {
+    EXPECT_EQ(without.edges()[e].delta.translation, with.edges()[e].delta.translation) << "edge " << e;
+    EXPECT_EQ(without.edges()[e].delta.heading, with.edges()[e].delta.heading) << "edge " << e;
+    EXPECT_EQ(without.edges()[e].samples, with.edges()[e].samples) << "edge " << e;
+  }
+}
+
 }  // namespace
 }  // namespace relslam::plane

@@ -85,9 +85,22 @@ make_run p-e12-rule28 sweep scenarios/p-e12-rule28.json --set planar.iterations=
 make_run p-e15-loop-closure-map-e sweep scenarios/p-e15-loop-closure-map-e.json --set planar.iterations=400
 make_run p-e18-collinear run scenarios/p-e18-collinear.json --set planar.iterations=400
 make_run p-e32-runtime sweep scenarios/p-e32-runtime.json --set planar.iterations=300
+make_run p-e19-save-system sweep scenarios/p-e19-save-system.json --set planar.iterations=300
+make_run p-e20-pseudo-merge sweep scenarios/p-e20-pseudo-merge.json --set planar.iterations=300
+# issue 15 experiments (Relative Plane part 3): E17's interval checks, hints and roll-back; the motion
+# model's E11 (whole, Map E1 is 351 iterations), E13, E14 (whole), E16 and E22 (the second corner is on
+# the shortened run's second "loop").
+make_run p-e17-interval-check sweep scenarios/p-e17-interval-check.json --set planar.iterations=400
+make_run p-e11-first-corner sweep scenarios/p-e11-first-corner.json --seeds 2
+make_run p-e13-grow-threshold sweep scenarios/p-e13-grow-threshold.json --set planar.iterations=300
+make_run p-e14-frustum-shape sweep scenarios/p-e14-frustum-shape.json
+make_run p-e16-rule29 sweep scenarios/p-e16-rule29.json --set planar.iterations=300
+make_run p-e22-one-partial-plane run scenarios/p-e22-one-partial-plane.json --set planar.iterations=600
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
 expected+=(68 $(seq 74 82) 87 90 91 92 97 e32-runtime)  # issue 13 experiments
+expected+=(94 98 99 101 102)  # issue 15: E17, E19, E20
+expected+=(69 83 84 85 86 88 89 93 95 96 100)  # issue 15: E22, E11, E13, E14, E16, E17, E19
 
 # Chapter 5 (points -> EM -> Relative Plane): short runs of E23-E27, the test bench, E29.
 make_run p-em-office run scenarios/p-em-office.json --set planar.iterations=150
@@ -98,8 +111,25 @@ make_run p-em-demo sweep scenarios/p-em-demo.json --set planar.iterations=100 --
 make_run em-bench em-bench scenarios/p-em-office-noise.json --seeds 2
 make_run e29-office em-bench scenarios/p-em-compare-office.json --compare --set planar.iterations=40
 make_run e29-room em-bench scenarios/p-em-compare-room.json --compare --set planar.iterations=40
+# E23's w_ma variants on E23 and E24, and E28's noise sweep (two seeds, so noise_sweep.csv averages them).
+make_run p-em-office-w-ma sweep scenarios/p-em-office.json --set planar.iterations=150
+make_run p-em-office-noise-w-ma sweep scenarios/p-em-office-noise.json --set planar.iterations=150
+make_run p-em-noise-sweep sweep scenarios/p-em-noise-sweep.json --set planar.iterations=60 --seeds 2
+"$python" "$plot/noise_sweep.py" "$runs/p-em-noise-sweep" >/dev/null || die "noise_sweep.py failed"
+noise_csv=$runs/p-em-noise-sweep/noise_sweep.csv
+expect "noise_sweep.csv: header" [ "$(head -1 "$noise_csv")" = "variant,point_sigma,inlier_distance,seeds,frames,\
+em_recall,em_precision,mean_normal_err_deg,em_median_ms,final_mean_map_error,final_mean_map_error_std,walls_mapped,walls_seen,\
+duplicates,pose_valid_fraction" ]
+expect "noise_sweep.csv: one row per σ_pt, ascending, two seeds each" [ "$(tail -n +2 "$noise_csv" | cut -d, -f2,4 | \
+  tr '\n' ' ')" = "0,2 0.025,2 0.05,2 0.1,2 0.15,2 0.2,2 " ]
+expect "noise_sweep.csv: noise-free EM normal error under 0.01°" \
+  awk -F, 'NR == 2 { exit !($8 != "" && $8 < 0.01) }' "$noise_csv"
+out=$("$python" "$plot/noise_sweep.py" "$work/empty" 2>&1)
+expect "noise_sweep.py on a folder without a sweep: exit 1" [ $? -eq 1 ]
+expect "noise_sweep.py names the missing sweep.csv" grep -q "empty/sweep.csv: file not found" <<<"$out"
 
 expected+=(46 55 56 57 58 59 60 61 105 106 107 108 paper6 paper7 paper8 e27-timing e29-em-compare)  # Chapter 5
+expected+=(e23-w-ma e28-noise-sweep)
 expected+=(110 111 112 113 114 115 116 117 $(seq 119 126) $(seq 130 152) $(seq 167 171) components)
 if [ -d "$vp_data" ]; then
   make_run vp-1181 victoria-park --data "$vp_data" --window 1181:1230
@@ -175,10 +205,15 @@ for row in "loop length" "RltPoints / groups / final groups" "visible points per
   "E05 (a)" "E05 (b)" "E05 (c)" "E06 Rule 12 on vs off" "E31 Rule 2" \
   "E02 key-point pairs" "E07 interval mode" "E08 wrong key points heal" "E09 plane 5" "E10 Rule 22" \
   "E12 Rule 28" "E15 Map E loop closure" "E18 collinear pieces" "E32 time per iteration" \
+  "E19 save system" "E20 pseudo plane merging" \
+  "E11 first motion-model test" "E13 growth threshold" "E14 frustum shape" "E16 Rule 29" "E22 one partial plane" \
   "E23 Map D, points" "E24 E23 with point noise" "E25 Map E, points" "E26 E25 with point noise" \
-  "E27 paper demo without noise" "E27 paper demo with noise" "E27 real time including EM" "E30 EM test bench" "E29 EM2 vs EM1"; do
+  "E27 paper demo without noise" "E27 paper demo with noise" "E27 real time including EM" "E30 EM test bench" "E29 EM2 vs EM1" \
+  "E23 moving-average window" "E28 noise sweep"; do
   expect "claims.md row '$row'" grep -q "^| $row" "$claims_md"
 done
+expect "claims.md: E20 compares Rule 37 on and off" \
+  grep -q "^| E20 pseudo plane merging.*| seed-1: [0-9]* one-way link(s), current group differs in [0-9]* iteration(s)" "$claims_md"
 expect "claims.md computes RltPoints from s-f8" \
   grep -q "^| RltPoints.*| [0-9]* / [0-9]* / [0-9]* .*s-f8/relative_point/iterations.csv\` |$" "$claims_md"
 expect "claims.md: E03 compares loop 1 with loop 2" \
@@ -190,10 +225,24 @@ expect "claims.md: E29 compares EM1 and EM2 on both maps" \
   grep -q "^| E29 EM2 vs EM1.*| e29-office (40 frames): EM2 .* (EM1/EM2 [0-9.]*).*; e29-room (40 frames): " "$claims_md"
 expect "claims.md: E27 gives ms per iteration of EM and RP" \
   grep -q "^| E27 real time including EM.*| office_no_noise: EM [0-9.e-]* + RP [0-9.e-]* ms median" "$claims_md"
+expect "claims.md: E23's w_ma row gives every window without and with noise" \
+  grep -q "^| E23 moving-average window.*| p-em-office-w-ma: w_ma_3: .* w_ma_5: .* w_ma_8: .* — p-em-office-noise-w-ma: w_ma_3: " \
+  "$claims_md"
+expect "claims.md: E28 reads noise_sweep.csv, two seeds per σ_pt" \
+  grep -q "^| E28 noise sweep.*| 2 seed(s) per σ_pt; map error .* σ_pt 0.2: EM recall .*| \`p-em-noise-sweep/noise_sweep.csv\` |$" \
+  "$claims_md"
 expect "index.html has the paper's Fig 6 caption" grep -q "An example of the simulation used to test the algorithm" "$index"
 expect "claims.md: every simulated row has a number" \
   [ "$(grep -v 'Victoria Park' "$claims_md" | grep -c '| not run |')" -eq 0 ]
 expect "claims.md: no errors" not grep -q "| error:" "$claims_md"
+expect "claims.md: E11 places the motion model before the turn" \
+  grep -q "^| E11 first motion-model test.*| 2 seed(s): the motion model starts [0-9.]*-[0-9.]* units before the turn" \
+  "$claims_md"
+expect "claims.md: E14's planar small frustum sees past f = 7, the radial one does not" \
+  grep -q "^| E14 frustum shape.*planar_small: .*farthest end 8\.[01][0-9]*;.*radial_small: .*farthest end [67][.0-9]*;" \
+  "$claims_md"
+expect "claims.md: E17 counts the roll-backs with the checks on" \
+  grep -q "^| E17 interval checks.*interval_check_off: .* 0 roll-back(s) .*interval_check_on: .* [1-9][0-9]* roll-back(s) from " "$claims_md"
 
 # ---- missing and malformed inputs ------------------------------------------------------------
 out=$("$python" "$plot/figures.py" --runs "$work/empty" --out "$work/empty/figures" 2>&1)

@@ -21,7 +21,7 @@ check "no figure missing from the report" bash -c "! grep 'Not produced' '$work/
 for n in 46 55 61 64 65 66 67 68 70 71 72 73 74 79 82 87 90 97 105 108 110 111 117 119 120 126 130 136 137 145 146 150 152 167 171; do
   check "figure $n in the report" grep -q "src=\"figures/fig$n.png\"" "$work/report/index.html"
 done
-for name in paper6 paper7 paper8 e27-timing e29-em-compare; do
+for name in paper6 paper7 paper8 e27-timing e29-em-compare e23-w-ma e28-noise-sweep; do
   check "figure $name in the report" grep -q "src=\"figures/$name.png\"" "$work/report/index.html"
 done
 check "claims.md has no row left unrun" bash -c "! grep -q 'not run' '$work/report/claims.md'"

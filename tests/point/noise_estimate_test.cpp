@@ -36,7 +36,9 @@ TEST(NoiseEstimate, GroupAveragesGiveTheSensorNoiseWithinThirtyPercent) {
     EXPECT_GE(estimate->pairs, 100) << "sigma " << sigma;
     EXPECT_EQ(estimate->pilot_runs, runs);
     // Below the thesis's noise its bounds settle it at once; from about it on, a second look.
-    if (sigma < kThesisNoiseSigma) EXPECT_EQ(runs, 1) << "sigma " << sigma;
+    if (sigma < kThesisNoiseSigma) {
+      EXPECT_EQ(runs, 1) << "sigma " << sigma;
+    }
     std::printf("[ measured ] sigma %.2f: estimate %.4f from %d pairs in %d groups, %d pilot runs\n", sigma,
                 estimate->sigma, estimate->pairs, estimate->groups, runs);
   }

@@ -1,8 +1,9 @@
 // The Relative Plane algorithm (libslam's RltXPointsS, thesis Chapter 4) as an algorithm of a
 // planar run: its structure counts and the Profiler's part timings (thesis 4.4.2.5) as
 // iterations.csv columns, each RltPlane's observations and group in planes.csv, and its groups
-// and links as groups.csv and links.csv (spec relative_plane_em.md §7.3); with key points also
-// edges.csv and E02's pairs.csv / pair_sigma.csv.
+// and links as groups.csv and links.csv (spec relative_plane_em.md §7.3), every roll-back
+// (Rules 31–34) as rollbacks.csv and their counts in summary.csv; with key points also edges.csv
+// and E02's pairs.csv / pair_sigma.csv.
 #include "relative_plane.hpp"
 
 #include "key_point_pair_diagnostic.hpp"
@@ -30,6 +31,11 @@ CsvField mm_field(const IterationRow& r, auto value) {
   return s != nullptr && s->iteration == r.step.iteration ? csv_field(value(*s)) : CsvField{};
 }
 
+// A field of the active motion model itself; empty without one.
+CsvField mm_extent(const IterationRow& r, auto value) {
+  return r.step.motion_model != nullptr ? csv_field(value(*r.step.motion_model)) : CsvField{};
+}
+
 const Columns<IterationRow> kIterationColumns = {
     {"pose_valid", [](const IterationRow& r) { return csv_field(r.step.pose_valid); }},
     {"rlt_planes", [](const IterationRow& r) { return csv_field(r.slam.planes().size()); }},
@@ -40,12 +46,20 @@ const Columns<IterationRow> kIterationColumns = {
     {"local_matches", [](const IterationRow& r) { return csv_field(r.step.local_matches); }},
     {"new_planes", [](const IterationRow& r) { return csv_field(r.step.new_planes); }},
     {"pose_planes", [](const IterationRow& r) { return csv_field(r.step.pose_planes); }},
+    // Rule 37: one-way (charting-only) links added this iteration.
+    {"oneway_links", [](const IterationRow& r) { return csv_field(r.step.oneway_links); }},
     {"unassigned", [](const IterationRow& r) { return csv_field(r.slam.unassigned().size()); }},
     {"t_add_ms", [](const IterationRow& r) { return csv_field(r.step.timings.add_ms); }},
     {"t_manage_ms", [](const IterationRow& r) { return csv_field(r.step.timings.manage_ms); }},
     {"t_compute_ms", [](const IterationRow& r) { return csv_field(r.step.timings.compute_ms); }},
     {"t_build_ms", [](const IterationRow& r) { return csv_field(r.step.timings.build_ms); }},
     {"t_pose_ms", [](const IterationRow& r) { return csv_field(r.step.timings.pose_ms); }},
+    // Rules 31–34: this step's hints and roll-backs, and the time restoring and replaying took.
+    {"hints", [](const IterationRow& r) { return csv_field(r.step.roll_back.hints); }},
+    {"rollbacks", [](const IterationRow& r) { return csv_field(r.step.roll_back.rollbacks); }},
+    {"rollbacks_refused", [](const IterationRow& r) { return csv_field(r.step.roll_back.refused); }},
+    {"replayed_iterations", [](const IterationRow& r) { return csv_field(r.step.roll_back.replayed_iterations); }},
+    {"t_rollback_ms", [](const IterationRow& r) { return csv_field(r.step.timings.roll_back_ms); }},
     // The motion model (Rules 23–27, spec §5.10): the tracked robot in its frame.
     {"mm_active", [](const IterationRow& r) { return csv_field(r.step.motion_model != nullptr); }},
     {"mm_distance", [](const IterationRow& r) { return mm_field(r, [](const auto& s) { return s.distance; }); }},
@@ -56,6 +70,11 @@ const Columns<IterationRow> kIterationColumns = {
     {"mm_heading_deg", [](const IterationRow& r) {
        return mm_field(r, [](const auto& s) { return s.mm_T_robot.heading * 180.0 / std::numbers::pi; });
      }},
+    // The one plane it tracks and its extent along the plane's tangent from the plane's map
+    // midpoint at the start (spec §5.10.3 [s_min, s_max]; Rule 23 only ever widens it).
+    {"mm_plane", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.plane(); }); }},
+    {"mm_s_min", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.s_min(); }); }},
+    {"mm_s_max", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.s_max(); }); }},
 };
 
 // One RltPlane as planes.csv sees it, after the recorder's scored columns.
@@ -89,6 +108,10 @@ class RelativePlane final : public PlaneAlgorithm {
   void step(const PlaneFrame& frame) override { last_ = slam_.step(frame); }
 
   void read_out() override {
+    totals_.hints += last_.roll_back.hints;
+    totals_.rollbacks += last_.roll_back.rollbacks;
+    totals_.refused += last_.roll_back.refused;
+    totals_.replayed_iterations += last_.roll_back.replayed_iterations;
     assignment_.assign(last_.assignment.begin(), last_.assignment.end());
     map_.clear();
     for (std::size_t id = 0; id < last_.map.size(); ++id)
@@ -149,6 +172,7 @@ class RelativePlane final : public PlaneAlgorithm {
       links.row(id_field(l.from), id_field(l.to), joined(l.planes), l.created_iteration, l.first);
     links.close();
     write_edges(dir / "edges.csv");
+    write_roll_backs(dir / "rollbacks.csv");
     // E02 (Fig 68): Rule 13's four offset series of one growing/shrinking pair, with key points only.
     if (slam_.options().key_points) write_key_point_pair_diagnostic(dir, slam_.planes(), slam_.options());
   }
@@ -156,11 +180,11 @@ class RelativePlane final : public PlaneAlgorithm {
  private:
   // edges.csv (diagnostic, spec §7.3): each group's last comparison of every chain edge — the piece
   // it used, both planes' lengths there and their canonical sizes in the group (Rule 28's L_e vs
-  // L*, Fig 87), key points, static flags, the Rule 15 tie and the offset.
+  // L*, Fig 87), key points, static flags, the Rule 15 tie, the offset and the chosen pair's σ.
   void write_edges(const std::filesystem::path& path) const {
     CsvWriter edges(path, {"group", "plane1", "plane2", "valid", "interval_start", "interval_end", "samples",
                            "length1", "length2", "canonical1", "canonical2", "kp1", "kp2", "static1", "static2",
-                           "ambiguous", "dx", "dz", "dpsi_deg"});
+                           "ambiguous", "dx", "dz", "dpsi_deg", "sigma"});
     for (const plane::RltXPoint& x : slam_.xpoints())
       for (std::size_t e = 0; e < x.edges().size(); ++e) {
         const plane::CompareResult& c = x.edges()[e];
@@ -169,11 +193,33 @@ class RelativePlane final : public PlaneAlgorithm {
         edges.row(x.id(), x.planes()[e], x.planes()[e + 1], c.valid, c.interval.start, c.interval.end, c.samples,
                   c.length1, c.length2, r1->max_length, r2->max_length, static_cast<int>(c.key_point1),
                   static_cast<int>(c.key_point2), c.static1, c.static2, c.ambiguous, c.delta.translation.x(),
-                  c.delta.translation.y(), c.delta.heading * 180.0 / std::numbers::pi);
+                  c.delta.translation.y(), c.delta.heading * 180.0 / std::numbers::pi, c.sigma);
       }
     edges.close();
   }
 
+  // rollbacks.csv (spec §7.3): every roll-back request (Rules 33, 34), the plane, group and hint
+  // level that set it off (empty for a forced one), how many iterations it replayed, and whether
+  // it was served (too_old, nesting: refused).
+  void write_roll_backs(const std::filesystem::path& path) const {
+    CsvWriter out(path, {"iteration_requested", "target_iteration", "plane", "group", "level", "replayed_iterations",
+                         "outcome"});
+    for (const plane::RollBackEvent& e : slam_.roll_back_log())
+      out.row(e.iteration_requested, e.target_iteration, id_field(e.plane), id_field(e.xpoint),
+              e.level > 0 ? csv_field(e.level) : CsvField{}, e.replayed_iterations, std::string(to_string(e.outcome)));
+    out.close();
+  }
+
+ public:
+  std::vector<std::string> summary_columns() const override {
+    return {"hints", "rollbacks", "rollbacks_refused", "replayed_iterations"};
+  }
+  void summary_fields(std::vector<CsvField>& out) const override {
+    out.insert(out.end(), {csv_field(totals_.hints), csv_field(totals_.rollbacks), csv_field(totals_.refused),
+                           csv_field(totals_.replayed_iterations)});
+  }
+
+ private:
   // Whether one of the chain edges of group x that compare `plane` tied both diagonals (Rule 15).
   bool ambiguous_in(int x, int plane) const {
     const plane::RltXPoint& group = slam_.xpoints().at(static_cast<std::size_t>(x));
@@ -186,6 +232,7 @@ class RelativePlane final : public PlaneAlgorithm {
   std::string name_ = "relative_plane";
   RltXPointsS slam_;
   RelativePlaneStep last_;
+  plane::RollBackCounts totals_;  // Rules 31–34 over the run (summary.csv)
   std::vector<int> assignment_;
   std::vector<MappedPlane> map_;
 };

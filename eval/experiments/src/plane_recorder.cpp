@@ -190,6 +190,8 @@ SummaryRow PlaneRecorder::finish() {
                                                       : std::nan("");
   scores.wrong_key_point_iterations = wrong_key_point_iterations_;
   row.planar = scores;
+  row.own_columns = algorithm_->summary_columns();
+  algorithm_->summary_fields(row.own_fields);
   return row;
 }
 

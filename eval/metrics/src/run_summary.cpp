@@ -54,6 +54,11 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryR
     columns.insert(columns.end(), {"final_heading_error_deg", "max_position_error", "pose_valid_fraction",
                                    "walls_mapped", "walls_seen", "key_point_accuracy",
                                    "wrong_key_point_iterations"});
+  std::vector<std::string> own;  // every row's own columns, in the order they first appear
+  for (const SummaryRow& r : rows)
+    for (const std::string& c : r.own_columns)
+      if (std::find(own.begin(), own.end(), c) == own.end()) own.push_back(c);
+  columns.insert(columns.end(), own.begin(), own.end());
   CsvWriter csv(file, columns);
   std::vector<CsvField> fields;
   const auto write = [&](const SummaryRow& r, bool is_ratio) {
@@ -81,6 +86,11 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryR
       fields.insert(fields.end(), {p.final_heading_error_deg, p.max_position_error, p.pose_valid_fraction,
                                    static_cast<long long>(p.walls_mapped), static_cast<long long>(p.walls_seen),
                                    p.key_point_accuracy, static_cast<long long>(p.wrong_key_point_iterations)});
+    }
+    for (const std::string& c : own) {
+      const auto at = std::find(r.own_columns.begin(), r.own_columns.end(), c);
+      const auto i = static_cast<std::size_t>(at - r.own_columns.begin());
+      fields.push_back(at != r.own_columns.end() && i < r.own_fields.size() ? r.own_fields[i] : CsvField{});
     }
     csv.row_fields(fields);
   };

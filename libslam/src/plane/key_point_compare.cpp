@@ -108,7 +108,11 @@ CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::s
       interval = {in1.front().iteration, in1.back().iteration};
     }
   }
+  // Rule 13 refined [C]: no pair of ends kept its offset, so no key point is real (rigid_sigma).
+  const double sigma = pairs.sigma_of(choice.anchor1, choice.anchor2);
+  if (options.rigid_sigma > 0 && sigma > options.rigid_sigma) return result;
   result.valid = true;
+  result.sigma = sigma;
   result.delta = choice.delta;
   result.length1 = pairs.length1;
   result.length2 = pairs.length2;

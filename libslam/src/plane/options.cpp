@@ -20,6 +20,10 @@ std::string_view to_string(Rule21Order order) {
 
 std::string_view to_string(ChainOrder order) { return order == ChainOrder::Creation ? "creation" : "reversed"; }
 
+std::string_view to_string(IntervalMeasure measure) {
+  return measure == IntervalMeasure::Shared ? "shared" : "piece";
+}
+
 std::vector<OptionIssue> check(const RelativePlaneOptions& o) { return check_fields(o); }
 
 }  // namespace relslam::plane

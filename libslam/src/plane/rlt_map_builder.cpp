@@ -23,8 +23,12 @@ std::vector<PlaneObject> stored(const RltPlane& plane) {
 // piece: an end that leaves the view while the plane keeps shrinking shows no growth switch.)
 // A membership's key point whose comparison piece holds `iteration`; None if there is none.
 KeyPoint membership_key_point_at(const RltPlane& plane, int iteration) {
+  // A motion model's key point held over its track, not at each iteration: at the turn's end the
+  // end it held can be cut (Map E's fourth corner, iteration 1235: the start wall grown from the
+  // wrong end, the pose 1.8 off).
   for (const RltXPointRef& ref : plane.refs())
-    if (ref.valid && ref.key_point != KeyPoint::None && ref.interval.in_interval(iteration)) return ref.key_point;
+    if (ref.valid && !ref.tracked && ref.key_point != KeyPoint::None && ref.interval.in_interval(iteration))
+      return ref.key_point;
   return KeyPoint::None;
 }
 

@@ -63,4 +63,10 @@ RltXPointRef& RltPlane::join(XPointId x, int iteration) {
   return joined;
 }
 
+bool RltPlane::add_oneway(XPointId x) {
+  if (ref(x) != nullptr || std::ranges::find(oneway_, x) != oneway_.end()) return false;
+  oneway_.push_back(x);
+  return true;
+}
+
 }  // namespace relslam::plane

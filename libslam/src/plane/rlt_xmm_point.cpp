@@ -79,6 +79,7 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
   // The membership: the plane at its tracked extent; its key point is the end that did not move.
   RltXPointRef* ref = planes[plane_].ref(xpoint_);
   ref->valid = true;
+  ref->tracked = true;
   ref->pose = mm_T_plane_ * PlanarPose{{0.5 * (s_min_ + s_max_), 0.0}, 0.0};
   ref->max_length = s_max_ - s_min_;
   ref->height = p.latest().height();

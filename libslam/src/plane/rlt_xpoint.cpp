@@ -105,7 +105,7 @@ const RltPlaneInterval* RltXPoint::comparison_window(const std::vector<RltPlane>
   return &scratch_common_;
 }
 
-bool RltXPoint::reorder_if_due(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
                                int iteration) {
   const int n = static_cast<int>(chain_.size());
   if (n < 3 || motion_model()) return false;  // two planes have one edge either way
@@ -123,9 +123,7 @@ bool RltXPoint::reorder_if_due(const std::vector<RltPlane>& planes, const Relati
     for (int j = i + 1; j < n; ++j) {
       const CompareResult r = compare_with_key_points(observations(planes, i, within), observations(planes, j, within),
                                                       options);
-      const bool usable = r.valid && !r.ambiguous && (r.key_point1 != KeyPoint::None || r.static1) &&
-                          (r.key_point2 != KeyPoint::None || r.static2);
-      weight[i][j] = weight[j][i] = usable ? r.samples : -1;
+      weight[i][j] = weight[j][i] = places_both(r) ? r.samples : -1;
     }
   const std::optional<std::vector<int>> path = best_comparison_path(weight, options.reorder.exact_max_planes);
   if (!path) return false;  // no chain of usable pairs: keep the one there is [R]
@@ -142,6 +140,16 @@ bool RltXPoint::reorder_if_due(const std::vector<RltPlane>& planes, const Relati
   if (current_usable && total(*path) <= total(current)) return false;
   std::vector<PlaneId> order(n);
   for (int k = 0; k < n; ++k) order[k] = chain_[(*path)[k]];
+  // Spec §5.7.3: the reserves (Rule 36) of the edges that changed are cleared; a plane keeping
+  // its parent keeps its reserve.
+  for (int k = 0; k < n; ++k) {
+    const PlaneId parent = k > 0 ? order[k - 1] : kNone;
+    RltXPointRef& ref = *planes[order[k]].ref(id_);
+    if (ref.reserve_partner != parent) {
+      ref.reserve.reset();
+      ref.reserve_partner = parent;
+    }
+  }
   set_chain(std::move(order));
   return true;
 }
@@ -187,6 +195,33 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
   }
 }
 
+void RltXPoint::release_scratch() {
+  scratch_observations_ = {};
+  observations_filled_ = {};
+  scratch_common_ = {};
+}
+
+void RltXPoint::check_interval_size(std::vector<RltPlane>& planes, const RollBackOptions& options, int iteration,
+                                    std::vector<PlaneId>& failed) const {
+  if (motion_model()) return;  // one plane, tracked, compared with nothing
+  for (std::size_t k = 1; k < chain_.size(); ++k) {
+    RltXPointRef& ref = *planes[chain_[k]].ref(id_);
+    if (ref.confirmed || ref.hinted) continue;
+    // Rule 31: seen together with the plane it is compared with; or thesis 4.5 CheckIntervalSize,
+    // "the interval the RltPlane's RltXPointRef is calculated in": the placing comparison's piece.
+    const CompareResult& placing = edges_[k - 1];
+    const int covered =
+        options.measure == IntervalMeasure::Shared
+            ? RltPlaneInterval::common_size(planes[chain_[k - 1]].intervals(), planes[chain_[k]].intervals())
+            : (placing.valid ? placing.samples : 0);
+    if (covered >= options.min_interval) {
+      ref.confirmed = true;
+      continue;
+    }
+    if (iteration - ref.join_iteration >= options.confirm_after) failed.push_back(chain_[k]);
+  }
+}
+
 const std::vector<PlaneObject>& RltXPoint::observations(const std::vector<RltPlane>& planes, std::size_t k,
                                                          const RltPlaneInterval* within) {
   if (!observations_filled_[k]) {
@@ -210,9 +245,8 @@ void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const Re
   const bool same_chain = snapshot_ && snapshot_->chain == chain_;
   if (complete) {
     // Σ L* at least the snapshot's; about equal sizes: the longer total interval [T, spec §5.12].
-    const bool better = !same_chain || total_length > snapshot_->total_length + options.same_length ||
-                        (total_length >= snapshot_->total_length - options.same_length &&
-                         total_samples >= snapshot_->total_samples);
+    const bool better = !same_chain || replaces_saved(total_length, total_samples, snapshot_->total_length,
+                                                      snapshot_->total_samples, options.same_length);
     if (!better) return;
     Snapshot& s = snapshot_.emplace();
     s.chain = chain_;
@@ -226,7 +260,17 @@ void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const Re
   // when one was made and could not place a plane (Rule 15's tie, a missing key point).
   if (!same_chain || std::ranges::all_of(edges_, &CompareResult::valid)) return;
   edges_ = snapshot_->edges;
-  for (std::size_t k = 0; k < n; ++k) *planes[chain_[k]].ref(id_) = snapshot_->refs[k];
+  for (std::size_t k = 0; k < n; ++k) {
+    // Rule 36's reserves are newer than the snapshot, and a membership's Rule 31/32 verdict
+    // belongs to it, not to the computation restored.
+    RltXPointRef& ref = *planes[chain_[k]].ref(id_);
+    RltXPointRef restored = snapshot_->refs[k];
+    restored.reserve = std::move(ref.reserve);
+    restored.reserve_partner = ref.reserve_partner;
+    restored.confirmed = ref.confirmed;
+    restored.hinted = ref.hinted;
+    ref = std::move(restored);
+  }
 }
 
 void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
@@ -246,6 +290,11 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
     edge_sources_[k - 1] = source;
     edges_[k - 1] = compare_with_key_points(observations(planes, k - 1, within), observations(planes, k, within),
                                             options);
+    // Rule 36 (DoBackupCheck, spec §5.7.1, §5.12): the pair's best result so far when it beats
+    // this one; so a plane whose shared iterations the circular array overwrote stays placed
+    // (BuildMap's "invalid reference uses its reserve", spec §5.8 step 5, happens here).
+    if (options.rules.save_reserve)
+      do_backup_check(*planes[chain_[k]].ref(id_), chain_[k - 1], edges_[k - 1], options.same_length);
   }
 
   // Canonical size and key point of each plane (spec §5.7.2, A18): the largest length among

@@ -32,6 +32,38 @@ RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
   if (started_ && frame.iteration <= iteration_)
     throw std::logic_error("RltXPointsS::step: iteration " + std::to_string(frame.iteration) + " after " +
                            std::to_string(iteration_));
+  const RollBackOptions& rb = options_.rollback;
+  step_log_begin_ = roll_back_log_.size();
+  if (keeps_history()) {
+    // PlaneRecord (thesis 4.4.3.17): the input is kept for the replay; before the first one the
+    // empty state is kept, so a roll-back can reach the start of the run.
+    if (storage_.oldest() == nullptr) storage_.checkpoint_if_due(frame.iteration - 1, *this, rb.checkpoint_period);
+    storage_.record(frame);
+  }
+  RelativePlaneStep result = iterate(frame);
+  if (rb.force_every > 0 && frame.iteration > 0 && frame.iteration % rb.force_every == 0)
+    set_roll_back_to({.iteration_requested = frame.iteration, .target_iteration = frame.iteration - rb.force_depth});
+  // Walkthrough 4.5: RollBack is called last, after GetPoset.
+  if (roll_back_request_) roll_back(result);
+  if (keeps_history()) {
+    storage_.checkpoint_if_due(iteration_, *this, rb.checkpoint_period);
+    storage_.trim(iteration_, rb.max_depth);
+  }
+
+  result.world_T_robot = pose_.world_T_robot;
+  result.pose_valid = pose_.valid;
+  result.pose_planes = pose_.planes_used;
+  result.assignment = assignment_;
+  result.map = builder_.map();
+  result.groups = xpoints_;
+  result.links = links_;
+  result.current_group = current_;
+  result.motion_model = active_motion_model();
+  result.roll_backs = std::span<const RollBackEvent>(roll_back_log_).subspan(step_log_begin_);
+  return result;
+}
+
+RelativePlaneStep RltXPointsS::iterate(const PlaneFrame& frame) {
   RelativePlaneStep result;
   result.iteration = frame.iteration;
   Clock::time_point t = Clock::now();
@@ -46,17 +78,97 @@ RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
   result.timings.build_ms = lap(t);
   get_poset();
   result.timings.pose_ms = lap(t);
-
-  result.world_T_robot = pose_.world_T_robot;
-  result.pose_valid = pose_.valid;
-  result.pose_planes = pose_.planes_used;
-  result.assignment = assignment_;
-  result.map = builder_.map();
-  result.groups = xpoints_;
-  result.links = links_;
-  result.current_group = current_;
-  result.motion_model = active_motion_model();
   return result;
+}
+
+void RltXPointsS::request_roll_back(int target) {
+  set_roll_back_to({.iteration_requested = iteration_, .target_iteration = target});
+}
+
+void RltXPointsS::send_hint(const RltTemporalHint& hint) {
+  hints_.add(hint);
+  PlaneId plane = kNone;
+  for (PlaneId p = 0; p < static_cast<PlaneId>(planes_.size()) && plane == kNone; ++p)
+    if (identity(p) == hint.plane) plane = p;
+  set_roll_back_to({iteration_, hint.iteration, plane, hint.xpoint, static_cast<int>(hint.level)});
+}
+
+void RltXPointsS::set_roll_back_to(const RollBackEvent& request) {
+  // SetRollBackTo: several requests in one iteration roll back once, to the earliest target.
+  if (!roll_back_request_ || request.target_iteration < roll_back_request_->target_iteration)
+    roll_back_request_ = request;
+}
+
+void RltXPointsS::check_interval_sizes(const RltXPoint& x, RelativePlaneStep& result) {
+  failed_.clear();
+  x.check_interval_size(planes_, options_.rollback, iteration_, failed_);
+  for (PlaneId p : failed_) {
+    RltXPointRef& ref = *planes_[p].ref(x.id());
+    ref.hinted = true;
+    const PlaneIdentity id = identity(p);
+    // Rule 32: the next level for this plane. Thesis 4.5 (CheckIntervalSize): a plane that
+    // started the group it fails in "should not be added to any RltXPoint" — its own new group
+    // was the second try, and the replay would only make the same group again.
+    const int level = founders_[x.id()] == p ? static_cast<int>(HintLevel::NotOnMap)
+                                              : std::min(hints_.count_for(id) + 1, static_cast<int>(HintLevel::NotOnMap));
+    hints_.add({static_cast<HintLevel>(level), id, ref.join_iteration, x.id()});
+    ++result.roll_back.hints;
+    // Rule 34: back to when the plane joined, so the hint can act there.
+    set_roll_back_to({iteration_, ref.join_iteration, p, x.id(), level});
+  }
+}
+
+void RltXPointsS::roll_back(RelativePlaneStep& result) {
+  // RollBack (Rule 33, spec §5.11.3): restore the end of target − 1 and replay the stored inputs
+  // up to now with the hints held; a roll-back asked for while replaying is served after that
+  // replayed iteration (nesting), up to rollback.max_nesting in one step.
+  const Clock::time_point start = Clock::now();
+  const RollBackOptions& rb = options_.rollback;
+  const PlaneStepTimings first_run = result.timings;
+  RollBackCounts counts = result.roll_back;
+  const int now = iteration_;
+  int done = now;  // the state is the end of this iteration
+  int restored = 0;
+  std::size_t replaying = roll_back_log_.size();  // the log entry whose replay runs
+  while (true) {
+    if (roll_back_request_) {
+      RollBackEvent event = *roll_back_request_;
+      roll_back_request_.reset();
+      const RltPlaneStorage::Checkpoint* from =
+          restored < rb.max_nesting ? storage_.newest_at_or_before(event.target_iteration - 1) : nullptr;
+      if (restored >= rb.max_nesting) {
+        event.outcome = RollBackOutcome::Nesting;
+      } else if (from == nullptr) {
+        event.outcome = RollBackOutcome::TooOld;  // spec §5.11.3: refused, and logged
+      } else {
+        event.outcome = RollBackOutcome::Replayed;
+        ++restored;
+        storage_.drop_after(from->iteration);
+        done = from->iteration;
+        static_cast<RltXPointsState&>(*this) = from->state;
+      }
+      roll_back_log_.push_back(event);
+      if (event.outcome == RollBackOutcome::Replayed) {
+        ++counts.rollbacks;
+        replaying = roll_back_log_.size() - 1;
+      } else {
+        ++counts.refused;
+      }
+    }
+    if (done >= now) break;
+    const PlaneFrame* next = storage_.frame_after(done);
+    if (next == nullptr || next->iteration > now)
+      throw std::logic_error("RltXPointsS::roll_back: no stored input after iteration " + std::to_string(done));
+    result = iterate(*next);
+    done = next->iteration;
+    counts.hints += result.roll_back.hints;
+    ++counts.replayed_iterations;
+    ++roll_back_log_[replaying].replayed_iterations;
+    storage_.checkpoint_if_due(done, *this, rb.checkpoint_period);
+  }
+  result.roll_back = counts;
+  result.timings = first_run;
+  result.timings.roll_back_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
 void RltXPointsS::start_iteration(int iteration) {
@@ -111,7 +223,7 @@ void RltXPointsS::add_planes(const PlaneFrame& frame, RelativePlaneStep& result)
   // Anything left is a plane not seen before: a new RltPlane in the unassigned list.
   for (int i = 0; i < static_cast<int>(stamped_.size()); ++i)
     if (assignment_[i] == kNone) {
-      assignment_[i] = create_plane(stamped_[i]);
+      assignment_[i] = create_plane(stamped_[i], i);
       ++result.new_planes;
     }
 }
@@ -162,9 +274,10 @@ void RltXPointsS::add_to_plane(PlaneId plane, const PlaneObject& observation) {
   }
 }
 
-PlaneId RltXPointsS::create_plane(const PlaneObject& observation) {
+PlaneId RltXPointsS::create_plane(const PlaneObject& observation, int input_index) {
   const PlaneId id = static_cast<PlaneId>(planes_.size());
   planes_.emplace_back(id, observation, options_.plane_capacity);
+  plane_inputs_.push_back(input_index);
   unassigned_.push_back(id);
   recent_.push_back(id);
   in_recent_.push_back(1);
@@ -175,7 +288,19 @@ PlaneId RltXPointsS::create_plane(const PlaneObject& observation) {
 void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   // Rule 29 (spec §5.10.4): leaving a motion model where a group already holds every plane in
   // view goes back to that group instead of starting a new one.
-  if (motion_model_active_ && options_.rules.return_to_visited_group) switch_to_group_holding_all();
+  if (motion_model_active_ && options_.rules.return_to_visited_group && switch_to_group_holding_all() &&
+      options_.key_points && options_.rules.pseudo_merge) {
+    // Rule 37 looks for duplicates where the motion model that just ended puts the robot now. A
+    // copy tracks this iteration and the membership it writes is put back: the ended model and
+    // its plane stay exactly as they were (frozen), so the rule changes nothing but the chart.
+    RltXMMPoint tracking = motion_models_.back();
+    RltXPointRef& tracked_ref = *planes_[tracking.plane()].ref(tracking.xpoint());
+    const RltXPointRef kept = tracked_ref;
+    tracking.compute(planes_, options_.motion_model);
+    tracked_ref = kept;
+    const PlanarPose world_T_robot = tracking.world_T_robot(iteration_).value_or(last_valid_pose_.world_T_robot);
+    result.oneway_links += mend_merge_after_loop_closing(world_T_robot);
+  }
   // Spec §5.5.1 step A, with the bootstrap of A23: the first group waits for two planes.
   if (xpoints_.empty()) bootstrap(result);
   if (!xpoints_.empty()) {
@@ -192,6 +317,10 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   }
   // Step B: the planes global matching re-acquired (Rule 21).
   if (options_.key_points && options_.rules.regroup_reacquired && !xpoints_.empty()) regroup_reacquired(result);
+  if (options_.key_points && options_.rules.regroup_unplaced && !xpoints_.empty()) regroup_unplaced(result);
+  if (motion_model_active_ && options_.key_points && options_.rules.return_to_visited_group &&
+      options_.rules.current_group_chart)
+    end_motion_model_on_the_map();
   upkeep_unassigned();
   // Step D: the current group by charting (Rule 22); off, the group last started stays current,
   // as before Rule 22 in the thesis (4.3.5).
@@ -220,15 +349,59 @@ void RltXPointsS::regroup_reacquired(RelativePlaneStep& result) {
   });
 }
 
+void RltXPointsS::regroup_unplaced(RelativePlaneStep& result) {
+  // Rule 19 extended [C] (options.hpp): a plane in view that is in groups but on no map entry
+  // (last iteration's BuildMap), settled there for unplaced_wait iterations, tries Rule 7 in the
+  // current group and its neighbours — new partners, a fresh comparison, a key point.
+  const std::vector<MapPlane>& map = builder_.map();
+  for (PlaneId p : assignment_) {
+    const RltPlane& plane = planes_[p];
+    if (plane.refs().empty() || static_cast<int>(plane.refs().size()) >= options_.regroup_memberships) continue;
+    if (p < static_cast<PlaneId>(map.size()) && map[p].mapped) continue;
+    const bool settled = std::ranges::all_of(plane.refs(), [&](const RltXPointRef& ref) {
+      return iteration_ - ref.join_iteration >= options_.unplaced_wait;
+    });
+    if (settled && join_group(p)) ++result.planes_grouped;
+  }
+}
+
+void RltXPointsS::end_motion_model_on_the_map() {
+  // Spec §5.10.4 [T/P]: the motion model ends once a second plane comes into view. Rule 29 ends
+  // it when one group holds every plane in view, a new group when the second plane is new. When
+  // the second plane is on the map already, in no group with the motion model's plane and at
+  // Rule 21's membership cap, neither comes (Map E's fourth corner from the third loop: the
+  // motion model tracked the start wall on, the pose drifting 0.05 an iteration). [C] Then the
+  // chart's group — the one holding most planes in view — becomes current; the pose is GetPoset's.
+  // Part of Rule 29 (a return to where the robot has been): off with it.
+  const std::vector<MapPlane>& map = builder_.map();
+  const PlaneId tracked = motion_models_.back().plane();
+  const bool second_on_map = std::ranges::any_of(assignment_, [&](PlaneId p) {
+    return p != tracked && p < static_cast<PlaneId>(map.size()) && map[p].mapped;
+  });
+  if (!second_on_map) return;
+  fill_chart(false);
+  const auto best = std::ranges::max_element(chart_);  // the first of the most: the lowest id
+  if (*best > 0) set_current(static_cast<XPointId>(best - chart_.begin()));
+}
+
+void RltXPointsS::fill_chart(bool oneway_links) {
+  // RltXPointChart's counts: per group (motion models aside), the planes in view it holds.
+  chart_.assign(xpoints_.size(), 0);
+  for (PlaneId p : assignment_) {
+    for (const RltXPointRef& ref : planes_[p].refs())
+      if (!xpoints_[ref.xpoint].motion_model()) ++chart_[ref.xpoint];
+    if (!oneway_links) continue;
+    for (XPointId y : planes_[p].oneway_xpoints())  // Rule 37: as if merged with its duplicates
+      if (planes_[p].ref(y) == nullptr) ++chart_[y];    // (unless it has since joined that group)
+  }
+}
+
 void RltXPointsS::chart_current_group() {
   // RltXPointChart::GetBestXPoint (Rule 22, spec §5.5.6): the group holding most of the planes
   // seen this iteration; a tie keeps the current group, other ties the lowest id [R]. A motion
   // model stays current until it ends (Rules 26, 29).
   if (motion_model_active_ || xpoints_.empty()) return;
-  chart_.assign(xpoints_.size(), 0);
-  for (PlaneId p : assignment_)
-    for (const RltXPointRef& ref : planes_[p].refs())
-      if (!xpoints_[ref.xpoint].motion_model()) ++chart_[ref.xpoint];
+  fill_chart(true);
   XPointId best = current_;
   int best_count = current_ != kNone ? chart_[current_] : 0;
   for (XPointId x = 0; x < static_cast<XPointId>(xpoints_.size()); ++x)
@@ -243,8 +416,9 @@ bool RltXPointsS::bootstrap(RelativePlaneStep& result) {
   // X0: the ready unassigned planes, in creation order, that share min_common iterations.
   candidates_.clear();
   RltPlaneInterval shared, narrowed;
+  const XPointId x0 = static_cast<XPointId>(xpoints_.size());
   for (PlaneId q : unassigned_) {
-    if (planes_[q].readings() < options_.min_readings) continue;
+    if (planes_[q].readings() < options_.min_readings || !may_join(q, x0)) continue;  // Rule 32's hints
     if (!candidates_.empty()) {
       if (RltPlaneInterval::common_size(shared, planes_[q].intervals()) < options_.min_common) continue;
       RltPlaneInterval::minimum_interval(shared, planes_[q].intervals(), narrowed);
@@ -255,7 +429,7 @@ bool RltXPointsS::bootstrap(RelativePlaneStep& result) {
     candidates_.push_back(q);
   }
   if (candidates_.size() < 2) return false;
-  create_xpoint(candidates_, kNone, {});
+  create_xpoint(candidates_, kNone, {}, kNone);
   std::erase_if(unassigned_, [&](PlaneId q) { return std::ranges::find(candidates_, q) != candidates_.end(); });
   ++result.groups_created;
   result.planes_grouped += static_cast<int>(candidates_.size());
@@ -267,7 +441,7 @@ bool RltXPointsS::join_group(PlaneId plane) {
   // Rule 7 in the working group, then in its neighbours (spec §5.5.1 A).
   // A motion-model group never takes a plane (spec §5.5.2).
   const auto fits = [&](XPointId x) {
-    if (xpoints_[x].motion_model() || planes_[plane].ref(x) != nullptr) return false;
+    if (xpoints_[x].motion_model() || planes_[plane].ref(x) != nullptr || !may_join(plane, x)) return false;
     return !options_.rules.common_interval || xpoints_[x].can_add(planes_, planes_[plane], options_.min_common);
   };
   XPointId target = fits(current_) ? current_ : kNone;
@@ -280,7 +454,8 @@ bool RltXPointsS::join_group(PlaneId plane) {
 
 bool RltXPointsS::make_new_xpoint(PlaneId plane, RelativePlaneStep& result) {
   // TraverseToLink (Rule 12): depth first over every group from the working one, each visited
-  // once; the first that can give linking planes is linked to.
+  // once; the first that can give linking planes is linked to. CanMakeNewXPoint (Rule 32).
+  if (!hints_.may_start_group(identity(plane), iteration_)) return false;
   visited_.assign(xpoints_.size(), 0);
   stack_.assign(1, current_);
   std::vector<PlaneId> linking;
@@ -293,7 +468,7 @@ bool RltXPointsS::make_new_xpoint(PlaneId plane, RelativePlaneStep& result) {
       std::vector<PlaneId> chain = linking;
       chain.push_back(plane);
       std::ranges::sort(chain);  // creation order (spec §5.5.3)
-      set_current(create_xpoint(std::move(chain), x, std::move(linking)));
+      set_current(create_xpoint(std::move(chain), x, std::move(linking), plane));
       ++result.groups_created;
       return true;
     }
@@ -308,10 +483,12 @@ bool RltXPointsS::link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<P
   // LinkToNewXPoint (Rules 8, 9): planes of `from` placed in it and seen recently together
   // with the new plane.
   const RltPlane& q = planes_[plane];
+  const XPointId made = static_cast<XPointId>(xpoints_.size());  // the group the links would join
   candidates_.clear();
   for (PlaneId l : xpoints_[from].planes()) {
     const RltPlane& link = planes_[l];
     if (l == plane || !link.ref(from)->valid || iteration_ - link.last_iteration() > options_.link_window) continue;
+    if (!may_join(l, made)) continue;  // Rule 32's hints hold for linking planes too
     if (RltPlaneInterval::common_size(link.intervals(), q.intervals()) >= options_.min_common) candidates_.push_back(l);
   }
   // Rule 9: latest first seen first (off: earliest); creation order breaks ties.
@@ -353,8 +530,10 @@ bool RltXPointsS::link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<P
   return false;
 }
 
-XPointId RltXPointsS::create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking) {
+XPointId RltXPointsS::create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking,
+                                    PlaneId founder) {
   const XPointId id = static_cast<XPointId>(xpoints_.size());
+  founders_.push_back(founder);
   if (options_.chain_order == ChainOrder::Reversed) std::ranges::reverse(chain);  // E31 only
   for (PlaneId p : chain) planes_[p].join(id, iteration_);
   xpoints_.emplace_back(id, iteration_, std::move(chain));
@@ -401,12 +580,34 @@ bool RltXPointsS::switch_to_group_holding_all() {
   return false;
 }
 
+int RltXPointsS::mend_merge_after_loop_closing(const PlanarPose& world_T_robot) {
+  // MendMergeAfterLoopClosing (Rule 37, spec §5.5.5): every plane in view against the whole map
+  // (MatchPlanetoMap's all-matches form); a match other than the plane itself is a duplicate, and
+  // each group holding it that does not hold the plane gets a one-way link from the plane. The
+  // groups' plane lists are not touched: ComputeXPoint never compares through such a link.
+  int added = 0;
+  const std::vector<char> none(planes_.size(), 0);
+  for (int i = 0; i < static_cast<int>(stamped_.size()); ++i) {
+    const PlaneId p = assignment_[i];
+    matches_.clear();
+    builder_.match_plane_to_map(i, stamped_[i], world_T_robot, options_.global_match, options_.rules.normal_direction,
+                                none, matches_);
+    for (const PlaneMatch& m : matches_) {
+      if (m.plane == p) continue;
+      for (const RltXPointRef& ref : planes_[m.plane].refs())
+        if (!xpoints_[ref.xpoint].motion_model() && planes_[p].add_oneway(ref.xpoint)) ++added;
+    }
+  }
+  return added;
+}
+
 void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
   const bool reorder = options_.key_points && options_.rules.reorder_planes;
   for (RltXPoint& x : xpoints_)
     if (x.needs_compute() && !x.motion_model()) {
       if (reorder) x.reorder_if_due(planes_, options_, iteration_);  // Rule 30 (spec §5.7.1)
       x.compute(planes_, options_);
+      if (options_.rules.interval_check) check_interval_sizes(x, result);  // Rules 31, 32 (walkthrough 4.5)
       ++result.groups_computed;
     }
   // A motion model re-runs its track over its plane's observations (spec §5.10.3).
@@ -456,6 +657,7 @@ void RltXPointsS::create_motion_model(PlaneId plane) {
   // makes a new one [T].
   const XPointId id = static_cast<XPointId>(xpoints_.size());
   planes_[plane].join(id, iteration_);
+  founders_.push_back(kNone);
   RltXPoint& x = xpoints_.emplace_back(id, iteration_, std::vector<PlaneId>{plane});
   x.set_anchor(last_valid_pose_.world_T_robot);
   links_.push_back({current_, id, {plane}, false, iteration_});

@@ -72,6 +72,13 @@ struct RuleSwitches {
   // compared over, so a plane re-seen whole is computed whole ("plane 5", Figs 80/81). Off:
   // it stays in the groups it had.
   bool regroup_reacquired = true;
+  // Rule 19 extended [C]: a plane none of its groups can place — the only partner it was
+  // compared with is its mirror across a corridor, both cut by the frustum at the same place, so
+  // Rule 15 ties both diagonals and no key point is found (walls 2, 8 and 13 of Map D's small
+  // frustum) — joins the current group or a neighbour like an unassigned plane, once it has been
+  // in its groups for `unplaced_wait` iterations, while it has fewer than regroup_memberships
+  // groups; the new partners give it its key point. Off: the thesis, it stays off the map.
+  bool regroup_unplaced = true;
   // Rule 22: the current group is the one holding most of the planes seen this iteration
   // (RltXPointChart). Off: the group last started stays current.
   bool current_group_chart = true;
@@ -107,6 +114,33 @@ struct RuleSwitches {
   // iterations two planes shared. Off: such a group loses those planes and they vanish from the
   // map after the wrap-around (E19, Figs 98–99). Part 2 only.
   bool save_snapshot = true;
+  // Rule 36 (DoBackupCheck, spec §5.12): each chain edge keeps its best comparison so far (the
+  // child plane's largest size, then the longest interval, with the parent's size and key point
+  // of that time for Rule 28) and uses it when the current one is smaller or cannot place the
+  // plane — also once the circular array has overwritten the iterations the pair shared. Off:
+  // only Rule 35's whole-group copy saves a group (E19). Part 2 only. [T: on] Measured (seed 1):
+  // final mean map error E19 0.055 → 0.048, E15 1.35 → 1.08, E23 0.24 → 0.12, E24 11 → 36 of 36
+  // walls, E25 1.07 → 1.04; worse on E26 (10 → 9 of 10 walls, 1.06 → 1.27), and key-point claims
+  // are right less often (E15 89 → 85 %): a reserve's key point is that of its own interval.
+  bool save_reserve = true;
+  // Rule 37 (MendMergeAfterLoopClosing, spec §5.5.5): when Rule 29 returns to a visited group,
+  // each plane in view that has a duplicate on the map (the same wall as another RltPlane, found
+  // by global matching) gets a one-way link to each group the duplicate is in; Rule 22 then
+  // counts it for them, as if the two were merged, while no group compares it. Off: a wall seen
+  // again as a new plane charts only its own groups (the wrong current group of Fig 101). [T: on]
+  // Measured: E20 (Map E, seeds 1–5) and Map D two loops give identical runs on and off — the
+  // links are added rarely and have not yet changed a current group here.
+  bool pseudo_merge = true;
+  // Rules 31–34 (thesis 4.3.7.2, walkthrough 4.5; spec §5.11): a plane whose comparison in a
+  // group still covers fewer than rollback.min_interval iterations rollback.confirm_after
+  // iterations after it joined gets a hint (first: not this group; then: only a group of its own;
+  // then: not on the map), and the algorithm rolls back to the iteration it joined and replays
+  // the stored inputs with the hint (Figs 94–96: a plane seen as another leaves, compared over a
+  // few iterations, barely mapped). Off: every plane stays in the groups it joined. [T: on;
+  // C: off] On changes the measured runs of Maps D and E with noise, without a clear gain yet
+  // (README, E17: roll-backs, map and pose errors with it off and on); off, like reorder_planes,
+  // so what was measured without it stays reproducible.
+  bool interval_check = false;
 };
 
 // The motion model (Rules 23–27, thesis 4.3.6; spec §5.10, §5.14).
@@ -132,6 +166,46 @@ struct ReorderOptions {
   int period = 200;
   // The best path is searched exactly up to this many planes, greedily beyond [R].
   int exact_max_planes = 12;
+};
+
+// What Rules 31/32 measure of the comparison that places a plane (its chain edge from the plane
+// before it).
+enum class IntervalMeasure : unsigned char {
+  // The iterations the two planes were seen together: Rule 31, "viewable together for a minimum
+  // amount of time" [T]. A plane seen just as its partner leaves (Figs 94–95) fails it.
+  Shared,
+  // The iterations the comparison averaged, one growth-phase piece (Rule 18): the walkthrough's
+  // "the interval it is calculated in" [T]. Stricter: two planes seen together throughout but
+  // growing and shrinking by turns fail it too.
+  Piece,
+};
+
+// Hints and roll-back (Rules 31–34, thesis 4.3.7.2, 4.4.3.15–17; spec §5.11, §5.14).
+struct RollBackOptions {
+  // Rules 31/32: a membership is confirmed once the comparison placing the plane (its chain edge
+  // from the previous plane) covers this many iterations [R, I_min] ...
+  int min_interval = 20;
+  // ... counted as `measure` says [C: shared, Rule 31's wording; measured (README, E17) both give
+  // the same maps of Maps D and E, shared with fewer roll-backs: 4 against 6 on Map D, large frustum].
+  IntervalMeasure measure = IntervalMeasure::Shared;
+  // ... and judged this many iterations after the plane joined: earlier its interval may still
+  // grow [R, T_confirm].
+  int confirm_after = 60;
+  // Rule 33: a copy of the whole state is kept every this many iterations; a roll-back restores
+  // the newest copy before its target and replays from there, so a shorter period replays less
+  // and copies more [C; README E17 gives the time and memory it costs].
+  int checkpoint_period = 50;
+  // The oldest reachable iteration, iterations back: the PlaneRecord buffer of thesis 4.4.3.17,
+  // as deep as RltPlane's circular array [R, storage_capacity]; a roll-back further back is
+  // refused and counted (spec §5.11.3).
+  int max_depth = 1200;
+  // Roll-backs in one step (nested: requested while replaying). Each plane has at most three
+  // hint levels, so this is only a safety net; beyond it requests are refused and counted [C].
+  int max_nesting = 32;
+  // Testing hook [C]: every this many iterations a roll-back with no hint to force_depth
+  // iterations back, whose replay must give the same run (spec §8 roll-back idempotence). 0: never.
+  int force_every = 0;
+  int force_depth = 10;
 };
 
 struct RelativePlaneOptions {
@@ -168,6 +242,14 @@ struct RelativePlaneOptions {
   // off the rest of the series (a cut end taken for a static one) are left out of the average
   // [C: on; off is the thesis's plain split].
   bool trim_piece_ends = true;
+  // Rule 13 refined [C]: a comparison whose lowest key-point σ is above this holds no pair of ends
+  // at a fixed offset — one plane had no real end in view (seen cut at both ends as the small
+  // frustum's far corner sweeps it in during a turn, Fig 105's case) — and is invalid, so neither
+  // it nor its size is kept (Rule 36). The bound is the noise's: noise-free runs set 1e-6 (with
+  // same_length 1e-9); with noise no fixed value parts the two (measured: 0.04 keeps Map D's
+  // noise-free turns exact but costs the noisy runs walls, 0.08 misses the turn's 0.07) [T: 0,
+  // every comparison counts].
+  double rigid_sigma = 0;
   // Iterations a pair is compared over (Figs 74/75) [T: Pair].
   IntervalMode interval_mode = IntervalMode::Pair;
   // Which growth-phase piece a pair is compared over: Rule 18's most iterations, or the
@@ -184,6 +266,8 @@ struct RelativePlaneOptions {
   // Rule 21: a re-acquired plane starts a new group only while it belongs to fewer groups than
   // this [R, K_xrefs: the thesis's "a few"]; the order of the attempts is rule21_order.
   int regroup_memberships = 2;
+  // rules.regroup_unplaced: iterations a plane waits in its groups before it counts as unplaced [C].
+  int unplaced_wait = 20;
   Rule21Order rule21_order = Rule21Order::Walkthrough;
   // Part 3 (thesis 4.3.6): the motion model that carries the pose through one partial plane.
   // Runs with key_points only [C]: it grows planes from their static end. So do Rules 21 and 22
@@ -191,6 +275,8 @@ struct RelativePlaneOptions {
   MotionModelOptions motion_model;
   // Part 3 (thesis 4.3.7): Rule 30's re-ordering of comparison chains; with key_points only.
   ReorderOptions reorder;
+  // Part 3 (thesis 4.3.7.2): the interval checks, hints and roll-back of rules.interval_check.
+  RollBackOptions rollback;
   RuleSwitches rules;
 };
 
@@ -202,6 +288,8 @@ constexpr Rule21Order kRule21Orders[] = {Rule21Order::Walkthrough, Rule21Order::
 std::string_view to_string(Rule21Order order);  // "walkthrough", "new_group_first"
 constexpr ChainOrder kChainOrders[] = {ChainOrder::Creation, ChainOrder::Reversed};
 std::string_view to_string(ChainOrder order);  // "creation", "reversed"
+constexpr IntervalMeasure kIntervalMeasures[] = {IntervalMeasure::Shared, IntervalMeasure::Piece};
+std::string_view to_string(IntervalMeasure measure);  // "shared", "piece"
 
 // The scenario keys of MatchBounds (relative_plane.local_match.*, relative_plane.global_match.*).
 // Rule 1 needs the gap test (`local`): without it every RltPlane ever seen is a candidate.
@@ -234,6 +322,8 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
   f.field("traverse_to_link", r.traverse_to_link, "Rule 12: link a new group through a traversal of the group graph");
   f.field("regroup_reacquired", r.regroup_reacquired,
           "Rule 21: a plane re-acquired by global matching joins or starts a group of its own");
+  f.field("regroup_unplaced", r.regroup_unplaced,
+          "Rule 19 extended: a plane no group can place joins another group to find its key point [C]");
   f.field("current_group_chart", r.current_group_chart,
           "Rule 22: the current group is the one holding most planes in view");
   f.field("motion_model", r.motion_model, "Rules 23-27: a motion model carries the pose through one partial plane");
@@ -241,6 +331,10 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
           "Rule 29: leaving a motion model where a group holds every plane in view returns to it");
   f.field("save_snapshot", r.save_snapshot,
           "Rule 35: a group restores its best complete result when a comparison can no longer be made");
+  f.field("save_reserve", r.save_reserve,
+          "Rule 36: each pair keeps its best comparison (largest size, then longest interval) and uses it");
+  f.field("pseudo_merge", r.pseudo_merge,
+          "Rule 37: at a loop closing, planes in view get one-way links (charting only) to their duplicates' groups");
   f.field("reorder_planes", r.reorder_planes,
           "Rule 30: a group's comparison chain re-ordered to the longest intervals with valid key points");
   f.field("first_reading_resize", r.first_reading_resize,
@@ -249,6 +343,8 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
           "Rule 19: key points only in their own interval, else recomputed there (Figs 91/92)");
   f.field("size_correction", r.size_correction,
           "Rule 28: chained planes moved to each edge's size before composing (Fig 87)");
+  f.field("interval_check", r.interval_check,
+          "Rules 31-34: a plane compared over too few iterations gets a hint; roll back and replay [C: off]");
 }
 
 // The scenario keys of MotionModelOptions (relative_plane.motion_model.*).
@@ -271,6 +367,27 @@ void describe(OptionsOf<ReorderOptions> auto& r, auto& f) {
   // 2^n·n² work: 20 planes is already ~4e8 steps.
   f.field("exact_max_planes", r.exact_max_planes, "the best chain is searched exactly up to this many planes",
           at_least(2), at_most(20));
+}
+
+// The scenario keys of RollBackOptions (relative_plane.rollback.*).
+void describe(OptionsOf<RollBackOptions> auto& r, auto& f) {
+  f.field("min_interval", r.min_interval,
+          "Rules 31/32: a membership is confirmed once its comparison covers this many iterations", at_least(1));
+  f.choice("measure", r.measure,
+           "... counted as shared (the two planes seen together, Rule 31) or piece (the growth phase compared)",
+           kIntervalMeasures);
+  f.field("confirm_after", r.confirm_after, "... and judged this many iterations after the plane joined",
+          at_least(1));
+  f.field("checkpoint_period", r.checkpoint_period, "Rule 33: a copy of the state every this many iterations",
+          at_least(1));
+  // A roll-back reaches back max_depth iterations only if a copy that old is kept.
+  f.field("max_depth", r.max_depth, "the oldest iteration a roll-back may reach, iterations back",
+          at_least(r.checkpoint_period, "checkpoint_period"));
+  f.field("max_nesting", r.max_nesting, "roll-backs in one step at most (a safety net)", at_least(1));
+  f.field("force_every", r.force_every, "testing: a roll-back with no hint every this many iterations (0: never)",
+          at_least(0));
+  f.field("force_depth", r.force_depth, "... to this many iterations back", at_least(0),
+          at_most(r.max_depth, "max_depth"));
 }
 
 // The scenario keys of KeyPointTies (relative_plane.key_point_ties.*).
@@ -313,6 +430,8 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.nested("growth_phase", o.growth_phase);
   f.field("trim_piece_ends", o.trim_piece_ends,
           "Rule 18 refined: drop samples at a piece's ends whose key-point offset stands off the rest [C]");
+  f.field("rigid_sigma", o.rigid_sigma,
+          "Rule 13 refined: a comparison whose lowest key-point sigma is above this is invalid, units (0: off) [C]");
   f.choice("interval_mode", o.interval_mode, "iterations a pair is compared over (Figs 74/75): pair or group",
            kIntervalModes);
   f.choice("interval_choice", o.interval_choice,
@@ -323,10 +442,13 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
           "part 2: key points, size correction, partial planes in the pose (Rules 13-19, 28) [C: off]");
   f.field("regroup_memberships", o.regroup_memberships,
           "Rule 21: a re-acquired plane starts a new group only with fewer memberships than this", at_least(1));
+  f.field("unplaced_wait", o.unplaced_wait,
+          "rules.regroup_unplaced: iterations in its groups before a plane counts as unplaced [C]", at_least(0));
   f.choice("rule21_order", o.rule21_order,
            "Rule 21: walkthrough (current, neighbours, new group) or new_group_first", kRule21Orders);
   f.nested("motion_model", o.motion_model);
   f.nested("reorder", o.reorder);
+  f.nested("rollback", o.rollback);
   f.nested("rules", o.rules);
 }
 

@@ -52,6 +52,12 @@ class RltPlane {
   const RltXPointRef* ref(XPointId x) const;
   RltXPointRef* ref(XPointId x);
   RltXPointRef& join(XPointId x, int iteration);
+  // Rule 37's one-way links (spec §5.2 oneway_xpoints, §5.5.5): groups a duplicate of this plane
+  // is in. Only Rule 22's charting reads them; the groups do not list the plane, so their
+  // comparisons never see it.
+  const std::vector<XPointId>& oneway_xpoints() const { return oneway_; }
+  // True when added: not yet linked to `x` either way.
+  bool add_oneway(XPointId x);
 
  private:
   PlaneId id_;
@@ -62,6 +68,7 @@ class RltPlane {
   int size_ = 0;
   RltPlaneInterval intervals_;
   std::vector<RltXPointRef> refs_;
+  std::vector<XPointId> oneway_;
 };
 
 }  // namespace relslam::plane

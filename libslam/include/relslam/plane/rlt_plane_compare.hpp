@@ -36,6 +36,8 @@ struct CompareResult {
   PlanarPose pair_delta[2][2];
   RltInterval interval;  // first and last iteration used
   int samples = 0;       // iterations averaged
+  // Part 2: the chosen key-point pair's σ over the piece (Rule 13; 0 for part 1's midpoints).
+  double sigma = 0;
   double height1 = 0;
   double height2 = 0;
 };

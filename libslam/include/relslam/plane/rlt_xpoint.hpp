@@ -53,8 +53,21 @@ class RltXPoint {
 
   // ReorderPlanes (Rule 30, spec §5.7.3) when it is due at `iteration` (options.reorder): the
   // chain becomes the best path by the planes' pairwise comparison intervals with valid key
-  // points (reorder_planes.hpp). True when the chain changed (the group is then recomputed).
-  bool reorder_if_due(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration);
+  // points (reorder_planes.hpp). True when the chain changed (the group is then recomputed); the
+  // Rule 36 reserves of the edges that changed are then cleared.
+  bool reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration);
+
+  // CheckIntervalSize (Rules 31, 32; spec §5.11.1), after compute(): a plane's membership is
+  // confirmed once the comparison placing it — the chain edge from the plane before it — averaged
+  // options.min_interval iterations; a plane still unconfirmed options.confirm_after iterations
+  // after it joined is appended to `failed` (the caller sends a hint back and rolls back, Rule
+  // 34). The base plane is the group's origin and placed by no comparison.
+  void check_interval_size(std::vector<RltPlane>& planes, const RollBackOptions& options, int iteration,
+                           std::vector<PlaneId>& failed) const;
+
+  // Frees the observations compute() copies out for its comparisons (refilled by every compute):
+  // a checkpoint of the state (Rule 33) need not keep them.
+  void release_scratch();
 
   // Set when one of the planes got an observation or the chain changed: the group is then
   // recomputed; groups that saw nothing new cost nothing (thesis 4.2.2).

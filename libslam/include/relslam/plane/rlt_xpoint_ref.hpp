@@ -6,6 +6,9 @@
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/plane_object.hpp"
 #include "relslam/plane/rlt_interval.hpp"
+#include "relslam/plane/rlt_plane_compare.hpp"
+
+#include <optional>
 
 namespace relslam::plane {
 
@@ -27,6 +30,41 @@ struct RltXPointRef {
   double max_length = 0;
   double height = 0;
   int join_iteration = 0;  // when the plane joined the group [R: roll-back, Rule 33]
+  // Written by a motion model (Rule 23): its key point is the end that never moved over the whole
+  // track, not one that is in view at each of its iterations, so the pose (Rule 16) does not
+  // grow an observation from it [C].
+  bool tracked = false;
+  // Rule 36 (spec §5.12): the best comparison so far of this plane (second side) with its chain
+  // parent `reserve_partner` (first side) — the partner's size and key point at that time
+  // included, so Rule 28's size correction stays right when it is used. Cleared when the chain
+  // gives the plane another parent (Rule 30).
+  std::optional<CompareResult> reserve;
+  PlaneId reserve_partner = kNone;
+  // Rules 31/32 (CheckIntervalSize): the comparison placing the plane reached the minimum
+  // interval, so it is not checked again ...
+  bool confirmed = false;
+  // ... or it did not in time and a hint was sent back (Rule 34); still here only when that
+  // roll-back was refused, and then not checked again either.
+  bool hinted = false;
 };
+
+// Spec §5.12, the test Rules 35 and 36 share: a result replaces a saved one when it is larger by
+// more than `same_length` (τ_len), or about as large (within τ_len) and over at least as many
+// iterations. Lengths are one plane's (Rule 36) or a group's total (Rule 35).
+bool replaces_saved(double length, long long samples, double saved_length, long long saved_samples,
+                    double same_length);
+
+// Rule 36, DoBackupCheck (thesis 4.4.3.5; spec §5.12), after each comparison of `ref`'s plane (the
+// second side of `current`) with its chain parent `partner` (the first side): a reserve the
+// current result does not replace — bigger by more than τ_len, or about as big over more
+// iterations — or any reserve when the current result cannot place the plane (no comparison, a
+// Rule 15 tie, an end without a key point), is copied into `current`, the partner's size and key
+// point of that time with it. Otherwise a result that places the plane becomes the reserve. True
+// when the reserve was used.
+bool do_backup_check(RltXPointRef& ref, PlaneId partner, CompareResult& current, double same_length);
+
+// A comparison that places both planes: made, no Rule 15 tie, and each plane has a key point or
+// kept its size (what Rule 30 weighs and Rule 36 keeps).
+bool places_both(const CompareResult& result);
 
 }  // namespace relslam::plane

@@ -5,6 +5,7 @@
 
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"
+#include "relslam/plane/hints.hpp"
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/rlt_map_builder.hpp"
@@ -13,7 +14,10 @@
 #include "relslam/plane/rlt_xpoint.hpp"
 #include "relslam/plane/rlt_xpoint_link.hpp"
 #include "relslam/plane/rlt_xmm_point.hpp"
+#include "relslam/plane/rlt_xpoints_state.hpp"
+#include "relslam/plane/roll_back.hpp"
 
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -27,7 +31,18 @@ struct PlaneStepTimings {
   double compute_ms = 0;  // ComputeXPoints: pairwise comparisons and chaining (Rules 2, 3, 6)
   double build_ms = 0;    // BuildMap (Rules 4, 6, 8)
   double pose_ms = 0;     // GetPoset (Rule 5)
-  double total_ms() const { return add_ms + manage_ms + compute_ms + build_ms + pose_ms; }
+  // RollBack (Rule 33): restoring and replaying, the replayed iterations whole. The parts above
+  // are those of the iteration's first run.
+  double roll_back_ms = 0;
+  double total_ms() const { return add_ms + manage_ms + compute_ms + build_ms + pose_ms + roll_back_ms; }
+};
+
+// Rules 31–34 in one step (replays included).
+struct RollBackCounts {
+  int hints = 0;                // hints sent back (Rule 32)
+  int rollbacks = 0;            // roll-backs restored and replayed (Rule 33)
+  int refused = 0;              // requests refused: too old or nested too deep
+  int replayed_iterations = 0;  // iterations run again
 };
 
 // What one iteration produced. The spans point into the algorithm and stay valid until the
@@ -48,22 +63,42 @@ struct RelativePlaneStep {
   int groups_created = 0;
   int planes_grouped = 0;  // unassigned planes that joined or started a group
   int groups_computed = 0;
+  int oneway_links = 0;  // Rule 37's one-way links added
   // The motion model carrying the pose this iteration (Rules 23–27), or nullptr.
   const RltXMMPoint* motion_model = nullptr;
   PlaneStepTimings timings;
+  // Rules 31–34: what this step's interval checks and roll-backs did; after a roll-back every
+  // field above is the replayed iteration's (its first run is gone).
+  RollBackCounts roll_back;
+  std::span<const RollBackEvent> roll_backs;
 };
 
 // Invariant: planes() and xpoints() are indexed by their ids; each RltPlane is in the
 // unassigned list or in at least one group, or was dropped from the list (then never mapped).
-class RltXPointsS {
+// With Rules 31–34 (or rollback.force_every) the state after step() is the one a run with every
+// hint now held known from the start would have (thesis 4.3.7.2: roll back, apply, roll forward).
+class RltXPointsS : private RltXPointsState {
  public:
   // world_T_start: the robot pose of the first frame, the map's anchor (Rule 4: "(0,0) or some
   // other inputted coordinate"). logic_error if check(options) finds a problem.
   explicit RltXPointsS(const RelativePlaneOptions& options = {}, const PlanarPose& world_T_start = {});
 
   // One iteration (spec §5.13): StartIteration, AddPlane for each observation, ManageXPoints,
-  // ComputeXPoints, BuildMap, GetPoset. Iterations must increase; planes in the robot frame.
+  // ComputeXPoints (with CheckIntervalSize), BuildMap, GetPoset, then RollBack when a check asked
+  // for one. Iterations must increase; planes in the robot frame.
   RelativePlaneStep step(const PlaneFrame& frame);
+
+  // SetRollBackTo with no hint, served at the end of the next step(): the state at the end of
+  // iteration target − 1 is restored and the stored inputs replayed. A testing hook (spec §8: the
+  // replay must give the run that had no roll-back); refused (and counted) when the target is
+  // older than the oldest state kept or neither rules.interval_check nor rollback.force_every
+  // keeps any.
+  void request_roll_back(int target);
+  // Rule 34's general form: `hint` is added (deleting later ones) and the run rolled back to the
+  // hint's iteration at the end of the next step(), as when CheckIntervalSize sends one.
+  void send_hint(const RltTemporalHint& hint);
+  // The plane a hint names (spec §5.11.2).
+  PlaneIdentity identity(PlaneId plane) const { return {planes_[plane].created_iteration(), plane_inputs_[plane]}; }
 
   const std::vector<RltPlane>& planes() const { return planes_; }
   const std::vector<RltXPoint>& xpoints() const { return xpoints_; }
@@ -78,25 +113,42 @@ class RltXPointsS {
     return motion_model_active_ ? &motion_models_.back() : nullptr;
   }
   const RelativePlaneOptions& options() const { return options_; }
+  // Rules 32/34: the hints held now.
+  const RltTemporalHints& hints() const { return hints_; }
+  // Every roll-back request of the run so far, in order (rollbacks.csv).
+  const std::vector<RollBackEvent>& roll_back_log() const { return roll_back_log_; }
+  // The stored inputs and checkpoints (empty unless roll-backs are on).
+  const RltPlaneStorage& storage() const { return storage_; }
 
  private:
+  bool keeps_history() const { return options_.rules.interval_check || options_.rollback.force_every > 0; }
+  RelativePlaneStep iterate(const PlaneFrame& frame);
+  bool may_join(PlaneId plane, XPointId x) const { return hints_.may_join(identity(plane), iteration_, x); }
+  void check_interval_sizes(const RltXPoint& x, RelativePlaneStep& result);
+  void set_roll_back_to(const RollBackEvent& request);
+  void roll_back(RelativePlaneStep& result);
+
   void start_iteration(int iteration);
   void add_planes(const PlaneFrame& frame, RelativePlaneStep& result);
   PlanarPose pose_for_global_matching();
   void register_matches(int& counter, std::vector<PlaneId>* registered = nullptr);
   void add_to_plane(PlaneId plane, const PlaneObject& observation);
-  PlaneId create_plane(const PlaneObject& observation);
+  PlaneId create_plane(const PlaneObject& observation, int input_index);
   void manage_xpoints(RelativePlaneStep& result);
   bool bootstrap(RelativePlaneStep& result);
   bool join_group(PlaneId plane);
   bool make_new_xpoint(PlaneId plane, RelativePlaneStep& result);
   bool link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<PlaneId>& linking);
-  XPointId create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking);
+  XPointId create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking, PlaneId founder);
   void upkeep_unassigned();
   void regroup_reacquired(RelativePlaneStep& result);
+  void regroup_unplaced(RelativePlaneStep& result);
   void chart_current_group();
+  void end_motion_model_on_the_map();
+  void fill_chart(bool oneway_links);
   void set_current(XPointId x);
   bool switch_to_group_holding_all();
+  int mend_merge_after_loop_closing(const PlanarPose& world_T_robot);
   void check_for_motion_model();
   void create_motion_model(PlaneId plane);
   void compute_xpoints(RelativePlaneStep& result);
@@ -104,25 +156,13 @@ class RltXPointsS {
 
   RelativePlaneOptions options_;
   PlanarPose world_T_start_;
-  std::vector<RltPlane> planes_;
-  std::vector<RltXPoint> xpoints_;
-  std::vector<RltXPointLink> links_;
-  std::vector<PlaneId> unassigned_;  // RltPlaneList, creation order
-  // Rule 21: planes global matching re-acquired, with the iteration, until they are grouped.
-  std::vector<std::pair<PlaneId, int>> reacquired_;
-  std::vector<PlaneId> recent_;      // RltPlanes seen within local_match.max_iteration_gap
-  std::vector<char> in_recent_;      // per RltPlane: in recent_
-  RltMapBuilder builder_;
-  RltPoset pose_;
-  RltPoset last_valid_pose_;  // Rule 11 places observations with it [R, spec §5.9]
-  int last_valid_iteration_ = 0;
-  std::vector<RltXMMPoint> motion_models_;
-  bool motion_model_active_ = false;  // the last of motion_models_ carries the pose
-  int no_pose_count_ = 0;             // Rule 26: iterations without a pose ...
-  int no_pose_start_ = 0;             // ... since this one
-  XPointId current_ = kNone;  // the current group; the working group while managing
-  int iteration_ = 0;
-  bool started_ = false;
+  // Not part of the restored state (RltXPointsState): the hints are what a roll-back sends back
+  // in time, the storage is where it goes back to, the log is what happened.
+  RltTemporalHints hints_;
+  RltPlaneStorage storage_;
+  std::optional<RollBackEvent> roll_back_request_;  // the earliest target asked for this iteration
+  std::vector<RollBackEvent> roll_back_log_;
+  std::size_t step_log_begin_ = 0;  // this step's part of roll_back_log_
 
   // Per-iteration scratch, kept to avoid allocations.
   std::vector<PlaneObject> stamped_;  // the frame's planes with their iteration set
@@ -136,6 +176,7 @@ class RltXPointsS {
   std::vector<XPointId> stack_;
   std::vector<PlaneId> candidates_;
   RltPlaneInterval scratch_interval_;
+  std::vector<PlaneId> failed_;  // CheckIntervalSize's planes
 };
 
 }  // namespace relslam::plane

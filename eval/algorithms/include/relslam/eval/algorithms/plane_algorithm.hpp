@@ -74,6 +74,9 @@ class PlaneAlgorithm {
   virtual std::vector<KeyPointClaim> key_point_claims() const { return {}; }
   // At the end of the run: any tables of its own structure (groups.csv, links.csv) into dir.
   virtual void write_tables(const std::filesystem::path&) const {}
+  // At the end of the run: its own summary.csv columns (after the scored ones) and their fields.
+  virtual std::vector<std::string> summary_columns() const { return {}; }
+  virtual void summary_fields(std::vector<CsvField>&) const {}
 };
 
 }  // namespace relslam::eval

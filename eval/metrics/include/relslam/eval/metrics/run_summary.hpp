@@ -1,6 +1,7 @@
 #pragma once
 // summary.csv: one row per algorithm of a run (issue #3 harness).
 
+#include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/metrics/trajectory_error.hpp"
 
 #include <filesystem>
@@ -73,10 +74,15 @@ struct SummaryRow {
   // key-point error e_ends, planes on the map, planes sharing the same face of a wall), and
   // these are set.
   std::optional<PlanarScores> planar;
+  // The algorithm's own columns (e.g. Relative Plane's roll-back counts), after all the others;
+  // a row without one of another row's columns leaves it empty.
+  std::vector<std::string> own_columns;
+  std::vector<CsvField> own_fields;
 };
 
 // One row per algorithm; planar rows (SummaryRow::planar) name their columns for planes
-// (final_map_error, planes_on_map, ...) and add the PlanarScores columns. Then, when both relative_point and ekf6d ran, a row
+// (final_map_error, planes_on_map, ...) and add the PlanarScores columns, then every row's own
+// columns. Then, when both relative_point and ekf6d ran, a row
 // "relative_point/ekf6d" (status "ratio") holding their ratios, compared over the iterations
 // both processed (the EKF may have stopped early): `ratio` is that row, computed by the caller.
 void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
