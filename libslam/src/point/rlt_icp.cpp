@@ -64,4 +64,11 @@ std::optional<Rigid3> register_two_points(const Eigen::Vector3d& a0, const Eigen
   return b_T_a;
 }
 
+Eigen::Matrix3d mean_rotation(const Eigen::Matrix3d& sum) {
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(sum, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  d(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1.0 : 1.0;
+  return svd.matrixU() * d * svd.matrixV().transpose();
+}
+
 }  // namespace relslam::point

@@ -40,7 +40,7 @@ void RltMap::anchor(RltGroup& group) {
   }
 }
 
-std::optional<Rigid3> RltMap::register_on_two_anchors(const RltGroup& group) const {
+std::optional<Rigid3> RltMap::register_on_two_anchors(const RltGroup& group) {
   if (group.registration() != Registration::Anchors || group.iterations_used() == 0) return std::nullopt;
   std::array<int, 2> pair{};
   int anchors = 0;
@@ -49,10 +49,12 @@ std::optional<Rigid3> RltMap::register_on_two_anchors(const RltGroup& group) con
     if (anchors == 2) return std::nullopt;  // three or more: registration() failed for another reason
     pair[anchors++] = static_cast<int>(i);
   }
-  if (anchors != 2) return std::nullopt;
+  if (anchors != 2 || map_poses_.empty()) return std::nullopt;
   const auto& basis = group.basis();
-  for (auto pose = map_poses_.rbegin(); pose != map_poses_.rend(); ++pose) {
-    const int t = pose->first;
+  TwoAnchorPrior& prior = two_anchor_priors_[group.id()];
+  for (const auto& [t, world_T_robot] : map_poses_) {  // oldest first: each pose is added once
+    if (t <= prior.last) continue;
+    prior.last = t;
     if (!group.computed_on().contains(t)) continue;
     const Point* b0 = points[group.members()[basis[0]]].observations.at(t);
     const Point* b1 = points[group.members()[basis[1]]].observations.at(t);
@@ -61,12 +63,13 @@ std::optional<Rigid3> RltMap::register_on_two_anchors(const RltGroup& group) con
     const auto frame = basis_frame(b0->p, b1->p, b2->p, kBasisEpsilon);
     if (!frame) continue;
     // world_R_group = world_R_robot(t) * robot_R_basis(t); the basis frame maps robot to basis.
-    const Eigen::Matrix3d prior = pose->second.rotation * frame->rotation.transpose();
-    return register_two_points(group.relative(pair[0]), group.relative(pair[1]), points[group.members()[pair[0]]].global,
-                               points[group.members()[pair[1]]].global, prior, up_in_world(pose->second),
-                               max_line_sine_);
+    prior.sum += world_T_robot.rotation * frame->rotation.transpose();
+    ++prior.count;
   }
-  return std::nullopt;
+  if (prior.count == 0) return std::nullopt;
+  return register_two_points(group.relative(pair[0]), group.relative(pair[1]), points[group.members()[pair[0]]].global,
+                             points[group.members()[pair[1]]].global, mean_rotation(prior.sum),
+                             up_in_world(map_poses_.back().second), max_line_sine_);
 }
 
 void RltMap::record_map_pose(int k, const Rigid3& world_T_robot) {

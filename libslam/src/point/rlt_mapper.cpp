@@ -291,9 +291,18 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   } else if (options_.pose_from_unmapped && (pose = register_to(true))) {
     pose_ = *pose;
     result.pose_source = PoseSource::UnmappedPoints;
+  } else if (average_provisional_on(options_) && robot_scratch_.size() == 2 &&
+             (pose = register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1],
+                                         pose_.rotation, pose_.rotation.col(1), map_.max_line_sine()))) {
+    // register_to(true) left its two pairs (mapped or provisional) in the scratch buffers.
+    pose_ = *pose;
+    result.pose_source = PoseSource::TwoUnmappedPoints;
   } else if (mapped_pairs >= 1 && (pose = map_.pose_from_one_point(mapped_robot[0], mapped_world[0]))) {
     pose_ = *pose;
     result.pose_source = PoseSource::OnePoint;
+  } else if (average_provisional_on(options_) && robot_scratch_.size() == 1) {
+    pose_.translation = world_scratch_[0] - pose_.rotation * robot_scratch_[0];
+    result.pose_source = PoseSource::OneUnmappedPoint;
   } else if (options_.use_odometry && frame.odometry) {
     pose_ = pose_ * *frame.odometry;
     result.pose_source = PoseSource::Odometry;
@@ -310,7 +319,13 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     for (PointId id : seen) {
       RltPoint& p = map_.points[id];
       if (p.has_global || p.dynamic || p.merged) continue;
-      p.provisional = pose_ * p.observations.latest().p;
+      const Eigen::Vector3d placed = pose_ * p.observations.latest().p;
+      if (average_provisional_on(options_) && p.has_provisional) {
+        p.provisional += (placed - p.provisional) / ++p.provisional_placements;  // the running mean
+      } else {
+        p.provisional = placed;
+        p.provisional_placements = 1;
+      }
       p.has_provisional = true;
       if (options_.match_unmapped) map_.global_index->place(id, p.provisional);
     }

@@ -31,4 +31,8 @@ std::optional<Rigid3> register_two_points(const Eigen::Vector3d& a0, const Eigen
                                           const Eigen::Matrix3d& prior_b_R_a, const Eigen::Vector3d& b_up,
                                           double max_line_sine);
 
+// Deviation (adaptive preset, issue 16): the rotation closest (Frobenius) to `sum`, a sum of
+// rotations: their chordal mean. Many noisy estimates of one rotation average to it.
+Eigen::Matrix3d mean_rotation(const Eigen::Matrix3d& sum);
+
 }  // namespace relslam::point

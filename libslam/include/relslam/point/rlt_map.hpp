@@ -12,6 +12,7 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -75,8 +76,13 @@ struct RltMap {
   // translation putting the observation on the map position. Nothing when two-point
   // registration is off or before the first recorded pose.
   std::optional<Rigid3> pose_from_one_point(const Eigen::Vector3d& robot, const Eigen::Vector3d& world) const;
+  // Sine of two_point_max_elevation_deg: the steepest line two-point registration accepts.
+  double max_line_sine() const { return max_line_sine_; }
   // Forgets the recorded poses (the map frame moved).
-  void forget_map_poses() { map_poses_.clear(); }
+  void forget_map_poses() {
+    map_poses_.clear();
+    two_anchor_priors_.clear();
+  }
   // Gives a point its map position (and its place in the global index).
   void set_global(PointId id, const Eigen::Vector3d& g);
   // Retires a group (thesis 6.3.3: a group never changes; it is replaced): off its members'
@@ -89,9 +95,19 @@ struct RltMap {
 
  private:
   // A group with exactly two anchors on the map: registered by them, the rotation about their
-  // line from the latest recorded pose at an iteration the group used (that pose composed with
-  // the group's basis frame there). Nothing without such a pose.
-  std::optional<Rigid3> register_on_two_anchors(const RltGroup& group) const;
+  // line from the recorded poses at iterations the group used (each pose composed with the
+  // group's basis frame there), averaged over all of them since the group began (one
+  // iteration's pose and basis frame carry a whole observation's noise, and the group's members
+  // followed it from iteration to iteration). Nothing without such a pose.
+  std::optional<Rigid3> register_on_two_anchors(const RltGroup& group);
+  // Per two-anchor group: the sum of its prior rotations (world_R_group) and the latest map
+  // pose's iteration already considered.
+  struct TwoAnchorPrior {
+    Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+    int count = 0;
+    int last = -1;
+  };
+  std::unordered_map<GroupId, TwoAnchorPrior> two_anchor_priors_;
 
   bool two_point_ = false;     // two_point_registration_on(options)
   double max_line_sine_ = 0;   // sine of two_point_max_elevation_deg
