@@ -300,7 +300,8 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   } else if (mapped_pairs >= 1 && (pose = map_.pose_from_one_point(mapped_robot[0], mapped_world[0]))) {
     pose_ = *pose;
     result.pose_source = PoseSource::OnePoint;
-  } else if (average_provisional_on(options_) && robot_scratch_.size() == 1) {
+  } else if (average_provisional_on(options_) && !robot_scratch_.empty()) {
+    // One pair, or two on a line too steep for two-point registration: the first one.
     pose_.translation = world_scratch_[0] - pose_.rotation * robot_scratch_[0];
     result.pose_source = PoseSource::OneUnmappedPoint;
   } else if (options_.use_odometry && frame.odometry) {

@@ -30,7 +30,7 @@ enum class PoseSource : unsigned char {
                    // the latest map-registered pose, the translation from that point (adaptive)
   TwoUnmappedPoints,  // two points with a map or provisional position visible, not both mapped: as TwoPoints,
                       // the rotation about their line from the latest pose (adaptive average_provisional)
-  OneUnmappedPoint,   // one provisional point visible and no mapped one: as OnePoint, the rotation of the
+  OneUnmappedPoint,   // one provisional point visible (or two on a steep line), no mapped one: as OnePoint, the rotation of the
                       // latest pose (adaptive average_provisional)
   Held,            // no registration possible: the previous pose is kept
   Odometry,        // no registration possible: the previous pose moved by the frame's odometry
