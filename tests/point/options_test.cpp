@@ -40,9 +40,13 @@ TEST(PointSlamOptions, TwoPointRegistrationLowersTheAdaptiveFloorToTwo) {
   EXPECT_EQ(prev_group_min(final_level, Preset::Adaptive, 26.0, 2), 5);
   EXPECT_EQ(prev_group_min(final_level, Preset::Thesis, 4.0, 2), 20);
   PointSlamOptions adaptive = preset_options(Preset::Adaptive);
+  EXPECT_EQ(fewest_anchors(adaptive), 3) << "off by default";
+  adaptive.two_point_registration = true;
   EXPECT_EQ(fewest_anchors(adaptive), 2);
-  adaptive.two_point_registration = false;
-  EXPECT_EQ(fewest_anchors(adaptive), 3);
+  EXPECT_TRUE(average_provisional_on(preset_options(Preset::Adaptive)));
+  EXPECT_FALSE(average_provisional_on(preset_options(Preset::Thesis)));
+  adaptive.pose_from_unmapped = false;
+  EXPECT_FALSE(average_provisional_on(adaptive)) << "it averages the positions pose_from_unmapped registers to";
   EXPECT_EQ(fewest_anchors(preset_options(Preset::Thesis)), 3);
 }
 

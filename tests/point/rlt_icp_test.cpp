@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
 
+#include <algorithm>
+
 namespace relslam::point {
 namespace {
 
@@ -119,6 +121,30 @@ TEST(RegisterTwoPoints, RejectsASteepLineAndCoincidentPoints) {
   EXPECT_TRUE(register_two_points(origin, level, origin, level, identity, up, sine_45)) << "11 degrees steep";
   EXPECT_FALSE(register_two_points(origin, origin, origin, level, identity, up, sine_45)) << "a's pair coincides";
   EXPECT_FALSE(register_two_points(origin, level, level, level, identity, up, sine_45)) << "b's pair coincides";
+}
+
+// Two-anchor groups average their rotation prior over their iterations (issue 16): the chordal
+// mean of noisy copies of one rotation comes back to it, far closer than a single copy.
+TEST(MeanRotation, AveragesNoisyCopiesOfOneRotation) {
+  test::SeededRandom rng(16);
+  const Eigen::Matrix3d truth = random_motion(rng).rotation;
+  EXPECT_LT((mean_rotation(truth) - truth).norm(), 1e-12) << "one rotation is its own mean";
+  EXPECT_LT((mean_rotation(3.0 * truth) - truth).norm(), 1e-12) << "the scale of the sum does not matter";
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  double worst_single = 0;
+  const int n = 200;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d axis(rng.gaussian(), rng.gaussian(), rng.gaussian());
+    const Eigen::Matrix3d noisy = truth * Eigen::AngleAxisd(0.1, axis.normalized()).toRotationMatrix();
+    worst_single = std::max(worst_single, Eigen::AngleAxisd(truth.transpose() * noisy).angle());
+    sum += noisy;
+  }
+  const Eigen::Matrix3d mean = mean_rotation(sum);
+  EXPECT_NEAR(mean.determinant(), 1.0, 1e-12);
+  EXPECT_LT((mean.transpose() * mean - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+  // Each copy is 0.1 rad off in a random direction; 200 of them average to ~0.1 / sqrt(200).
+  EXPECT_NEAR(worst_single, 0.1, 1e-9);
+  EXPECT_LT(Eigen::AngleAxisd(truth.transpose() * mean).angle(), 0.02);
 }
 
 }  // namespace
