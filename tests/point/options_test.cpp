@@ -32,6 +32,24 @@ TEST(PointSlamOptions, AdaptivePrevGroupMinFollowsThePointsInView) {
   EXPECT_EQ(prev_group_min(temporary_level_defaults(), Preset::Adaptive, 100.0), 6);
 }
 
+// Two-point registration (issue 16) places a group on two anchors: PrevGroupMin's floor is then
+// 2, reached only where the points in view are few; the thesis preset never has it.
+TEST(PointSlamOptions, TwoPointRegistrationLowersTheAdaptiveFloorToTwo) {
+  const GroupLevelOptions final_level = final_level_defaults();
+  EXPECT_EQ(prev_group_min(final_level, Preset::Adaptive, 4.0, 2), 2);
+  EXPECT_EQ(prev_group_min(final_level, Preset::Adaptive, 26.0, 2), 5);
+  EXPECT_EQ(prev_group_min(final_level, Preset::Thesis, 4.0, 2), 20);
+  PointSlamOptions adaptive = preset_options(Preset::Adaptive);
+  EXPECT_EQ(fewest_anchors(adaptive), 3) << "off by default";
+  adaptive.two_point_registration = true;
+  EXPECT_EQ(fewest_anchors(adaptive), 2);
+  EXPECT_TRUE(average_provisional_on(preset_options(Preset::Adaptive)));
+  EXPECT_FALSE(average_provisional_on(preset_options(Preset::Thesis)));
+  adaptive.pose_from_unmapped = false;
+  EXPECT_FALSE(average_provisional_on(adaptive)) << "it averages the positions pose_from_unmapped registers to";
+  EXPECT_EQ(fewest_anchors(preset_options(Preset::Thesis)), 3);
+}
+
 TEST(NoiseBounds, ThesisBoundsUpToSigmaTenthThenInProportion) {
   const PointSlamOptions thesis;
   for (double sigma : {0.0, 0.05, 0.1}) {

@@ -30,6 +30,10 @@ const char* pose_source(point::PoseSource s) {
     case point::PoseSource::Start: return "start";
     case point::PoseSource::MappedPoints: return "mapped";
     case point::PoseSource::UnmappedPoints: return "unmapped";
+    case point::PoseSource::TwoPoints: return "two_points";
+    case point::PoseSource::OnePoint: return "one_point";
+    case point::PoseSource::TwoUnmappedPoints: return "two_unmapped";
+    case point::PoseSource::OneUnmappedPoint: return "one_unmapped";
     case point::PoseSource::Held: return "held";
     case point::PoseSource::Odometry: return "odometry";
   }

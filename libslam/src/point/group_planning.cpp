@@ -80,8 +80,8 @@ std::vector<Eigen::Vector3d> GroupPlanner::basis_positions(const std::vector<Poi
 }
 
 bool GroupPlanner::keep_static(GroupPlan& plan, PointId c, int c0, int k, const GroupLevelOptions& level,
-                               const std::vector<RltPoint>& points, const BinningOptions& binning,
-                               PlanOutcome& outcome) const {
+                               int fewest_anchors, const std::vector<RltPoint>& points,
+                               const BinningOptions& binning, PlanOutcome& outcome) const {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<PointId>& m = plan.members;
   const BinningResult bins = rlt_binning(
@@ -107,8 +107,9 @@ bool GroupPlanner::keep_static(GroupPlan& plan, PointId c, int c0, int k, const 
   }
   outcome.binning_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   plan = std::move(kept);
-  // Enough static points left (spec A21): c itself, three anchors to register, NextGroupMin new.
-  return c_static && (plan.root() || anchors >= 3) && fresh >= level.next_min;
+  // Enough static points left (spec A21): c itself, three anchors to register (two with two-point
+  // registration), NextGroupMin new.
+  return c_static && (plan.root() || anchors >= fewest_anchors) && fresh >= level.next_min;
 }
 
 PlanOutcome GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& level, const std::vector<RltPoint>& points,
@@ -134,8 +135,9 @@ PlanOutcome GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& lev
   }
   rank(plan.members, static_cast<std::size_t>(o.prev_max));
   const std::size_t anchors = plan.members.size();
-  const int prev_min =
-      options.preset == Preset::Thesis ? o.prev_min : prev_group_min(o, options.preset, in_view(charting, c0, ahead));
+  const int prev_min = options.preset == Preset::Thesis
+                           ? o.prev_min
+                           : prev_group_min(o, options.preset, in_view(charting, c0, ahead), fewest_anchors(options));
   if (!plan.root() && static_cast<int>(anchors) < prev_min) {
     // Too few mapped points in view: the thesis's algorithm cannot place a group here. A
     // provisional root places it on its members' provisional positions instead.
@@ -161,7 +163,8 @@ PlanOutcome GroupPlanner::plan(PointId c, int c0, int k, const LevelContext& lev
   rank(plan.members);
   plan.anchor.assign(plan.members.size(), false);
   std::fill(plan.anchor.begin(), plan.anchor.begin() + static_cast<std::ptrdiff_t>(anchors), true);
-  if (o.binning && !keep_static(plan, c, c0, k, o, points, options.binning, outcome)) return no_group();
+  if (o.binning && !keep_static(plan, c, c0, k, o, fewest_anchors(options), points, options.binning, outcome))
+    return no_group();
 
   if (plan.root()) {  // three members with a place in the world frame fix the group's
     auto placed = [&](Registration r) {
@@ -256,7 +259,7 @@ PlanOutcome GroupPlanner::plan_level3(PointId c, int k, const std::vector<RltPoi
   GroupLevelOptions level;  // what keep_static needs of a level
   level.next_min = 1;
   level.binning = o.binning;
-  if (o.binning && !keep_static(plan, c, s, k, level, points, options.binning, outcome)) return outcome;
+  if (o.binning && !keep_static(plan, c, s, k, level, 3, points, options.binning, outcome)) return outcome;
   const auto basis = select_basis(basis_positions(plan.members, points, s, e), options.basis, options.min_basis_ratio);
   if (!basis) return outcome;
   plan.basis = *basis;

@@ -22,12 +22,12 @@ std::string_view to_string(Preset preset) {
   return "?";
 }
 
-int prev_group_min(const GroupLevelOptions& level, Preset preset, double in_view) {
+int prev_group_min(const GroupLevelOptions& level, Preset preset, double in_view, int fewest_anchors) {
   if (preset == Preset::Thesis) return level.prev_min;
-  // Three previously mapped points register a group (a rigid motion); fewer in view and no group
-  // can be placed at all.
+  // Three previously mapped points register a group (a rigid motion), two with two-point
+  // registration; fewer in view and no group can be placed at all.
   const int derived = static_cast<int>(std::lround(level.prev_share * in_view));
-  return std::clamp(derived, std::min(3, level.prev_min), level.prev_min);
+  return std::clamp(derived, std::min(fewest_anchors, level.prev_min), level.prev_min);
 }
 
 std::vector<OptionIssue> check(const PointSlamOptions& o) {

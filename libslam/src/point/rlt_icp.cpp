@@ -1,5 +1,6 @@
 #include "relslam/point/rlt_icp.hpp"
 
+#include <Eigen/Geometry>
 #include <Eigen/SVD>
 
 namespace relslam::point {
@@ -7,6 +8,8 @@ namespace {
 
 // Second singular value below this share of the first: the points lie on a line [C].
 constexpr double kCollinear = 1e-9;
+// Two points closer than this (units) give no line [C]: far below any sensor noise.
+constexpr double kCoincident = 1e-9;
 
 }  // namespace
 
@@ -44,6 +47,28 @@ std::optional<Rigid3> rlt_icp(std::span<const Eigen::Vector3d> a, std::span<cons
   b_T_a.rotation = v * d * u.transpose();
   b_T_a.translation = mean_b - b_T_a.rotation * mean_a;
   return b_T_a;
+}
+
+std::optional<Rigid3> register_two_points(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
+                                          const Eigen::Vector3d& b0, const Eigen::Vector3d& b1,
+                                          const Eigen::Matrix3d& prior_b_R_a, const Eigen::Vector3d& b_up,
+                                          double max_line_sine) {
+  const Eigen::Vector3d line_a = a1 - a0, line_b = b1 - b0;
+  if (!(line_a.norm() > kCoincident) || !(line_b.norm() > kCoincident)) return std::nullopt;
+  const Eigen::Vector3d u_b = line_b.normalized();
+  if (std::abs(u_b.dot(b_up)) > max_line_sine) return std::nullopt;
+  const Eigen::Vector3d u_prior = prior_b_R_a * line_a.normalized();
+  Rigid3 b_T_a;
+  b_T_a.rotation = Eigen::Quaterniond::FromTwoVectors(u_prior, u_b).toRotationMatrix() * prior_b_R_a;
+  b_T_a.translation = 0.5 * (b0 + b1) - b_T_a.rotation * (0.5 * (a0 + a1));
+  return b_T_a;
+}
+
+Eigen::Matrix3d mean_rotation(const Eigen::Matrix3d& sum) {
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(sum, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  d(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1.0 : 1.0;
+  return svd.matrixU() * d * svd.matrixV().transpose();
 }
 
 }  // namespace relslam::point

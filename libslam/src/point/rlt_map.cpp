@@ -1,25 +1,36 @@
 #include "relslam/point/rlt_map.hpp"
 
+#include "relslam/point/rlt_icp.hpp"
+
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace relslam::point {
 namespace {
 
 constexpr double kBasisEpsilon = 1e-6;  // relative degeneracy tolerance of one iteration's basis [C]
 
+// The robot's up axis (+y of the robot frame, observation.hpp) in the map frame at a pose.
+Eigen::Vector3d up_in_world(const Rigid3& world_T_robot) { return world_T_robot.rotation.col(1); }
+
 }  // namespace
 
 RltMap::RltMap(const PointSlamOptions& options)
     : charting(options.charting_capacity),
       global_index(spatial::make_global_index(options.global_index, options.global_cell_size,
-                                              std::max(options.global_bound, options.merge_bound))) {}
+                                              std::max(options.global_bound, options.merge_bound))),
+      two_point_(two_point_registration_on(options)),
+      max_line_sine_(std::sin(options.two_point_max_elevation_deg * std::numbers::pi / 180.0)),
+      pose_window_(history_window(options)) {}
 
 void RltMap::compute(RltGroup& group, int from, int k) {
   if (group.accumulate(points, from, k, kBasisEpsilon)) anchor(group);
 }
 
 void RltMap::anchor(RltGroup& group) {
-  const auto world_T_group = group.registration(points, first_iteration);
+  auto world_T_group = group.registration(points, first_iteration);
+  if (!world_T_group && two_point_) world_T_group = register_on_two_anchors(group);
   if (!world_T_group) return;
   for (std::size_t i = 0; i < group.members().size(); ++i) {
     const PointId id = group.members()[i];
@@ -27,6 +38,60 @@ void RltMap::anchor(RltGroup& group) {
     if (group.anchor(static_cast<int>(i)) || p.owner != group.id() || p.dynamic || p.merged) continue;
     set_global(id, *world_T_group * group.relative(static_cast<int>(i)));
   }
+}
+
+std::optional<Rigid3> RltMap::register_on_two_anchors(const RltGroup& group) {
+  if (group.registration() != Registration::Anchors || group.iterations_used() == 0) return std::nullopt;
+  std::array<int, 2> pair{};
+  int anchors = 0;
+  for (std::size_t i = 0; i < group.members().size(); ++i) {
+    if (!group.anchor(static_cast<int>(i)) || !points[group.members()[i]].on_map()) continue;
+    if (anchors == 2) return std::nullopt;  // three or more: registration() failed for another reason
+    pair[anchors++] = static_cast<int>(i);
+  }
+  if (anchors != 2 || map_poses_.empty()) return std::nullopt;
+  const auto& basis = group.basis();
+  TwoAnchorPrior& prior = two_anchor_priors_[group.id()];
+  for (const auto& [t, world_T_robot] : map_poses_) {  // oldest first: each pose is added once
+    if (t <= prior.last) continue;
+    prior.last = t;
+    if (!group.computed_on().contains(t)) continue;
+    const Point* b0 = points[group.members()[basis[0]]].observations.at(t);
+    const Point* b1 = points[group.members()[basis[1]]].observations.at(t);
+    const Point* b2 = points[group.members()[basis[2]]].observations.at(t);
+    if (!b0 || !b1 || !b2) continue;
+    const auto frame = basis_frame(b0->p, b1->p, b2->p, kBasisEpsilon);
+    if (!frame) continue;
+    // world_R_group = world_R_robot(t) * robot_R_basis(t); the basis frame maps robot to basis.
+    prior.sum += world_T_robot.rotation * frame->rotation.transpose();
+    ++prior.count;
+  }
+  if (prior.count == 0) return std::nullopt;
+  return register_two_points(group.relative(pair[0]), group.relative(pair[1]), points[group.members()[pair[0]]].global,
+                             points[group.members()[pair[1]]].global, mean_rotation(prior.sum),
+                             up_in_world(map_poses_.back().second), max_line_sine_);
+}
+
+void RltMap::record_map_pose(int k, const Rigid3& world_T_robot) {
+  if (!two_point_) return;
+  map_poses_.emplace_back(k, world_T_robot);
+  while (map_poses_.front().first < k - pose_window_) map_poses_.pop_front();
+}
+
+std::optional<Rigid3> RltMap::pose_from_two_points(const Eigen::Vector3d& robot0, const Eigen::Vector3d& robot1,
+                                                   const Eigen::Vector3d& world0,
+                                                   const Eigen::Vector3d& world1) const {
+  if (!two_point_ || map_poses_.empty()) return std::nullopt;
+  const Rigid3& prior = map_poses_.back().second;
+  return register_two_points(robot0, robot1, world0, world1, prior.rotation, up_in_world(prior), max_line_sine_);
+}
+
+std::optional<Rigid3> RltMap::pose_from_one_point(const Eigen::Vector3d& robot, const Eigen::Vector3d& world) const {
+  if (!two_point_ || map_poses_.empty()) return std::nullopt;
+  Rigid3 world_T_robot;
+  world_T_robot.rotation = map_poses_.back().second.rotation;
+  world_T_robot.translation = world - world_T_robot.rotation * robot;
+  return world_T_robot;
 }
 
 void RltMap::set_global(PointId id, const Eigen::Vector3d& g) {

@@ -231,6 +231,7 @@ void RltMapper::check_map_frame(int k) {
 
 void RltMapper::move_map_frame(int k) {
   map_.first_iteration = k;
+  map_.forget_map_poses();
   // Provisional positions were in the old frame: placed again from this iteration's pose on.
   for (RltPoint& p : map_.points) {
     if (!p.has_provisional) continue;
@@ -267,16 +268,42 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     }
     return rlt_icp(robot, world);
   };
+  auto mapped_pose = register_to(false);
+  // Fewer than three mapped pairs (adaptive preset): the one or two register_to(false) found.
+  const std::size_t mapped_pairs = robot_scratch_.size();
+  std::array<Eigen::Vector3d, 2> mapped_robot, mapped_world;
+  for (std::size_t i = 0; i < std::min<std::size_t>(mapped_pairs, 2); ++i) {
+    mapped_robot[i] = robot_scratch_[i];
+    mapped_world[i] = world_scratch_[i];
+  }
+  std::optional<Rigid3> pose;
 
   if (k == map_.first_iteration) {
     pose_ = Rigid3::identity();
     result.pose_source = PoseSource::Start;
-  } else if (auto pose = register_to(false)) {
-    pose_ = *pose;
+  } else if (mapped_pose) {
+    pose_ = *mapped_pose;
     result.pose_source = PoseSource::MappedPoints;
+  } else if (mapped_pairs == 2 &&
+             (pose = map_.pose_from_two_points(mapped_robot[0], mapped_robot[1], mapped_world[0], mapped_world[1]))) {
+    pose_ = *pose;
+    result.pose_source = PoseSource::TwoPoints;
   } else if (options_.pose_from_unmapped && (pose = register_to(true))) {
     pose_ = *pose;
     result.pose_source = PoseSource::UnmappedPoints;
+  } else if (average_provisional_on(options_) && robot_scratch_.size() == 2 &&
+             (pose = register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1],
+                                         pose_.rotation, pose_.rotation.col(1), map_.max_line_sine()))) {
+    // register_to(true) left its two pairs (mapped or provisional) in the scratch buffers.
+    pose_ = *pose;
+    result.pose_source = PoseSource::TwoUnmappedPoints;
+  } else if (mapped_pairs >= 1 && (pose = map_.pose_from_one_point(mapped_robot[0], mapped_world[0]))) {
+    pose_ = *pose;
+    result.pose_source = PoseSource::OnePoint;
+  } else if (average_provisional_on(options_) && !robot_scratch_.empty()) {
+    // One pair, or two on a line too steep for two-point registration: the first one.
+    pose_.translation = world_scratch_[0] - pose_.rotation * robot_scratch_[0];
+    result.pose_source = PoseSource::OneUnmappedPoint;
   } else if (options_.use_odometry && frame.odometry) {
     pose_ = pose_ * *frame.odometry;
     result.pose_source = PoseSource::Odometry;
@@ -284,14 +311,22 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     result.pose_source = PoseSource::Held;
   }
   result.world_T_robot = pose_;
-  pose_from_map_ = result.pose_source == PoseSource::Start || result.pose_source == PoseSource::MappedPoints;
+  pose_from_map_ = result.pose_source == PoseSource::Start || result.pose_source == PoseSource::MappedPoints ||
+                   result.pose_source == PoseSource::TwoPoints;
+  if (pose_from_map_) map_.record_map_pose(k, pose_);
 
   // Provisional positions of the unmapped points seen now (Deviation, see options).
   if (options_.match_unmapped || options_.pose_from_unmapped)
     for (PointId id : seen) {
       RltPoint& p = map_.points[id];
       if (p.has_global || p.dynamic || p.merged) continue;
-      p.provisional = pose_ * p.observations.latest().p;
+      const Eigen::Vector3d placed = pose_ * p.observations.latest().p;
+      if (average_provisional_on(options_) && p.has_provisional) {
+        p.provisional += (placed - p.provisional) / ++p.provisional_placements;  // the running mean
+      } else {
+        p.provisional = placed;
+        p.provisional_placements = 1;
+      }
       p.has_provisional = true;
       if (options_.match_unmapped) map_.global_index->place(id, p.provisional);
     }

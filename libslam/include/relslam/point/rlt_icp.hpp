@@ -17,4 +17,22 @@ namespace relslam::point {
 // Spans, so callers can pass scratch buffers they keep between iterations.
 std::optional<Rigid3> rlt_icp(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b);
 
+// Deviation (adaptive preset, issue 16): two matched pairs fix b_T_a up to a rotation about
+// their line. That one freedom comes from `prior_b_R_a`: the result's rotation is the one
+// closest to the prior (smallest angle between them) that maps a's line onto b's, i.e. the
+// prior followed by the shortest rotation turning the prior's image of a's line onto b's line;
+// the translation maps the pairs' midpoints onto each other. A robot on a floor turns about its
+// up axis (`b_up`, a unit vector in b's frame), so a prior from an earlier pose is wrong mostly
+// in yaw, and a yaw error reaches the result only by the sine of b's line's elevation above the
+// floor (exactly none for a level line): nothing when that sine exceeds `max_line_sine` (a steep
+// line), or when either pair is (nearly) coincident.
+std::optional<Rigid3> register_two_points(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
+                                          const Eigen::Vector3d& b0, const Eigen::Vector3d& b1,
+                                          const Eigen::Matrix3d& prior_b_R_a, const Eigen::Vector3d& b_up,
+                                          double max_line_sine);
+
+// Deviation (adaptive preset, issue 16): the rotation closest (Frobenius) to `sum`, a sum of
+// rotations: their chordal mean. Many noisy estimates of one rotation average to it.
+Eigen::Matrix3d mean_rotation(const Eigen::Matrix3d& sum);
+
 }  // namespace relslam::point

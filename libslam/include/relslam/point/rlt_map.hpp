@@ -9,7 +9,11 @@
 #include "relslam/point/rlt_ungrouped_list.hpp"
 #include "relslam/spatial/global_index.hpp"
 
+#include <deque>
 #include <memory>
+#include <optional>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace relslam::point {
@@ -58,6 +62,27 @@ struct RltMap {
   // position of every member it owns; anchors are registration sources and never rewritten by
   // this group (spec 5.5).
   void anchor(RltGroup& group);
+  // Deviation (adaptive preset, issue 16, PointSlamOptions::two_point_registration): the robot
+  // poses registered to the map (the map frame's, to three or more mapped points, or to two),
+  // kept for history_window iterations as the priors of two-point registration. A no-op when it
+  // is off.
+  void record_map_pose(int k, const Rigid3& world_T_robot);
+  // world_T_robot from two mapped points in view (their robot-frame observations and map
+  // positions), the rotation about their line from the latest recorded pose. Nothing when
+  // two-point registration is off, before the first recorded pose, or for a steep line.
+  std::optional<Rigid3> pose_from_two_points(const Eigen::Vector3d& robot0, const Eigen::Vector3d& robot1,
+                                             const Eigen::Vector3d& world0, const Eigen::Vector3d& world1) const;
+  // world_T_robot from one mapped point in view: the latest recorded pose's rotation, the
+  // translation putting the observation on the map position. Nothing when two-point
+  // registration is off or before the first recorded pose.
+  std::optional<Rigid3> pose_from_one_point(const Eigen::Vector3d& robot, const Eigen::Vector3d& world) const;
+  // Sine of two_point_max_elevation_deg: the steepest line two-point registration accepts.
+  double max_line_sine() const { return max_line_sine_; }
+  // Forgets the recorded poses (the map frame moved).
+  void forget_map_poses() {
+    map_poses_.clear();
+    two_anchor_priors_.clear();
+  }
   // Gives a point its map position (and its place in the global index).
   void set_global(PointId id, const Eigen::Vector3d& g);
   // Retires a group (thesis 6.3.3: a group never changes; it is replaced): off its members'
@@ -69,6 +94,25 @@ struct RltMap {
   std::vector<PointId> take_changed();
 
  private:
+  // A group with exactly two anchors on the map: registered by them, the rotation about their
+  // line from the recorded poses at iterations the group used (each pose composed with the
+  // group's basis frame there), averaged over all of them since the group began (one
+  // iteration's pose and basis frame carry a whole observation's noise, and the group's members
+  // followed it from iteration to iteration). Nothing without such a pose.
+  std::optional<Rigid3> register_on_two_anchors(const RltGroup& group);
+  // Per two-anchor group: the sum of its prior rotations (world_R_group) and the latest map
+  // pose's iteration already considered.
+  struct TwoAnchorPrior {
+    Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+    int count = 0;
+    int last = -1;
+  };
+  std::unordered_map<GroupId, TwoAnchorPrior> two_anchor_priors_;
+
+  bool two_point_ = false;     // two_point_registration_on(options)
+  double max_line_sine_ = 0;   // sine of two_point_max_elevation_deg
+  int pose_window_ = 0;        // history_window(options)
+  std::deque<std::pair<int, Rigid3>> map_poses_;  // (iteration, world_T_robot), oldest first
   std::vector<PointId> changed_;
   std::vector<int> changed_at_;  // per point: the iteration it was last marked
 };

@@ -81,6 +81,7 @@ struct RltPoint {
   // when it is seen again (Deviation: beyond the thesis, see PointSlamOptions).
   Eigen::Vector3d provisional = Eigen::Vector3d::Zero();
   bool has_provisional = false;
+  int provisional_placements = 0;  // poses averaged into provisional (average_provisional)
 
   bool dynamic = false;  // flagged by RltBinning (thesis 6.5.3)
   bool merged = false;   // merged into merged_into (thesis 6.5.2)
