@@ -187,7 +187,8 @@ RltPoset RltMapBuilder::get_poset(std::span<const RegisteredObservation> observa
       bad.push_back(&o);
       continue;
     }
-    if (entry.holds_end(kp, planes[o.plane].longest_seen(), options.same_length)) add(o, adjust_size(*o.observation, entry.length, kp));
+    if (entry.holds_end(kp, planes[o.plane].longest_seen(), options.same_length))
+      add(o, adjust_size(*o.observation, entry.length, kp));
   }
   // Rule 19 for the rest: key points from comparisons with the good planes of this iteration,
   // then with the other bad ones (spec §5.9).
