@@ -64,6 +64,13 @@ std::optional<Rigid3> register_two_points(const Eigen::Vector3d& a0, const Eigen
   return b_T_a;
 }
 
+Rigid3 register_one_point(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0, const Eigen::Matrix3d& b_R_a) {
+  Rigid3 b_T_a;
+  b_T_a.rotation = b_R_a;
+  b_T_a.translation = b0 - b_R_a * a0;
+  return b_T_a;
+}
+
 Eigen::Matrix3d mean_rotation(const Eigen::Matrix3d& sum) {
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(sum, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3d d = Eigen::Matrix3d::Identity();

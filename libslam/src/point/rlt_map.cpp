@@ -88,10 +88,7 @@ std::optional<Rigid3> RltMap::pose_from_two_points(const Eigen::Vector3d& robot0
 
 std::optional<Rigid3> RltMap::pose_from_one_point(const Eigen::Vector3d& robot, const Eigen::Vector3d& world) const {
   if (!two_point_ || map_poses_.empty()) return std::nullopt;
-  Rigid3 world_T_robot;
-  world_T_robot.rotation = map_poses_.back().second.rotation;
-  world_T_robot.translation = world - world_T_robot.rotation * robot;
-  return world_T_robot;
+  return register_one_point(robot, world, map_poses_.back().second.rotation);
 }
 
 void RltMap::set_global(PointId id, const Eigen::Vector3d& g) {

@@ -302,7 +302,7 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     result.pose_source = PoseSource::OnePoint;
   } else if (average_provisional_on(options_) && !robot_scratch_.empty()) {
     // One pair, or two on a line too steep for two-point registration: the first one.
-    pose_.translation = world_scratch_[0] - pose_.rotation * robot_scratch_[0];
+    pose_ = register_one_point(robot_scratch_[0], world_scratch_[0], pose_.rotation);
     result.pose_source = PoseSource::OneUnmappedPoint;
   } else if (options_.use_odometry && frame.odometry) {
     pose_ = pose_ * *frame.odometry;

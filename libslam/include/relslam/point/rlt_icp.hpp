@@ -31,6 +31,10 @@ std::optional<Rigid3> register_two_points(const Eigen::Vector3d& a0, const Eigen
                                           const Eigen::Matrix3d& prior_b_R_a, const Eigen::Vector3d& b_up,
                                           double max_line_sine);
 
+// Deviation (adaptive preset, issue 16): b_T_a from one pair, a0 ↦ b0, with the rotation given
+// (one point fixes only the translation).
+Rigid3 register_one_point(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0, const Eigen::Matrix3d& b_R_a);
+
 // Deviation (adaptive preset, issue 16): the rotation closest (Frobenius) to `sum`, a sum of
 // rotations: their chordal mean. Many noisy estimates of one rotation average to it.
 Eigen::Matrix3d mean_rotation(const Eigen::Matrix3d& sum);
