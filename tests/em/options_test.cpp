@@ -19,10 +19,11 @@ TEST(EmOptions, DefaultsAreValidAndFollowSpecSection46ButForTheDeviations) {
   EXPECT_EQ(o.em1.seeds_per_iteration, 4);
   EXPECT_EQ(o.em2.grid_cell, 3.0);
   EXPECT_EQ(o.em2.grid_overlap, 1.5);
-  // The spec's 6; 20 rounds, e_exp each, cross a seed's grid query, C + 2·O (the opt-in that
-  // finds every piece, EmExtraction.Em2GrowsAShortWallOverItsWholeHeight).
-  EXPECT_EQ(o.em2.grow_rounds, 6);
-  EXPECT_GE(20 * o.bound_expansion, o.em2.grid_cell + 2 * o.em2.grid_overlap - 1e-9);
+  // Not the spec's 6: enough rounds, e_exp each, to cross a seed's grid query, C + 2·O; the
+  // leftovers then join their plane (EmExtraction.Em2LeftoversJoinTheirPlane).
+  EXPECT_EQ(o.em2.grow_rounds, 20);
+  EXPECT_GE(o.em2.grow_rounds * o.bound_expansion, o.em2.grid_cell + 2 * o.em2.grid_overlap - 1e-9);
+  EXPECT_GT(o.em2.absorb_passes, 0);
   EXPECT_EQ(o.assign_mode, AssignMode::All);
   EXPECT_EQ(o.rectangle, RectangleFit::TangentProjection);
 }

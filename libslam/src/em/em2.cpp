@@ -81,6 +81,7 @@ EmResult run_em2(std::span<const Eigen::Vector3d> points, const EmOptions& o, st
     usage = usage_counts(planes, points.size());
   }
 
+  absorb_unassigned(planes, points, finite, o, o.em2.absorb_passes);
   cull_exclusivity(planes, points.size(), o, 0);
   set_rectangles(planes, points, o);
   return result;

@@ -1,6 +1,9 @@
 #include "relslam/em/em_plane.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <limits>
 
 namespace relslam::em {
 
@@ -38,6 +41,42 @@ double exclusive_fraction(const EmPlane& plane, const std::vector<int>& usage) {
   int own = 0;
   for (int i : plane.points) own += usage[static_cast<std::size_t>(i)] == 1;
   return static_cast<double>(own) / static_cast<double>(plane.points.size());
+}
+
+int absorb_unassigned(std::vector<EmPlane>& planes, std::span<const Eigen::Vector3d> points,
+                      std::span<const int> candidates, const EmOptions& o, int passes) {
+  int added = 0;
+  std::vector<std::vector<int>> joining(planes.size());
+  for (int pass = 0; pass < passes; ++pass) {
+    const std::vector<int> usage = usage_counts(planes, points.size());
+    for (std::vector<int>& j : joining) j.clear();
+    for (int i : candidates) {
+      if (usage[static_cast<std::size_t>(i)] != 0) continue;
+      const Eigen::Vector3d& p = points[static_cast<std::size_t>(i)];
+      std::size_t best = planes.size();
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < planes.size(); ++k) {
+        if (!planes[k].accepts(p, o.inlier_distance, o.bound_expansion)) continue;
+        const double d = std::abs(planes[k].distance(p));
+        if (d < nearest) nearest = d, best = k;
+      }
+      if (best < planes.size()) joining[best].push_back(i);  // candidates ascend: so does each list
+    }
+    int joined = 0;
+    for (std::size_t k = 0; k < planes.size(); ++k) {
+      if (joining[k].empty()) continue;
+      EmPlane next = planes[k];
+      next.points.clear();
+      std::set_union(planes[k].points.begin(), planes[k].points.end(), joining[k].begin(), joining[k].end(),
+                     std::back_inserter(next.points));
+      if (!refit(next, points)) continue;
+      planes[k] = std::move(next);
+      joined += static_cast<int>(joining[k].size());
+    }
+    if (joined == 0) break;
+    added += joined;
+  }
+  return added;
 }
 
 void set_rectangles(std::vector<EmPlane>& planes, std::span<const Eigen::Vector3d> points, const EmOptions& o) {

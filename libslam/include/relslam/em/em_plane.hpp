@@ -54,6 +54,13 @@ struct EmResult {
   int ignored_points = 0;  // non-finite input points, never assigned
 };
 
+// Hands each candidate point that no plane owns to the plane that accepts it (options' d_in and
+// e_exp) and lies nearest, then refits the planes that took points; repeated while any point
+// joins, at most `passes` times (each pass reaches e_exp further). Returns the points added.
+// EM2's leftovers (em2.absorb_passes) [C].
+int absorb_unassigned(std::vector<EmPlane>& planes, std::span<const Eigen::Vector3d> points,
+                      std::span<const int> candidates, const EmOptions& options, int passes);
+
 // Sets each plane's rectangle by options.rectangle (the extraction's last step).
 void set_rectangles(std::vector<EmPlane>& planes, std::span<const Eigen::Vector3d> points, const EmOptions& options);
 

@@ -84,17 +84,24 @@ struct Em2Options {
   double left_fraction = 0.02;
   // Growth rounds per plane at most: expand, gather, refit, density check; growth ends earlier
   // once a round leaves the plane's points unchanged [T "end the iterative process after a few
-  // iterations", 3.5.3 step 5; spec §4.6: 6].
-  // A round widens the plane's box by at most e_exp, and a plane grows over its seed's grid
-  // query, up to C + 2·O = 6 across, so it may need (C + 2·O) / e_exp = 20 rounds to take in all
-  // of its wall there. At 6 most planes stop mid-growth (2 of 3 on Map D, 19 of 20 on Map E at
-  // σ_pt 0.05) and on a few frames the rest of a short wall is left unassigned (Map D iteration
-  // 2225: 31 of 40 points, under SegComp's 0.8) or seeds a noise plane: 20 finds every piece
-  // (recall and precision at or above the Open3D baseline's, README "Plane extraction"). It
-  // stays 6 by default because the settled planes also take in the neighbouring wall's points
-  // within d_in at a corner, which moves their ends out (noise-free Map E: mean end error
-  // 0.0067 → 0.0118) and makes every EM map worse (E23 final mean e_ends 0.12 → 0.42) [T].
-  int grow_rounds = 6;
+  // iterations", 3.5.3 step 5]. Deviation (spec §4.6: 6) [C]: a round widens the plane's box by
+  // at most e_exp, and a plane grows over its seed's grid query, up to C + 2·O = 6 across, so it
+  // may need (C + 2·O) / e_exp = 20 rounds to settle. At 6 most planes stop mid-growth (2 of 3
+  // on Map D, 19 of 20 on Map E at σ_pt 0.05); the rest of their wall is left to other seeds,
+  // some of which fit a thin plane 8–12° off the wall that the merge keeps apart (noise planes:
+  // precision on p-em-room-noise, seeds 1–5, 0.9991–0.9997 at 6 against 0.9996–1 at 20, both
+  // with absorb_passes).
+  int grow_rounds = 20;
+  // Leftovers: once the loop ends, unassigned points that a plane accepts join the nearest such
+  // plane, pass after pass while any join, at most this many passes (0: off) [C]. A plane grows
+  // only within its seed's grid query, and the loop stops with up to left_fraction of the
+  // points unassigned, so the rest of a wall piece can be left out of every plane: the far end
+  // of a piece longer than the query (Map E iteration 510 at 20 growth rounds: 28 points, the
+  // last 0.52 of wall 3's 3.8 in view) or the end of a short wall that the growth rounds did not
+  // reach (Map D iteration 2225 at 6 rounds: the bottom 0.55 of a 0.7-long wall). Each pass reaches
+  // e_exp further; the points are the loop's leftovers only, so a plane never takes a point
+  // from another.
+  int absorb_passes = 10;
   // The overlapping grid ("overlapping quadtree", thesis 3.2.2, 6.2.4) over (x, z): cell size C
   // and overlap O. A plane grows only within its seed point's cell, so it reaches at most
   // C + 2·O across; larger walls are grown in pieces and joined by the merge [R].
@@ -115,6 +122,8 @@ void describe(OptionsOf<Em2Options> auto& o, auto& f) {
           at_most(1.0));
   f.field("grow_rounds", o.grow_rounds, "growth rounds per plane at most (it ends once a round changes nothing)",
           at_least(1));
+  f.field("absorb_passes", o.absorb_passes, "passes in which unassigned points join the nearest accepting plane (0: off)",
+          at_least(0));
   f.field("grid_cell", o.grid_cell, "overlapping grid cell size, units", above(0.0));
   f.field("grid_overlap", o.grid_overlap, "overlapping grid overlap, units (at most the cell size)", at_least(0.0),
           at_most(o.grid_cell, "grid_cell"));
