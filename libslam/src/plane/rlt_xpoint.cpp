@@ -109,9 +109,14 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlan
                                int iteration) {
   const int n = static_cast<int>(chain_.size());
   if (n < 3 || motion_model()) return false;  // two planes have one edge either way
-  const bool due = last_reorder_ < 0 ? iteration - created_iteration_ >= options.reorder.first_age
-                                     : iteration - last_reorder_ >= options.reorder.period;
-  if (!due) return false;
+  const bool periodic = options.rules.reorder_planes &&
+                        (last_reorder_ < 0 ? iteration - created_iteration_ >= options.reorder.first_age
+                                           : iteration - last_reorder_ >= options.reorder.period);
+  const bool broken = options.rules.reorder_broken_chains && !placed() &&
+                      (last_reorder_ < 0 || iteration - last_reorder_ >= options.reorder.broken_gap) &&
+                      edges_.size() + 1 == chain_.size() &&
+                      !std::ranges::all_of(edges_, [](const CompareResult& e) { return places_both(e); });
+  if (!periodic && !broken) return false;
   last_reorder_ = iteration;
   const RltPlaneInterval* within = comparison_window(planes, options);
   scratch_observations_.resize(n);
@@ -137,7 +142,7 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlan
   for (int k = 0; k < n; ++k) current[k] = k;
   bool current_usable = true;
   for (int k = 1; k < n; ++k) current_usable = current_usable && weight[k - 1][k] >= 0;
-  if (current_usable && total(*path) <= total(current)) return false;
+  if (current_usable && (!periodic || total(*path) <= total(current))) return false;
   std::vector<PlaneId> order(n);
   for (int k = 0; k < n; ++k) order[k] = chain_[(*path)[k]];
   // Spec §5.7.3: the reserves (Rule 36) of the edges that changed are cleared; a plane keeping

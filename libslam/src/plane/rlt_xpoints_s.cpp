@@ -623,7 +623,7 @@ int RltXPointsS::mend_merge_after_loop_closing(const PlanarPose& world_T_robot) 
 }
 
 void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
-  const bool reorder = options_.key_points && options_.rules.reorder_planes;
+  const bool reorder = options_.key_points && (options_.rules.reorder_planes || options_.rules.reorder_broken_chains);
   for (RltXPoint& x : xpoints_)
     if (x.needs_compute() && !x.motion_model()) {
       if (reorder) x.reorder_if_due(planes_, options_, iteration_);  // Rule 30 (spec §5.7.1)

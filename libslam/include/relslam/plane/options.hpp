@@ -94,6 +94,18 @@ struct RuleSwitches {
   // key points (final mean map error 0.24 → 1.96). Off until part 3's interval checks (Rules
   // 31–34) guard the edges it chooses.
   bool reorder_planes = false;
+  // Rule 30's search also runs, whatever reorder_planes says, for a group the map has not placed
+  // while an edge of its chain cannot place both its planes (invalid, ambiguous or without a key
+  // point), at most every reorder.broken_gap iterations; the broken chain is replaced by any
+  // chain whose edges all can [C]. A chain is built in the order the planes joined, so a group
+  // made as a plane leaves the view can have that plane as its base and its one edge ambiguous
+  // (Rule 15: both planes cut by the frustum): then no linking plane places the group (E24,
+  // p-em-office-noise, seeds 1–3 lost at iteration 172). Unlike the periodic search it leaves
+  // placed groups and usable chains alone (for placed groups too it mapped p-office's noisy
+  // small frustum with 2–3 duplicates instead of 1). Off by default, on in E23/E24's
+  // scenarios: E24 maps in 3 of seeds 1–5 with it (1 without), but p-office's noisy small
+  // frustum, seed 4, gets 10 duplicates (1 without; seeds 1–3 and 5 unchanged) [C].
+  bool reorder_broken_chains = false;
   // Rule 4's first-reading resize (thesis 4.3.6, Fig 90; spec §5.8 step 1): X0 is anchored on
   // its planes' first observations, grown first to the plane's size in X0 from its key point
   // when the first reading was smaller. Off: the first reading is used as seen (the wrong
@@ -164,6 +176,9 @@ struct ReorderOptions {
   int first_age = 40;
   // ... then again every this many iterations while the group is updated [R, T_reorder_period].
   int period = 200;
+  // A chain with an edge that cannot place both planes is searched again at most every this
+  // many iterations (rules.reorder_broken_chains) [C].
+  int broken_gap = 20;
   // The best path is searched exactly up to this many planes, greedily beyond [R].
   int exact_max_planes = 12;
 };
@@ -339,6 +354,8 @@ void describe(OptionsOf<RuleSwitches> auto& r, auto& f) {
           "Rule 37: at a loop closing, planes in view get one-way links (charting only) to their duplicates' groups");
   f.field("reorder_planes", r.reorder_planes,
           "Rule 30: a group's comparison chain re-ordered to the longest intervals with valid key points");
+  f.field("reorder_broken_chains", r.reorder_broken_chains,
+          "Rule 30's search also for an unplaced group whose chain has an edge that cannot place both planes");
   f.field("first_reading_resize", r.first_reading_resize,
           "Rule 4: a smaller first reading is grown to the plane's size before anchoring the map (Fig 90)");
   f.field("missing_key_points", r.missing_key_points,
@@ -366,6 +383,8 @@ void describe(OptionsOf<ReorderOptions> auto& r, auto& f) {
   f.field("first_age", r.first_age, "Rule 30: a group's chain is first re-ordered at this age, iterations",
           at_least(1));
   f.field("period", r.period, "... then every this many iterations while the group is updated", at_least(1));
+  f.field("broken_gap", r.broken_gap, "a chain with an edge that cannot place both planes is searched again after this",
+          at_least(1));
   // 2^n·n² work: 20 planes is already ~4e8 steps.
   f.field("exact_max_planes", r.exact_max_planes, "the best chain is searched exactly up to this many planes",
           at_least(2), at_most(20));

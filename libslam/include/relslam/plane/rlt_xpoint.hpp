@@ -51,10 +51,12 @@ class RltXPoint {
   // chain is composed with size correction (Rule 28, spec §5.7.2).
   void compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
 
-  // ReorderPlanes (Rule 30, spec §5.7.3) when it is due at `iteration` (options.reorder): the
-  // chain becomes the best path by the planes' pairwise comparison intervals with valid key
-  // points (reorder_planes.hpp). True when the chain changed (the group is then recomputed); the
-  // Rule 36 reserves of the edges that changed are then cleared.
+  // ReorderPlanes (Rule 30, spec §5.7.3) when it is due at `iteration`: periodically with
+  // options.rules.reorder_planes (options.reorder), and with rules.reorder_broken_chains while
+  // the group is not placed and an edge of its chain could not place both its planes (then only
+  // a chain whose edges all can replaces it). The chain becomes the best path by the planes' pairwise comparison intervals
+  // with valid key points (reorder_planes.hpp). True when the chain changed (the group is then
+  // recomputed); the Rule 36 reserves of the edges that changed are then cleared.
   bool reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration);
 
   // CheckIntervalSize (Rules 31, 32; spec §5.11.1), after compute(): a plane's membership is
