@@ -300,14 +300,18 @@ INSTANTIATE_TEST_SUITE_P(IssueSixteen, SparsePointChain, ::testing::Values(3, 4,
                          [](const auto& info) { return "Density5Seed" + std::to_string(info.param); });
 
 // Density 5, where the robot turns on the figure eight's arc with one point in view
-// (pose_source one_unmapped) or where a swap in matching turned a registration by about 170
-// degrees (every other iteration for 500 iterations): seed 2 at sigma 0.1 kept the latest
-// rotation through ~100 one-point iterations and lost 23 degrees of heading (ATE 23.6, EKF 13.0);
-// seed 1 at sigma 0.2 flipped (ATE 15.2, EKF 5.01). With the turn rate measured over the last
-// registered rotations (turn_rate_window) and registrations turning more than max_turn_deg from
-// the prediction rejected: 8.29 and 8.13. The bound is the issue's goal (1.5 times the EKF's ATE,
-// the same observations) for seed 2 and twice the EKF's for seed 1 (measured 1.62 times: its map
-// is bent before the flips began).
+// (pose_source one_unmapped), where a swap in matching turned a registration by about 170
+// degrees (every other iteration for 500 iterations), or where the chain through provisional
+// positions (pose_source unmapped) random-walked in pitch: seed 2 at sigma 0.1 kept the latest
+// rotation through ~100 one-point iterations and lost 23 degrees of heading (ATE 23.6, EKF
+// 13.0); seed 1 at sigma 0.2 flipped (ATE 15.2, EKF 5.01); seed 5 at sigma 0.2 drifted 6 units
+// in height with 3 landmarks on the map (ATE 3.02, EKF 1.00). With the turn rate measured over
+// the last registered rotations (turn_rate_window), registrations turning more than
+// max_turn_deg from the prediction rejected and the provisional chain's rotations weighed with
+// the prediction (provisional_rotation_weight): 4.02, 7.81 and 1.64. The bound is the issue's
+// goal (1.5 times the EKF's ATE on the same observations) for seed 2 and twice the EKF's for
+// seeds 1 and 5 (measured 1.56 and 1.63 times: seed 1's map is bent before the flips began,
+// seed 5's stalls at 3 landmarks).
 struct TurningCase {
   int seed;
   double sigma;
@@ -318,7 +322,7 @@ void PrintTo(const TurningCase& c, std::ostream* os) { *os << "seed " << c.seed 
 
 class SparsePointTurns : public ::testing::TestWithParam<TurningCase> {};
 
-TEST_P(SparsePointTurns, TheHeadingFollowsTheRobotThroughOnePointTurnsAndMismatches) {
+TEST_P(SparsePointTurns, ThePoseFollowsTheRobotThroughOnePointTurnsMismatchesAndTheProvisionalChain) {
   const TurningCase& c = GetParam();
   test::ScratchDir dir;
   const test::CliResult r = test::run_relslam(
@@ -336,7 +340,7 @@ TEST_P(SparsePointTurns, TheHeadingFollowsTheRobotThroughOnePointTurnsAndMismatc
 }
 
 INSTANTIATE_TEST_SUITE_P(IssueSixteen, SparsePointTurns,
-                         ::testing::Values(TurningCase{2, 0.1, 1.5}, TurningCase{1, 0.2, 2.0}),
+                         ::testing::Values(TurningCase{2, 0.1, 1.5}, TurningCase{1, 0.2, 2.0}, TurningCase{5, 0.2, 2.0}),
                          [](const auto& info) {
                            return "Density5Seed" + std::to_string(info.param.seed) + "Sigma0" +
                                   std::to_string(static_cast<int>(std::lround(info.param.sigma * 10)));

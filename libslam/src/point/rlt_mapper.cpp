@@ -323,6 +323,11 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     result.pose_source = PoseSource::TwoPoints;
   } else if (options_.pose_from_unmapped && (pose = register_to(true))) {
     pose_ = *pose;
+    // Deviation (adaptive, provisional_rotation_weight): the chain through provisional positions
+    // takes only part of each registration's rotation, the rest from the turn-rate prediction.
+    if (average_provisional_on(options_))
+      pose_ = register_centroids(robot_scratch_, world_scratch_,
+                                 interpolate_rotation(predicted, pose->rotation, options_.provisional_rotation_weight));
     result.pose_source = PoseSource::UnmappedPoints;
   } else if (average_provisional_on(options_) && robot_scratch_.size() == 2 &&
              (pose = register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1],
@@ -338,13 +343,7 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     // The rotation turns on at the measured rate (turn_rate_window; none: the latest rotation);
     // the position from the pairs' centroid (one pair: that pair; a rejected registration's
     // swapped pair leaves it where it was).
-    Eigen::Vector3d robot_mean = Eigen::Vector3d::Zero(), world_mean = Eigen::Vector3d::Zero();
-    for (std::size_t i = 0; i < robot_scratch_.size(); ++i) {
-      robot_mean += robot_scratch_[i];
-      world_mean += world_scratch_[i];
-    }
-    const double n = static_cast<double>(robot_scratch_.size());
-    pose_ = register_one_point(robot_mean / n, world_mean / n, predicted);
+    pose_ = register_centroids(robot_scratch_, world_scratch_, predicted);
     result.pose_source = PoseSource::OneUnmappedPoint;
   } else if (options_.use_odometry && frame.odometry) {
     pose_ = pose_ * *frame.odometry;
