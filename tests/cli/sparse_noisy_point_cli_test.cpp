@@ -308,10 +308,9 @@ INSTANTIATE_TEST_SUITE_P(IssueSixteen, SparsePointChain, ::testing::Values(3, 4,
 // in height with 3 landmarks on the map (ATE 3.02, EKF 1.00). With the turn rate measured over
 // the last registered rotations (turn_rate_window), registrations turning more than
 // max_turn_deg from the prediction rejected and the provisional chain's rotations weighed with
-// the prediction (provisional_rotation_weight): 4.02, 7.81 and 1.64. The bound is the issue's
-// goal (1.5 times the EKF's ATE on the same observations) for seed 2 and twice the EKF's for
-// seeds 1 and 5 (measured 1.56 and 1.63 times: seed 1's map is bent before the flips began,
-// seed 5's stalls at 3 landmarks).
+// the prediction (provisional_rotation_weight): 7.57, 8.05 and 1.41. The bound is the issue's
+// goal (1.5 times the EKF's ATE on the same observations) for seeds 2 and 5 and twice the EKF's
+// for seed 1 (measured 1.61 times: its map is bent before the flips began).
 struct TurningCase {
   int seed;
   double sigma;
@@ -340,7 +339,7 @@ TEST_P(SparsePointTurns, ThePoseFollowsTheRobotThroughOnePointTurnsMismatchesAnd
 }
 
 INSTANTIATE_TEST_SUITE_P(IssueSixteen, SparsePointTurns,
-                         ::testing::Values(TurningCase{2, 0.1, 1.5}, TurningCase{1, 0.2, 2.0}, TurningCase{5, 0.2, 2.0}),
+                         ::testing::Values(TurningCase{2, 0.1, 1.5}, TurningCase{1, 0.2, 2.0}, TurningCase{5, 0.2, 1.5}),
                          [](const auto& info) {
                            return "Density5Seed" + std::to_string(info.param.seed) + "Sigma0" +
                                   std::to_string(static_cast<int>(std::lround(info.param.sigma * 10)));

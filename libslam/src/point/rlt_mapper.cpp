@@ -301,6 +301,14 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     }
     return registered;
   };
+  // Deviation (adaptive, provisional_rotation_weight): the chain through provisional positions
+  // takes only part of each registration's rotation, the rest from the turn-rate prediction, and
+  // its position from the pairs (left in the scratch buffers by register_to) at their centroid.
+  auto weighed = [&](const Rigid3& registered) {
+    return register_centroids(robot_scratch_, world_scratch_,
+                              interpolate_rotation(predicted, registered.rotation,
+                                                   options_.provisional_rotation_weight));
+  };
   auto mapped_pose = register_to(false);
   // Fewer than three mapped pairs (adaptive preset): the one or two register_to(false) found.
   const std::size_t mapped_pairs = robot_scratch_.size();
@@ -322,18 +330,13 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     pose_ = *pose;
     result.pose_source = PoseSource::TwoPoints;
   } else if (options_.pose_from_unmapped && (pose = register_to(true))) {
-    pose_ = *pose;
-    // Deviation (adaptive, provisional_rotation_weight): the chain through provisional positions
-    // takes only part of each registration's rotation, the rest from the turn-rate prediction.
-    if (average_provisional_on(options_))
-      pose_ = register_centroids(robot_scratch_, world_scratch_,
-                                 interpolate_rotation(predicted, pose->rotation, options_.provisional_rotation_weight));
+    pose_ = average_provisional_on(options_) ? weighed(*pose) : *pose;
     result.pose_source = PoseSource::UnmappedPoints;
   } else if (average_provisional_on(options_) && robot_scratch_.size() == 2 &&
              (pose = register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1],
                                          pose_.rotation, pose_.rotation.col(1), map_.max_line_sine()))) {
     // register_to(true) left its two pairs (mapped or provisional) in the scratch buffers.
-    pose_ = *pose;
+    pose_ = weighed(*pose);
     result.pose_source = PoseSource::TwoUnmappedPoints;
   } else if (mapped_pairs >= 1 && (pose = map_.pose_from_one_point(mapped_robot[0], mapped_world[0], turn_rate_, k))) {
     pose_ = *pose;
