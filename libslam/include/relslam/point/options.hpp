@@ -261,9 +261,9 @@ struct PointSlamOptions {
   // a degree per iteration; at density 5 four points in two tight clusters (two landmarks 1.4
   // apart) after a swap in matching registered the pose turned by about 170 degrees, every
   // other iteration for 500 iterations (seed 1, sigma 0.2 and 0.3: ATE ratio to the EKF 3.03 and
-  // 2.17 -> 1.62 and 1.28). Correct registrations there differ from the prediction by up to
-  // ~25 degrees at sigma 0.3 (a map already bent), and with 15-30 the gate let the reference
-  // creep or rejected them: 60 (45 works too) [C]. 0: off.
+  // 2.17 -> 1.62 and 1.28, before provisional_rotation_weight). Correct registrations there
+  // differ from the prediction by up to ~25 degrees at sigma 0.3 (a map already bent), and with
+  // 15-30 the gate let the reference creep or rejected them: 60 (45 works too) [C]. 0: off.
   double max_turn_deg = 60.0;
   // Deviation (adaptive preset only, issue 16, with average_provisional): a pose registered to
   // provisional positions (pose_source unmapped, two_unmapped) takes this share of the way from
