@@ -263,9 +263,8 @@ INSTANTIATE_TEST_SUITE_P(IssueSixteen, SparsePointStall,
 // with two or one provisional pairs in view registered as two mapped points are instead of held
 // (pose_source two_unmapped, one_unmapped), the chain through provisional positions stays close:
 // ATE before (held 164, 135 and 65 iterations) -> measured, EKF in brackets: seed 3 21.4 -> 1.28
-// (2.89), seed 4 20.7 -> 4.96 (4.21), seed 5 4.63 -> 1.55 (1.39). Seed 2 (42.7 -> 23.6, EKF
-// 13.0) still misses the goal: the robot turns while one point is in view and keeps the heading
-// error (about 25 degrees) for the rest of the run.
+// (2.89), seed 4 20.7 -> 4.96 (4.21), seed 5 4.63 -> 1.55 (1.39); with the turn-rate prediction
+// and the weighed provisional chain (SparsePointTurns below) 1.26, 3.62 and 0.999.
 class SparsePointChain : public ::testing::TestWithParam<int> {};
 
 TEST_P(SparsePointChain, AveragedProvisionalPositionsKeepThePoseClose) {
