@@ -294,7 +294,7 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     }
     auto registered = rlt_icp(robot, world);
     // Deviation (adaptive, issue 16): a registration that turns the robot further from the
-    // predicted rotation than max_turn_deg is a mismatch, not a motion (rejected_turn).
+    // predicted rotation than max_turn_deg is a mismatch, not a motion (implausible_turn).
     if (registered && implausible_turn(registered->rotation, predicted)) {
       registered.reset();
       rejected = true;
