@@ -147,5 +147,33 @@ TEST(MeanRotation, AveragesNoisyCopiesOfOneRotation) {
   EXPECT_LT(Eigen::AngleAxisd(truth.transpose() * mean).angle(), 0.02);
 }
 
+// A registration rejected as a mismatch (a swap of two pairs) leaves the pose to the predicted
+// rotation and the pairs' centroids (issue 16): the swap does not move the centroid.
+TEST(RegisterCentroids, PutsTheCentroidOnItsImageAndIgnoresASwap) {
+  test::SeededRandom rng(17);
+  const Rigid3 truth = random_motion(rng);
+  std::vector<Eigen::Vector3d> a, b;
+  for (int i = 0; i < 4; ++i) {
+    a.emplace_back(rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10));
+    b.push_back(truth * a.back());
+  }
+  expect_same_motion(register_centroids(a, b, truth.rotation), truth, "matched");
+  std::swap(b[0], b[1]);
+  expect_same_motion(register_centroids(a, b, truth.rotation), truth, "two pairs swapped");
+  expect_same_motion(register_centroids(std::span(a).first(1), std::span(b).subspan(2, 1), truth.rotation),
+                     register_one_point(a[0], b[2], truth.rotation), "one pair");
+}
+
+// The provisional chain's rotation is part of the way from the prediction to the registration.
+TEST(InterpolateRotation, GoesTheGivenShareOfTheWay) {
+  const Eigen::Matrix3d from = Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const Eigen::Matrix3d to = Eigen::AngleAxisd(1.2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  EXPECT_LT((interpolate_rotation(from, to, 0.0) - from).norm(), 1e-12);
+  EXPECT_LT((interpolate_rotation(from, to, 1.0) - to).norm(), 1e-12);
+  EXPECT_LT((interpolate_rotation(from, to, 0.3) - Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitY()).toRotationMatrix())
+                .norm(),
+            1e-12);
+}
+
 }  // namespace
 }  // namespace relslam::point

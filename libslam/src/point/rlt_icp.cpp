@@ -71,6 +71,21 @@ Rigid3 register_one_point(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0, 
   return b_T_a;
 }
 
+Rigid3 register_centroids(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
+                          const Eigen::Matrix3d& b_R_a) {
+  Eigen::Vector3d mean_a = Eigen::Vector3d::Zero(), mean_b = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    mean_a += a[i];
+    mean_b += b[i];
+  }
+  const double n = static_cast<double>(a.size());
+  return register_one_point(mean_a / n, mean_b / n, b_R_a);
+}
+
+Eigen::Matrix3d interpolate_rotation(const Eigen::Matrix3d& from, const Eigen::Matrix3d& to, double weight) {
+  return Eigen::Quaterniond(from).slerp(weight, Eigen::Quaterniond(to)).toRotationMatrix();
+}
+
 Eigen::Matrix3d mean_rotation(const Eigen::Matrix3d& sum) {
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(sum, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3d d = Eigen::Matrix3d::Identity();

@@ -86,9 +86,11 @@ std::optional<Rigid3> RltMap::pose_from_two_points(const Eigen::Vector3d& robot0
   return register_two_points(robot0, robot1, world0, world1, prior.rotation, up_in_world(prior), max_line_sine_);
 }
 
-std::optional<Rigid3> RltMap::pose_from_one_point(const Eigen::Vector3d& robot, const Eigen::Vector3d& world) const {
+std::optional<Rigid3> RltMap::pose_from_one_point(const Eigen::Vector3d& robot, const Eigen::Vector3d& world,
+                                                  const TurnRate& turn_rate, int k) const {
   if (!two_point_ || map_poses_.empty()) return std::nullopt;
-  return register_one_point(robot, world, map_poses_.back().second.rotation);
+  const auto& [t, latest] = map_poses_.back();
+  return register_one_point(robot, world, latest.rotation * turn_rate.turn(t, k));
 }
 
 void RltMap::set_global(PointId id, const Eigen::Vector3d& g) {

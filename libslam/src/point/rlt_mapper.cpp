@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace relslam::point {
@@ -17,6 +19,12 @@ double ms_since(Clock::time_point& t) {
   return ms;
 }
 
+// Rejected registrations in a row after which the predicted rotation is taken for stale [C]:
+// a mismatch rejected by max_turn_deg alternated with correct registrations (density 5, seed 1),
+// while a prediction drifted off in a long stretch without registered rotation is rejected in
+// every iteration.
+constexpr int kMaxRejectedTurns = 10;
+
 const PointSlamOptions& checked(const PointSlamOptions& options) {
   const auto issues = check(options);
   if (!issues.empty())
@@ -27,7 +35,11 @@ const PointSlamOptions& checked(const PointSlamOptions& options) {
 }  // namespace
 
 RltMapper::RltMapper(const PointSlamOptions& options, GroupRelaxer relaxer)
-    : options_(checked(options)), map_(options_), matcher_(options_), relaxer_(std::move(relaxer)) {
+    : options_(checked(options)),
+      map_(options_),
+      matcher_(options_),
+      turn_rate_(turn_rate_window_on(options_)),
+      relaxer_(std::move(relaxer)) {
   if (options_.global_relaxation != GlobalRelaxation::Off && !relaxer_)
     throw std::logic_error("RltMapper: global_relaxation " + std::string(to_string(options_.global_relaxation)) +
                            " needs a GroupRelaxer");
@@ -232,6 +244,7 @@ void RltMapper::check_map_frame(int k) {
 void RltMapper::move_map_frame(int k) {
   map_.first_iteration = k;
   map_.forget_map_poses();
+  turn_rate_.clear();
   // Provisional positions were in the old frame: placed again from this iteration's pose on.
   for (RltPoint& p : map_.points) {
     if (!p.has_provisional) continue;
@@ -248,9 +261,22 @@ void RltMapper::move_map_frame(int k) {
   }
 }
 
+bool RltMapper::implausible_turn(const Eigen::Matrix3d& registered, const Eigen::Matrix3d& predicted) const {
+  // After kMaxRejectedTurns rejections in a row the prediction is taken for stale (a long
+  // stretch of predicted rotations drifted past the bound) and the registration stands.
+  if (options_.preset != Preset::Adaptive || !(options_.max_turn_deg > 0) || rejected_turns_ >= kMaxRejectedTurns)
+    return false;
+  const double cos_angle = std::clamp(((predicted.transpose() * registered).trace() - 1.0) / 2.0, -1.0, 1.0);
+  return std::acos(cos_angle) > options_.max_turn_deg * std::numbers::pi / 180.0;
+}
+
 void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   const int k = frame.iteration;
   const std::vector<PointId>& seen = map_.charting.at(k);
+  // The rotation the robot has now if it turned on at the measured rate (adaptive; otherwise
+  // the latest rotation).
+  const Eigen::Matrix3d predicted = pose_.rotation * turn_rate_.turn(pose_iteration_, k);
+  bool rejected = false;
   auto register_to = [&](bool provisional) -> std::optional<Rigid3> {
     std::vector<Eigen::Vector3d>&robot = robot_scratch_, &world = world_scratch_;
     robot.clear();
@@ -266,7 +292,22 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
         world.push_back(p.provisional);
       }
     }
-    return rlt_icp(robot, world);
+    auto registered = rlt_icp(robot, world);
+    // Deviation (adaptive, issue 16): a registration that turns the robot further from the
+    // predicted rotation than max_turn_deg is a mismatch, not a motion (implausible_turn).
+    if (registered && implausible_turn(registered->rotation, predicted)) {
+      registered.reset();
+      rejected = true;
+    }
+    return registered;
+  };
+  // Deviation (adaptive, provisional_rotation_weight): the chain through provisional positions
+  // takes only part of each registration's rotation, the rest from the turn-rate prediction, and
+  // its position from the pairs (left in the scratch buffers by register_to) at their centroid.
+  auto weighed = [&](const Rigid3& registered) {
+    return register_centroids(robot_scratch_, world_scratch_,
+                              interpolate_rotation(predicted, registered.rotation,
+                                                   options_.provisional_rotation_weight));
   };
   auto mapped_pose = register_to(false);
   // Fewer than three mapped pairs (adaptive preset): the one or two register_to(false) found.
@@ -289,20 +330,23 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     pose_ = *pose;
     result.pose_source = PoseSource::TwoPoints;
   } else if (options_.pose_from_unmapped && (pose = register_to(true))) {
-    pose_ = *pose;
+    pose_ = average_provisional_on(options_) ? weighed(*pose) : *pose;
     result.pose_source = PoseSource::UnmappedPoints;
   } else if (average_provisional_on(options_) && robot_scratch_.size() == 2 &&
              (pose = register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1],
                                          pose_.rotation, pose_.rotation.col(1), map_.max_line_sine()))) {
     // register_to(true) left its two pairs (mapped or provisional) in the scratch buffers.
-    pose_ = *pose;
+    pose_ = weighed(*pose);
     result.pose_source = PoseSource::TwoUnmappedPoints;
-  } else if (mapped_pairs >= 1 && (pose = map_.pose_from_one_point(mapped_robot[0], mapped_world[0]))) {
+  } else if (mapped_pairs >= 1 && (pose = map_.pose_from_one_point(mapped_robot[0], mapped_world[0], turn_rate_, k))) {
     pose_ = *pose;
     result.pose_source = PoseSource::OnePoint;
   } else if (average_provisional_on(options_) && !robot_scratch_.empty()) {
-    // One pair, or two on a line too steep for two-point registration: the first one.
-    pose_ = register_one_point(robot_scratch_[0], world_scratch_[0], pose_.rotation);
+    // One pair, two on a line too steep for two-point registration, or a rejected registration.
+    // The rotation turns on at the measured rate (turn_rate_window; none: the latest rotation);
+    // the position from the pairs' centroid (one pair: that pair; a rejected registration's
+    // swapped pair leaves it where it was).
+    pose_ = register_centroids(robot_scratch_, world_scratch_, predicted);
     result.pose_source = PoseSource::OneUnmappedPoint;
   } else if (options_.use_odometry && frame.odometry) {
     pose_ = pose_ * *frame.odometry;
@@ -311,6 +355,18 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     result.pose_source = PoseSource::Held;
   }
   result.world_T_robot = pose_;
+  pose_iteration_ = k;
+  // The poses whose registration fixed the rotation measure the turn rate.
+  switch (result.pose_source) {
+    case PoseSource::Start:
+    case PoseSource::MappedPoints:
+    case PoseSource::TwoPoints:
+    case PoseSource::UnmappedPoints:
+    case PoseSource::TwoUnmappedPoints: rotation_registered_ = true; break;
+    default: rotation_registered_ = false; break;
+  }
+  if (rotation_registered_) turn_rate_.record(k, pose_.rotation);
+  rejected_turns_ = rejected && !rotation_registered_ ? rejected_turns_ + 1 : 0;
   pose_from_map_ = result.pose_source == PoseSource::Start || result.pose_source == PoseSource::MappedPoints ||
                    result.pose_source == PoseSource::TwoPoints;
   if (pose_from_map_) map_.record_map_pose(k, pose_);

@@ -244,6 +244,42 @@ struct PointSlamOptions {
   // about 30 degrees and every later iteration inherited it (seed 2: ATE 60). Ignored by the
   // thesis preset.
   bool average_provisional = true;
+  // Deviation (adaptive preset only, issue 16): with one point in view (pose_source one_point,
+  // one_unmapped) the rotation is not observed; the robot keeps turning at the rate measured
+  // over the last turn_rate_window iterations of poses whose registration fixed the rotation
+  // (turn_rate.hpp) instead of keeping the latest rotation. 0: the latest rotation. The figure
+  // eight's arcs turn about 0.23 degrees per iteration, and at density 5 one point stays alone
+  // in view for up to ~100 iterations: the heading fell behind by the whole turn (seed 2: 23
+  // degrees, then the position error grew with the distance travelled). A registration's
+  // rotation noise (~0.3 degrees per iteration at density 5, sigma 0.2) is divided by the
+  // window in the rate [C].
+  int turn_rate_window = 30;
+  // Deviation (adaptive preset only, issue 16): a registration to three or more points whose
+  // rotation differs from the predicted one (the latest turned on at the measured rate) by more
+  // than this many degrees is taken for a mismatch and the pose is registered as with one point
+  // (the predicted rotation, the position from the pairs' centroid). A robot turns a fraction of
+  // a degree per iteration; at density 5 four points in two tight clusters (two landmarks 1.4
+  // apart) after a swap in matching registered the pose turned by about 170 degrees, every
+  // other iteration for 500 iterations (seed 1, sigma 0.2 and 0.3: ATE ratio to the EKF 3.03 and
+  // 2.17 -> 1.62 and 1.28, before provisional_rotation_weight). Correct registrations there
+  // differ from the prediction by up to ~25 degrees at sigma 0.3 (a map already bent), and with
+  // 15-30 the gate let the reference creep or rejected them: 60 (45 works too) [C]. 0: off.
+  double max_turn_deg = 60.0;
+  // Deviation (adaptive preset only, issue 16, with average_provisional): a pose registered to
+  // provisional positions (pose_source unmapped, two_unmapped) takes this share of the way from
+  // the predicted rotation (the latest turned on at the measured rate) to its registered one,
+  // and its position from the pairs' centroid. Two to four provisional points register the
+  // rotation with a whole observation's noise, each pose places the points new in view, and the
+  // next poses register to those: the noise adds up along the chain, a random walk of pitch
+  // that the robot driving forward turned into height error (density 5, sigma 0.2, seed 5: 6
+  // units of height at iteration 1400, 3 landmarks on the map; ATE 3.02 -> 1.40, EKF 1.00).
+  // Weighing the prediction averages the registrations over the last few iterations (a
+  // complementary filter). Measured on the issue-16 sweep's cells, density 5 at sigma 0.2 / 0.3
+  // and density 10 at sigma 0.2: 0.2 gave 1.52 / 1.78 / 1.51, 0.3 1.40 / 1.67 / 1.49, 0.5 1.34
+  // / 1.65 / 1.49; weighing unmapped poses only (0.3) 1.39 / 1.85 / 1.48 [C]. Poses registered
+  // to the map keep their rotation (weighing them too: density 10, sigma 0.2 1.71). 1: the
+  // registered rotation.
+  double provisional_rotation_weight = 0.5;
 
   // Deviation (beyond the thesis, issue 19): a joint solve of all group-to-world transforms
   // (group_relaxation.hpp). Off: the thesis's algorithm, bit for bit.
@@ -290,6 +326,11 @@ inline bool two_point_registration_on(const PointSlamOptions& o) {
 // preset, PointSlamOptions::average_provisional and pose_from_unmapped.
 inline bool average_provisional_on(const PointSlamOptions& o) {
   return o.preset == Preset::Adaptive && o.average_provisional && o.pose_from_unmapped;
+}
+// Iterations the turn rate of one-point poses is measured over (turn_rate.hpp): the adaptive
+// preset's turn_rate_window, 0 (no rate) under the thesis preset.
+inline int turn_rate_window_on(const PointSlamOptions& o) {
+  return o.preset == Preset::Adaptive ? o.turn_rate_window : 0;
 }
 // The fewest previously mapped points that can register a group.
 inline int fewest_anchors(const PointSlamOptions& o) { return two_point_registration_on(o) ? 2 : 3; }
@@ -348,6 +389,18 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
   f.field("average_provisional", o.average_provisional,
           "adaptive: provisional positions are the mean of their placements, and two or one provisional points in "
           "view register the pose as two-point registration does (beyond the thesis)");
+  f.field("turn_rate_window", o.turn_rate_window,
+          "adaptive: with one point in view the rotation turns on at the rate measured over this many iterations "
+          "(0: the latest rotation; beyond the thesis)",
+          at_least(0));
+  f.field("max_turn_deg", o.max_turn_deg,
+          "adaptive: a registration turning further than this from the predicted rotation is a mismatch, degrees "
+          "(0: off; beyond the thesis)",
+          at_least(0.0), at_most(180.0));
+  f.field("provisional_rotation_weight", o.provisional_rotation_weight,
+          "adaptive: a pose registered to provisional positions takes this share of its registered rotation, the "
+          "rest from the turn-rate prediction (1: the registered rotation; beyond the thesis)",
+          above(0.0), at_most(1.0));
   f.field("use_odometry", o.use_odometry,
           "frames with odometry: predict local matches and bridge unregistrable frames with it (beyond the thesis)");
   f.choice("global_relaxation", o.global_relaxation,

@@ -35,6 +35,16 @@ std::optional<Rigid3> register_two_points(const Eigen::Vector3d& a0, const Eigen
 // (one point fixes only the translation).
 Rigid3 register_one_point(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0, const Eigen::Matrix3d& b_R_a);
 
+// Deviation (adaptive preset, issue 16): b_T_a from matched pairs with the rotation given: the
+// translation maps the pairs' centroid a onto b's (register_one_point of the centroids). A swap
+// of two pairs leaves it where it was.
+Rigid3 register_centroids(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
+                          const Eigen::Matrix3d& b_R_a);
+
+// Deviation (adaptive preset, issue 16): the rotation `weight` of the way from `from` to `to`
+// (spherical interpolation; 0: from, 1: to).
+Eigen::Matrix3d interpolate_rotation(const Eigen::Matrix3d& from, const Eigen::Matrix3d& to, double weight);
+
 // Deviation (adaptive preset, issue 16): the rotation closest (Frobenius) to `sum`, a sum of
 // rotations: their chordal mean. Many noisy estimates of one rotation average to it.
 Eigen::Matrix3d mean_rotation(const Eigen::Matrix3d& sum);

@@ -7,6 +7,7 @@
 #include "relslam/point/rlt_point.hpp"
 #include "relslam/point/rlt_point_charting.hpp"
 #include "relslam/point/rlt_ungrouped_list.hpp"
+#include "relslam/point/turn_rate.hpp"
 #include "relslam/spatial/global_index.hpp"
 
 #include <deque>
@@ -72,10 +73,11 @@ struct RltMap {
   // two-point registration is off, before the first recorded pose, or for a steep line.
   std::optional<Rigid3> pose_from_two_points(const Eigen::Vector3d& robot0, const Eigen::Vector3d& robot1,
                                              const Eigen::Vector3d& world0, const Eigen::Vector3d& world1) const;
-  // world_T_robot from one mapped point in view: the latest recorded pose's rotation, the
-  // translation putting the observation on the map position. Nothing when two-point
-  // registration is off or before the first recorded pose.
-  std::optional<Rigid3> pose_from_one_point(const Eigen::Vector3d& robot, const Eigen::Vector3d& world) const;
+  // world_T_robot at iteration k from one mapped point in view: the latest recorded pose's
+  // rotation, turned on to k at `turn_rate`, the translation putting the observation on the map
+  // position. Nothing when two-point registration is off or before the first recorded pose.
+  std::optional<Rigid3> pose_from_one_point(const Eigen::Vector3d& robot, const Eigen::Vector3d& world,
+                                            const TurnRate& turn_rate, int k) const;
   // Sine of two_point_max_elevation_deg: the steepest line two-point registration accepts.
   double max_line_sine() const { return max_line_sine_; }
   // Forgets the recorded poses (the map frame moved).

@@ -12,6 +12,7 @@
 #include "relslam/point/rlt_map.hpp"
 #include "relslam/point/rlt_point.hpp"
 #include "relslam/point/rlt_point_merging.hpp"
+#include "relslam/point/turn_rate.hpp"
 
 #include <optional>
 #include <string>
@@ -106,6 +107,9 @@ class RltMapper {
   void check_map_frame(int k);
   void move_map_frame(int k);
   void update_pose(const ObservationFrame& frame, StepResult& result);
+  // A registration's rotation differs from the predicted one by more than max_turn_deg
+  // (adaptive preset; never under the thesis preset).
+  bool implausible_turn(const Eigen::Matrix3d& registered, const Eigen::Matrix3d& predicted) const;
   void relax(StepResult& result);
 
   PointSlamOptions options_;
@@ -115,6 +119,10 @@ class RltMapper {
   RltPointMerging merging_;
   Rigid3 pose_;
   bool pose_from_map_ = false;  // pose_ was registered to mapped points (or is the map frame)
+  int pose_iteration_ = kNone;  // the iteration pose_ is of
+  TurnRate turn_rate_;          // measured on the poses whose rotation was registered (adaptive)
+  bool rotation_registered_ = false;  // pose_'s rotation was registered, not predicted or held
+  int rejected_turns_ = 0;            // iterations in a row whose registration max_turn_deg rejected
   std::string failure_;
   GroupRelaxer relaxer_;
   int relax_at_ = kNone;  // iteration of the solve a loop closure scheduled
