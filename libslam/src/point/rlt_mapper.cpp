@@ -2,6 +2,8 @@
 
 #include "relslam/point/rlt_icp.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -266,8 +268,8 @@ bool RltMapper::implausible_turn(const Eigen::Matrix3d& registered, const Eigen:
   // stretch of predicted rotations drifted past the bound) and the registration stands.
   if (options_.preset != Preset::Adaptive || !(options_.max_turn_deg > 0) || rejected_turns_ >= kMaxRejectedTurns)
     return false;
-  const double cos_angle = std::clamp(((predicted.transpose() * registered).trace() - 1.0) / 2.0, -1.0, 1.0);
-  return std::acos(cos_angle) > options_.max_turn_deg * std::numbers::pi / 180.0;
+  const double turned = Eigen::AngleAxisd(predicted.transpose() * registered).angle();
+  return turned > options_.max_turn_deg * std::numbers::pi / 180.0;
 }
 
 void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
@@ -357,16 +359,17 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   result.world_T_robot = pose_;
   pose_iteration_ = k;
   // The poses whose registration fixed the rotation measure the turn rate.
+  bool rotation_registered = false;
   switch (result.pose_source) {
     case PoseSource::Start:
     case PoseSource::MappedPoints:
     case PoseSource::TwoPoints:
     case PoseSource::UnmappedPoints:
-    case PoseSource::TwoUnmappedPoints: rotation_registered_ = true; break;
-    default: rotation_registered_ = false; break;
+    case PoseSource::TwoUnmappedPoints: rotation_registered = true; break;
+    default: break;
   }
-  if (rotation_registered_) turn_rate_.record(k, pose_.rotation);
-  rejected_turns_ = rejected && !rotation_registered_ ? rejected_turns_ + 1 : 0;
+  if (rotation_registered) turn_rate_.record(k, pose_.rotation);
+  rejected_turns_ = rejected && !rotation_registered ? rejected_turns_ + 1 : 0;
   pose_from_map_ = result.pose_source == PoseSource::Start || result.pose_source == PoseSource::MappedPoints ||
                    result.pose_source == PoseSource::TwoPoints;
   if (pose_from_map_) map_.record_map_pose(k, pose_);

@@ -121,7 +121,6 @@ class RltMapper {
   bool pose_from_map_ = false;  // pose_ was registered to mapped points (or is the map frame)
   int pose_iteration_ = kNone;  // the iteration pose_ is of
   TurnRate turn_rate_;          // measured on the poses whose rotation was registered (adaptive)
-  bool rotation_registered_ = false;  // pose_'s rotation was registered, not predicted or held
   int rejected_turns_ = 0;            // iterations in a row whose registration max_turn_deg rejected
   std::string failure_;
   GroupRelaxer relaxer_;
