@@ -40,7 +40,7 @@ TEST(CalculateMissingKeyPoints, FirstPartnerWithAKeyPointInTheForcedPhaseGivesIt
                                  across = seen(kAcross);
   const RelativePlaneOptions options;
   ASSERT_TRUE(compare_with_key_points(twin, passed, options, 30).ambiguous);
-  const std::vector<std::span<const PlaneObject>> others = {twin, later, across};
+  const std::vector<ObservationView> others = {twin, later, across};
 
   const auto growing = calculate_missing_key_points(passed, others, 30, options);
   ASSERT_TRUE(growing);

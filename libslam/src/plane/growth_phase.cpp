@@ -108,16 +108,16 @@ std::optional<SizeInterval> get_max_size(std::span<const SizeSample> samples, co
       if (s.interval.in_interval(*forced_iteration)) return s;
     return std::nullopt;
   }
-  const auto better = [choice](const SizeInterval& x, const SizeInterval& y) {
-    const double size_x = x.length1 + x.length2, size_y = y.length1 + y.length2;
-    if (choice == IntervalChoice::MostIterations)
-      return x.samples != y.samples ? x.samples > y.samples : size_x > size_y;
-    return size_x != size_y ? size_x > size_y : x.samples > y.samples;
-  };
   std::optional<SizeInterval> best;
   for (const SizeInterval& s : intervals)
-    if (!best || better(s, *best)) best = s;
+    if (!best || better_piece(s, *best, choice)) best = s;
   return best;
+}
+
+bool better_piece(const SizeInterval& x, const SizeInterval& y, IntervalChoice choice) {
+  const double size_x = x.length1 + x.length2, size_y = y.length1 + y.length2;
+  if (choice == IntervalChoice::MostIterations) return x.samples != y.samples ? x.samples > y.samples : size_x > size_y;
+  return size_x != size_y ? size_x > size_y : x.samples > y.samples;
 }
 
 }  // namespace relslam::plane

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -62,31 +63,63 @@ ConsistentRange consistent_range(const std::vector<KeyPointOffsets>& offsets, in
 
 }  // namespace
 
-CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
-                                      const RelativePlaneOptions& options, std::optional<int> forced_iteration) {
-  // GetCombinedInterval: the iterations both planes were seen in, by a merge walk.
-  std::vector<PlaneObject> both1, both2;
-  std::vector<SizeSample> sizes;
-  for (std::size_t i = 0, j = 0; i < first.size() && j < second.size();) {
-    if (first[i].iteration != second[j].iteration) {
-      (first[i].iteration < second[j].iteration ? i : j) += 1;
+void common_sizes(const ObservationView& first, const ObservationView& second, int from_iteration, int to_iteration,
+                  std::vector<SizeSample>& out) {
+  for (int i = first.lower_bound(from_iteration), j = second.lower_bound(from_iteration);
+       i < first.size() && j < second.size();) {
+    const int a = first[i].iteration, b = second[j].iteration;
+    if (std::min(a, b) > to_iteration) break;
+    if (a != b) {
+      (a < b ? i : j) += 1;
       continue;
     }
-    both1.push_back(first[i]);
-    both2.push_back(second[j]);
-    sizes.push_back({first[i].iteration, first[i].length(), second[j].length()});
+    out.push_back({a, first[i].length(), second[j].length()});
     ++i, ++j;
   }
-  CompareResult result;
+}
+
+CompareResult compare_with_key_points(const ObservationView& first, const ObservationView& second,
+                                      const RelativePlaneOptions& options, std::optional<int> forced_iteration) {
+  std::vector<SizeSample> sizes;
+  if (!forced_iteration) {
+    common_sizes(first, second, std::numeric_limits<int>::min(), std::numeric_limits<int>::max(), sizes);
+  } else {
+    // Rule 18 splits each run of consecutive common iterations on its own, so the piece holding
+    // the iteration lies in the run around it: only that run is read.
+    const int f = *forced_iteration;
+    const int i = first.lower_bound(f), j = second.lower_bound(f);
+    if (i == first.size() || j == second.size() || first[i].iteration != f || second[j].iteration != f)
+      return {};  // not seen together then: no piece holds it [T]
+    int back = 0, ahead = 0;
+    while (i - back > 0 && j - back > 0 && first[i - back - 1].iteration == f - back - 1 &&
+           second[j - back - 1].iteration == f - back - 1)
+      ++back;
+    while (i + ahead + 1 < first.size() && j + ahead + 1 < second.size() &&
+           first[i + ahead + 1].iteration == f + ahead + 1 && second[j + ahead + 1].iteration == f + ahead + 1)
+      ++ahead;
+    common_sizes(first, second, f - back, f + ahead, sizes);
+  }
   const std::optional<SizeInterval> piece =
       get_max_size(sizes, options.growth_phase, options.interval_choice, forced_iteration);
-  if (!piece) return result;  // size 0: the reference is invalid [T]
-  std::span<const PlaneObject> in1 = std::span(both1).subspan(piece->first, piece->samples);
-  std::span<const PlaneObject> in2 = std::span(both2).subspan(piece->first, piece->samples);
+  if (!piece) return {};  // size 0: the reference is invalid [T]
+  return compare_piece(first, second, *piece, options);
+}
+
+CompareResult compare_piece(const ObservationView& first, const ObservationView& second, const SizeInterval& piece,
+                            const RelativePlaneOptions& options) {
+  // The piece's observations: consecutive in both histories, as both planes were seen in each
+  // of its iterations.
+  std::vector<PlaneObject> both1, both2;
+  both1.reserve(piece.samples);
+  both2.reserve(piece.samples);
+  first.copy(first.lower_bound(piece.interval.start), piece.samples, both1);
+  second.copy(second.lower_bound(piece.interval.start), piece.samples, both2);
+  CompareResult result;
+  std::span<const PlaneObject> in1(both1), in2(both2);
   std::vector<KeyPointOffsets> offsets;
   KeyPointPairs pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first, &offsets);
   KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties, options.rules.rotate_to_first);
-  RltInterval interval = piece->interval;
+  RltInterval interval = piece.interval;
   if (options.trim_piece_ends && in1.size() > static_cast<std::size_t>(options.growth_phase.min_samples)) {
     // The pair with the lowest σ over its consistent part; when that part is not the whole
     // piece, and its σ is clearly below the whole piece's lowest, the comparison is made again

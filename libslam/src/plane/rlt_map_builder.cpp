@@ -9,14 +9,6 @@
 namespace relslam::plane {
 namespace {
 
-// An RltPlane's stored observations in iteration order (the circular array unrolled).
-std::vector<PlaneObject> stored(const RltPlane& plane) {
-  std::vector<PlaneObject> out;
-  out.reserve(plane.size());
-  for (int i = 0; i < plane.size(); ++i) out.push_back(plane[i]);
-  return out;
-}
-
 // `plane`'s key point at `iteration`: a membership's, when its comparison piece holds the
 // iteration (a key point is valid only in its interval, Rule 19), else CalculateMissingKeyPoints
 // against `others` in order. None when nothing tells. (A plane's own lengths cannot extend a
@@ -44,13 +36,12 @@ KeyPoint key_point_at(const RltPlane& plane, int iteration, const std::vector<co
                       const RelativePlaneOptions& options) {
   if (const KeyPoint kp = membership_key_point_at(plane, iteration); kp != KeyPoint::None) return kp;
   if (!options.rules.missing_key_points) return any_membership_key_point(plane);
-  std::vector<std::vector<PlaneObject>> unrolled;
-  unrolled.reserve(others.size());
-  std::vector<std::span<const PlaneObject>> spans;
+  std::vector<ObservationView> views;
+  views.reserve(others.size());
   for (const RltPlane* o : others)
-    if (o != &plane) spans.emplace_back(unrolled.emplace_back(stored(*o)));
-  if (spans.empty()) return KeyPoint::None;
-  const std::optional<MissingKeyPoint> missing = calculate_missing_key_points(stored(plane), spans, iteration, options);
+    if (o != &plane) views.push_back(o->view());
+  if (views.empty()) return KeyPoint::None;
+  const std::optional<MissingKeyPoint> missing = calculate_missing_key_points(plane.view(), views, iteration, options);
   return missing ? missing->key_point : KeyPoint::None;
 }
 

@@ -28,20 +28,6 @@ void RltPlane::add(const PlaneObject& observation) {
   }
 }
 
-int RltPlane::lower_bound(int iteration) const {
-  // Logical indices are sorted by iteration even when the physical array has wrapped. A plain
-  // binary search: clang 14 (the fuzz build) cannot compile libstdc++ 12's views::iota.
-  int first = 0, last = size_;
-  while (first < last) {
-    const int middle = first + (last - first) / 2;
-    if ((*this)[middle].iteration < iteration)
-      first = middle + 1;
-    else
-      last = middle;
-  }
-  return first;
-}
-
 const PlaneObject* RltPlane::get_plane(int iteration) const {
   if (iteration == last_iteration()) return &latest();  // the common question
   const int i = lower_bound(iteration);

@@ -21,21 +21,6 @@ void stored_observations(const RltPlane& plane, const RltPlaneInterval* within, 
     if (within == nullptr || within->in_interval(plane[i].iteration)) out.push_back(plane[i]);
 }
 
-// The last iteration both planes have a stored observation of (-1: none), by a backward walk that
-// jumps with binary searches: cheap when the two were seen together recently.
-int last_common_iteration(const RltPlane& a, const RltPlane& b) {
-  int i = a.size() - 1, j = b.size() - 1;
-  while (i >= 0 && j >= 0) {
-    const int ia = a[i].iteration, ib = b[j].iteration;
-    if (ia == ib) return ia;
-    if (ia > ib)
-      i = a.lower_bound(ib + 1) - 1;  // a's last observation at or before ib
-    else
-      j = b.lower_bound(ia + 1) - 1;
-  }
-  return -1;
-}
-
 // A plane's canonical size in the group (spec §5.7.2, A18): the largest length any of its chain
 // edges saw it at, and the key point of that edge.
 struct Canonical {
@@ -227,8 +212,9 @@ void RltXPoint::check_interval_size(std::vector<RltPlane>& planes, const RollBac
   }
 }
 
-const std::vector<PlaneObject>& RltXPoint::observations(const std::vector<RltPlane>& planes, std::size_t k,
-                                                         const RltPlaneInterval* within) {
+ObservationView RltXPoint::observations(const std::vector<RltPlane>& planes, std::size_t k,
+                                       const RltPlaneInterval* within) {
+  if (within == nullptr) return planes[chain_[k]].view();
   if (!observations_filled_[k]) {
     stored_observations(planes[chain_[k]], within, scratch_observations_[k]);
     observations_filled_[k] = 1;
@@ -283,18 +269,19 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
   const std::size_t n = chain_.size();
   scratch_observations_.resize(n);
   observations_filled_.assign(n, 0);
-  edge_sources_.resize(n - 1);
+  pair_comparisons_.resize(n - 1);
   // Each edge by ComparePlanes with key points: one growth phase (Rule 18), the pair of assumed
   // midpoints with the lowest σ (Rules 13–15); an edge whose common observations did not change
   // keeps its result (IntervalMode::Group narrows them by the whole group: always recomputed).
   for (std::size_t k = 1; k < n; ++k) {
-    const RltPlane& from = planes[chain_[k - 1]];
-    const RltPlane& to = planes[chain_[k]];
-    const EdgeSource source{from.id(), to.id(), from[0].iteration, to[0].iteration, last_common_iteration(from, to)};
-    if (within == nullptr && edge_sources_[k - 1] == source) continue;
-    edge_sources_[k - 1] = source;
-    edges_[k - 1] = compare_with_key_points(observations(planes, k - 1, within), observations(planes, k, within),
-                                            options);
+    if (within == nullptr) {
+      const CompareResult* r = pair_comparisons_[k - 1].update(planes[chain_[k - 1]], planes[chain_[k]], options);
+      if (r == nullptr) continue;
+      edges_[k - 1] = *r;
+    } else {
+      edges_[k - 1] = compare_with_key_points(observations(planes, k - 1, within), observations(planes, k, within),
+                                              options);
+    }
     // Rule 36 (DoBackupCheck, spec §5.7.1, §5.12): the pair's best result so far when it beats
     // this one; so a plane whose shared iterations the circular array overwrote stays placed
     // (BuildMap's "invalid reference uses its reserve", spec §5.8 step 5, happens here).
@@ -309,9 +296,9 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
   // (Rule 19: a key point is valid only in the interval it was computed on).
   const auto key_point_in = [&](std::size_t k, int iteration) {
     if (!options.rules.missing_key_points) return KeyPoint::None;  // Rule 19 off
-    std::vector<std::span<const PlaneObject>> others;
+    std::vector<ObservationView> others;
     for (std::size_t o = 0; o < n; ++o)
-      if (o != k) others.emplace_back(observations(planes, o, within));
+      if (o != k) others.push_back(observations(planes, o, within));
     const auto missing = calculate_missing_key_points(observations(planes, k, within), others, iteration, options);
     return missing ? missing->key_point : KeyPoint::None;
   };

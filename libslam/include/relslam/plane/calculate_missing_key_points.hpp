@@ -7,6 +7,7 @@
 // relslam/plane.
 
 #include "relslam/core/plane_object.hpp"
+#include "relslam/plane/observation_view.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/plane_object.hpp"
 
@@ -24,8 +25,8 @@ struct MissingKeyPoint {
 // `plane`'s key point at `iteration` (the end of its reference interval), from ComparePlanes(o,
 // plane, forced_iteration = iteration) for each o in `others` in order — the thesis's dummy
 // references. nullopt when none gives one: no common piece, static there, or ambiguous.
-std::optional<MissingKeyPoint> calculate_missing_key_points(std::span<const PlaneObject> plane,
-                                                            const std::vector<std::span<const PlaneObject>>& others,
+std::optional<MissingKeyPoint> calculate_missing_key_points(const ObservationView& plane,
+                                                            const std::vector<ObservationView>& others,
                                                             int iteration, const RelativePlaneOptions& options);
 
 }  // namespace relslam::plane

@@ -71,4 +71,8 @@ std::vector<SizeInterval> split_by_growth_phase(std::span<const SizeSample> samp
 std::optional<SizeInterval> get_max_size(std::span<const SizeSample> samples, const GrowthPhaseBounds& bounds,
                                          IntervalChoice choice, std::optional<int> forced_iteration = {});
 
+// GetMaxSize's order: `x` is a better piece than `y` by `choice`. get_max_size keeps the first
+// of equal pieces in iteration order.
+bool better_piece(const SizeInterval& x, const SizeInterval& y, IntervalChoice choice);
+
 }  // namespace relslam::plane

@@ -4,23 +4,37 @@
 // GetMaxSize picks one growth phase (Rule 18), and inside it the four assumed-midpoint pairs
 // give the offset and the key points (Rules 13–15). A pure function of two observation series,
 // so CalculateMissingKeyPoints (Rule 19) and the tests need no RltPlane; the group computation
-// will call it on an RltPlane's stored observations. Part of relslam/plane.
+// calls it on an RltPlane's stored observations (RltPlane::view, PairComparison). Part of relslam/plane.
 
 #include "relslam/core/plane_object.hpp"
+#include "relslam/plane/growth_phase.hpp"
+#include "relslam/plane/observation_view.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/rlt_plane_compare.hpp"
 
 #include <optional>
-#include <span>
+#include <vector>
 
 namespace relslam::plane {
 
 // `first` and `second`: each plane's observations, sorted by iteration (one per iteration).
 // The result's delta is the pair with the lowest σ, at the planes' maximum lengths in the chosen
 // piece; interval and samples are that piece's. With `forced_iteration` the piece containing it
-// is used (Rule 19). Invalid when no piece has options.growth_phase.min_samples iterations [T].
-CompareResult compare_with_key_points(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
+// is used (Rule 19), and only the run of common iterations around it is read. Invalid when no
+// piece has options.growth_phase.min_samples iterations [T].
+CompareResult compare_with_key_points(const ObservationView& first, const ObservationView& second,
                                       const RelativePlaneOptions& options,
                                       std::optional<int> forced_iteration = std::nullopt);
+
+// GetCombinedInterval between two iterations (inclusive): both lengths at each iteration both
+// planes were seen in, appended to `out` in iteration order (a merge walk started by binary
+// search). What Rule 18 splits into growth phases.
+void common_sizes(const ObservationView& first, const ObservationView& second, int from_iteration, int to_iteration,
+                  std::vector<SizeSample>& out);
+
+// ComparePlanes inside one piece GetMaxSize chose (Rules 13–15, with the piece's ends trimmed,
+// options.trim_piece_ends): both planes were seen at every iteration of piece.interval.
+CompareResult compare_piece(const ObservationView& first, const ObservationView& second, const SizeInterval& piece,
+                            const RelativePlaneOptions& options);
 
 }  // namespace relslam::plane

@@ -4,6 +4,7 @@
 
 #include "relslam/core/plane_object.hpp"
 #include "relslam/plane/ids.hpp"
+#include "relslam/plane/observation_view.hpp"
 #include "relslam/plane/plane_object.hpp"
 #include "relslam/plane/rlt_plane_interval.hpp"
 #include "relslam/plane/rlt_xpoint_ref.hpp"
@@ -43,9 +44,14 @@ class RltPlane {
     const int j = head_ + i;
     return storage_[j < capacity_ ? j : j - capacity_];
   }
+  // The stored observations in iteration order, where they are (no copy).
+  ObservationView view() const {
+    const std::span<const PlaneObject> all(storage_);
+    return {all.subspan(head_), all.first(head_)};
+  }
   // Logical index of the first stored observation at or after `iteration` (size() if none):
   // a binary search, after which an enumeration steps in O(1) (GetPlane, thesis 4.4.3.4).
-  int lower_bound(int iteration) const;
+  int lower_bound(int iteration) const { return view().lower_bound(iteration); }
   // GetPlane: the observation at `iteration`, or nullptr when not seen or overwritten.
   const PlaneObject* get_plane(int iteration) const;
 

@@ -5,6 +5,7 @@
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/options.hpp"
+#include "relslam/plane/pair_comparison.hpp"
 #include "relslam/plane/rlt_plane.hpp"
 #include "relslam/plane/rlt_plane_compare.hpp"
 #include "relslam/plane/rlt_plane_interval.hpp"
@@ -108,21 +109,15 @@ class RltXPoint {
   // The iterations comparisons are limited to: the group's common interval in
   // IntervalMode::Group (kept in scratch_common_), nullptr (all) in IntervalMode::Pair.
   const RltPlaneInterval* comparison_window(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
-  std::vector<std::vector<PlaneObject>> scratch_observations_;  // per chain plane, part 2, filled on demand
+  // Per chain plane, part 2 in IntervalMode::Group: its observations inside the group's
+  // common interval, filled on demand.
+  std::vector<std::vector<PlaneObject>> scratch_observations_;
   std::vector<char> observations_filled_;
 
-  // What an edge's comparison was computed from (part 2). Stored observations never change and
-  // only come and go at the ends of the circular array, so two planes' common iterations are
-  // the same set while their oldest kept iterations and their last common iteration are: the
-  // edge's CompareResult is then the same, and a group with one plane in view recomputes only
-  // the edges that got a common sample (thesis 4.2.2, 4.3.8: time follows the planes in view).
-  struct EdgeSource {
-    PlaneId from = -1, to = -1;
-    int oldest_from = 0, oldest_to = 0;
-    int last_common = 0;
-    bool operator==(const EdgeSource&) const = default;
-  };
-  std::vector<EdgeSource> edge_sources_;
+  // Each chain edge's comparison, kept up to date as its planes are seen (part 2): a group with
+  // one plane in view recomputes only the edges that got a common sample, and those only over
+  // what changed (thesis 4.2.2, 4.3.8: time follows the planes in view).
+  std::vector<PairComparison> pair_comparisons_;
 
   // Rule 35's copy of the best complete result (spec §5.12), for the chain it was computed on.
   struct Snapshot {
@@ -134,8 +129,8 @@ class RltXPoint {
   };
   std::optional<Snapshot> snapshot_;
   void keep_or_restore_snapshot(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
-  const std::vector<PlaneObject>& observations(const std::vector<RltPlane>& planes, std::size_t k,
-                                               const RltPlaneInterval* within);
+  // Chain plane k's observations: where they are stored, or only those inside `within`.
+  ObservationView observations(const std::vector<RltPlane>& planes, std::size_t k, const RltPlaneInterval* within);
 };
 
 }  // namespace relslam::plane
