@@ -31,6 +31,15 @@ bool KeyPointTies::close(double x, double y) const {
   return std::abs(x - y) <= std::max(absolute, relative * std::max(x, y));
 }
 
+bool KeyPointTies::close_over(double x, double y, int samples) const {
+  if (close(x, y)) return true;
+  if (samples < 2 || small_sample_z <= 0) return false;
+  // Two estimates of one σ from `samples` iterations differ by about √2 · σ / (2√(n − 1)); σ is
+  // taken as their mean, so a σ of zero (noise-free, the real ends) ties with nothing above it.
+  const double spread = std::numbers::sqrt2 / (2 * std::sqrt(samples - 1.0));
+  return std::abs(x - y) <= small_sample_z * spread * 0.5 * (x + y);
+}
+
 KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
                               bool rotate_to_first, std::vector<KeyPointOffsets>* offsets_out) {
   if (first.size() != second.size()) throw std::invalid_argument("key_point_pairs: the two series differ in length");
@@ -128,7 +137,8 @@ KeyPointChoice choose_key_points(const KeyPointPairs& pairs, const KeyPointTies&
   const bool second_undecided = ties.close(pairs.sigma_of(a, other(b)), lowest);
   const bool first_undecided = ties.close(pairs.sigma_of(other(a), b), lowest);
   // Rule 15, checked first: the opposite diagonal ties while both mixed pairs are clearly higher.
-  if (ties.close(pairs.sigma_of(other(a), other(b)), lowest) && !second_undecided && !first_undecided) {
+  if (ties.close_over(pairs.sigma_of(other(a), other(b)), lowest, pairs.samples) && !second_undecided &&
+      !first_undecided) {
     if (!(ties.collinear_distance && rotated && break_collinear_tie(pairs, ties, choice))) choice.ambiguous = true;
     return choice;
   }

@@ -32,8 +32,21 @@ struct KeyPointTies {
   bool collinear_distance = true;
   double collinear_angle_deg = 3;  // collinear: directions within this, degrees [C] ...
   double collinear_offset = 0.1;   // ... and on one line within this, units [C: 10 σ_p]
+  // Rule 15's diagonal tie from a short piece. A σ over n samples is itself uncertain: the pooled
+  // 2-D spread has 2(n − 1) degrees of freedom, so its relative standard error is about
+  // 1 / (2√(n − 1)), and two estimates of one σ differ by chance by √2 of that. The diagonals
+  // also tie when they differ by at most `small_sample_z` such errors of their mean (at z = 2:
+  // a ratio up to 1.9 over 6 samples, 1.35 over 23 — where `relative` takes over). A plane
+  // entering the view as a sliver while the robot drives past it and its partner (both cut by
+  // the frustum, both real ends moving together) otherwise takes the cut ends as its key points,
+  // and its group is placed a wall's length off (Map D, seed 5, iteration 1776: σ 0.015 against
+  // 0.022 over 6 samples; 9 walls then mapped twice). [C] 2; 0: `relative` alone.
+  double small_sample_z = 2;
 
   bool close(double x, double y) const;
+  // close(), with the relative part widened for σ taken over `samples` iterations
+  // (small_sample_z): Rule 15's diagonal tie.
+  bool close_over(double x, double y, int samples) const;
 };
 
 // Rule 13's four cross-pair offset series over one interval, reduced to their means and spreads.

@@ -422,6 +422,10 @@ void describe(OptionsOf<KeyPointTies> auto& t, auto& f) {
   f.field("collinear_angle_deg", t.collinear_angle_deg, "... collinear: directions within this, degrees",
           at_least(0.0), at_most(90.0));
   f.field("collinear_offset", t.collinear_offset, "... and on one line within this, units", at_least(0.0));
+  f.field("small_sample_z", t.small_sample_z,
+          "Rule 15: over few samples the diagonals also tie within this many standard errors of two sigmas "
+          "(0: relative alone)",
+          at_least(0.0));
 }
 
 // The scenario keys of GrowthPhaseBounds (relative_plane.growth_phase.*).
