@@ -508,7 +508,7 @@ TEST(PlaneScenario, MapDLargeFrustumLoopIsExactAndMapsEveryWall) {
 // median position error 0.018–0.033 (the pose is taken against a map chained through a dozen
 // groups, each link adding its averaging error); no wall with a second plane (before Rule 11 came
 // ahead of the unassigned list and the offset test allowed a plane's turn about its midpoint: 1–2,
-// a far wall failing Rule 1 in a turn and wall 3 on the return); key points right in 98–99 % of the claims (seeds 1–3) — a
+// a far wall failing Rule 1 in a turn and wall 3 on the return); key points right in 99.9–100 % of the claims (seeds 1–5; a motion model's held end is no claim) — a
 // wrong one lasts 20–40 iterations, not the thesis's "about four" (Figs 76–79), until its piece
 // ends. Bounds: mean e_ends within the noise-free value plus 10 σ_p; median pose error 5 σ_p.
 TEST(PlaneScenario, MapDLargeFrustumWithNoiseMapsEveryWallWithinTheNoise) {

@@ -143,12 +143,14 @@ class RelativePlane final : public PlaneAlgorithm {
   bool claims_key_points() const override { return slam_.options().key_points; }
   std::vector<KeyPointClaim> key_point_claims() const override {
     // Each observed plane's memberships with a key point valid at this iteration: what Rule 16
-    // grows a partial observation from (spec §5.9).
+    // grows a partial observation from (spec §5.9). A motion model's membership is not one: the
+    // end it holds is the track's as a whole (Rule 23), in a given view it can be the frustum's
+    // cut, and the pose takes no key point from it (RltXPointRef::tracked).
     std::vector<KeyPointClaim> out;
     for (std::size_t i = 0; i < last_.assignment.size(); ++i) {
       const plane::RltPlane& p = slam_.planes().at(static_cast<std::size_t>(last_.assignment[i]));
       for (const plane::RltXPointRef& ref : p.refs()) {
-        if (!ref.valid || !ref.interval.in_interval(last_.iteration)) continue;
+        if (!ref.valid || ref.tracked || !ref.interval.in_interval(last_.iteration)) continue;
         if (ref.key_point == plane::KeyPoint::None) continue;
         out.push_back({static_cast<int>(i), ref.xpoint, p.id(), static_cast<int>(ref.key_point), ref.size_static,
                        ambiguous_in(ref.xpoint, p.id()), ref.interval.start, ref.interval.end});
