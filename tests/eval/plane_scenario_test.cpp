@@ -427,14 +427,17 @@ TEST(PlaneScenario, MapDSmallStoreKeepsItsPlanesOnlyWithTheSaveSystem) {
   EXPECT_LT(w.heading, kNoiseFree);
 }
 
-// Rule 37 (MendMergeAfterLoopClosing, spec §5.5.5) on Map E with noise, two loops (seed 2):
-// when Rule 29 returns from a motion model to a visited group, a plane in view whose wall has a
-// second RltPlane on the map gets a one-way link to that duplicate's group (measured: one). The
-// link is for charting only — the group does not list the plane and the plane has no membership
-// in it — and here it changes nothing: every pose, every current group and the final map are bit
-// for bit those of the run without the rule. (The thesis's failure, Fig 101's wrong current
-// group, is not reproduced; E20 measures it. Map D no longer gives a link: since Rule 11 comes
-// before the unassigned list, its noisy runs keep no duplicate to link to.)
+// Rule 37 (CheckForLoopClosing and MendMergeAfterLoopClosing, spec §5.5.5) on Map E with noise,
+// two loops (seed 2). While a motion model runs, a group counts as holding a plane in view also
+// through the plane's duplicate (another RltPlane global matching finds for the same wall); a
+// group holding all of them becomes current, and each plane in view gets a one-way link to its
+// duplicate's groups. Here the start wall, mapped in part from the start (plane 0, X0), is seen
+// again after the fourth corner as a new plane (plane 9): at 1224 the motion model ends into X0
+// through it, and from 1250 Rule 22's chart credits X0 with plane 9 — X0 and X9 then hold three
+// of the six planes in view each and the lower id is kept — where without the rule X9 is current
+// (the thesis's Fig 101: the old group loses the chart to the new plane's). The link is for
+// charting only — the group does not list the plane and the plane has no membership in it — so
+// every pose and the final map are bit for bit those of the run without the rule.
 TEST(PlaneScenario, Rule37OneWayLinksChartOnlyAndLeaveTheGroupsAlone) {
   sim::PlanarMap map = map_file("e_motion_room.json");
   map.path.loops = 2;
@@ -444,7 +447,7 @@ TEST(PlaneScenario, Rule37OneWayLinksChartOnlyAndLeaveTheGroupsAlone) {
   RelativePlaneOptions off = on;
   off.rules.pseudo_merge = false;
   RltXPointsS with(on, simulator.path().world_T_robot(0)), without(off, simulator.path().world_T_robot(0));
-  int links = 0;
+  int links = 0, charted_otherwise = 0;
   for (int k = 0; k < simulator.iterations(); ++k) {
     const sim::PlaneSimFrame frame = simulator.frame(k);
     const RelativePlaneStep a = with.step(frame.observation);
@@ -454,8 +457,19 @@ TEST(PlaneScenario, Rule37OneWayLinksChartOnlyAndLeaveTheGroupsAlone) {
     ASSERT_EQ(a.pose_valid, b.pose_valid) << "iteration " << k;
     ASSERT_EQ(a.world_T_robot.translation, b.world_T_robot.translation) << "iteration " << k;
     ASSERT_EQ(a.world_T_robot.heading, b.world_T_robot.heading) << "iteration " << k;
-    ASSERT_EQ(a.current_group, b.current_group) << "iteration " << k;
+    if (a.current_group == b.current_group) continue;
+    ++charted_otherwise;
+    // Where the charts differ, the group chosen with the rule holds at least as many planes in
+    // view as the other, counting the one-way links (RltXPointChart as if merged).
+    const auto held = [&](plane::XPointId x) {
+      return std::ranges::count_if(a.assignment, [&](plane::PlaneId p) {
+        const plane::RltPlane& q = with.planes()[p];
+        return q.ref(x) != nullptr || std::ranges::count(q.oneway_xpoints(), x) > 0;
+      });
+    };
+    EXPECT_GE(held(a.current_group), held(b.current_group)) << "iteration " << k;
   }
+  EXPECT_GT(charted_otherwise, 0);
   EXPECT_GE(links, 1);
   int found = 0;
   for (const plane::RltPlane& p : with.planes())

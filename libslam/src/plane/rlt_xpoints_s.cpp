@@ -309,18 +309,25 @@ PlaneId RltXPointsS::create_plane(const PlaneObject& observation, int input_inde
 void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   // Rule 29 (spec §5.10.4): leaving a motion model where a group already holds every plane in
   // view goes back to that group instead of starting a new one.
-  if (motion_model_active_ && options_.rules.return_to_visited_group && switch_to_group_holding_all() &&
-      options_.key_points && options_.rules.pseudo_merge) {
-    // Rule 37 looks for duplicates where the motion model that just ended puts the robot now. A
-    // copy tracks this iteration and the membership it writes is put back: the ended model and
-    // its plane stay exactly as they were (frozen), so the rule changes nothing but the chart.
-    RltXMMPoint tracking = motion_models_.back();
-    RltXPointRef& tracked_ref = *planes_[tracking.plane()].ref(tracking.xpoint());
-    const RltXPointRef kept = tracked_ref;
-    tracking.compute(planes_, options_.motion_model);
-    tracked_ref = kept;
-    const PlanarPose world_T_robot = tracking.world_T_robot(iteration_).value_or(last_valid_pose_.world_T_robot);
-    result.oneway_links += mend_merge_after_loop_closing(world_T_robot);
+  if (motion_model_active_ && options_.rules.return_to_visited_group) {
+    const bool pseudo_merge = options_.key_points && options_.rules.pseudo_merge;
+    bool returned = switch_to_group_holding_all();
+    if (pseudo_merge && stamped_.size() >= 2) {
+      // Rule 37 looks for duplicates where the motion model puts the robot now. A copy tracks
+      // this iteration and the membership it writes is put back: the model and its plane stay
+      // exactly as they were, so the rule changes nothing but the chart.
+      RltXMMPoint tracking = motion_models_.back();
+      RltXPointRef& tracked_ref = *planes_[tracking.plane()].ref(tracking.xpoint());
+      const RltXPointRef kept = tracked_ref;
+      tracking.compute(planes_, options_.motion_model);
+      tracked_ref = kept;
+      const PlanarPose world_T_robot = tracking.world_T_robot(iteration_).value_or(last_valid_pose_.world_T_robot);
+      // CheckForLoopClosing (spec §5.5.5) counts a group as holding a plane in view through the
+      // plane's duplicates too: a wall seen again after the motion model as a new plane (Fig
+      // 101's plane 8 ≡ 2) still lets the robot return to the group of the old one.
+      if (!returned) returned = switch_to_group_holding_all_through_duplicates(world_T_robot);
+      if (returned) result.oneway_links += mend_merge_after_loop_closing(world_T_robot);
+    }
   }
   // Spec §5.5.1 step A, with the bootstrap of A23: the first group waits for two planes.
   if (xpoints_.empty()) bootstrap(result);
@@ -598,6 +605,36 @@ bool RltXPointsS::switch_to_group_holding_all() {
       return true;
     }
   }
+  return false;
+}
+
+bool RltXPointsS::switch_to_group_holding_all_through_duplicates(const PlanarPose& world_T_robot) {
+  // CheckForLoopClosing's all-matches count (spec §5.5.5): per group, the planes in view it holds
+  // itself or through a duplicate — another RltPlane global matching finds for the same
+  // observation. A group holding all of them becomes current; the lowest id wins a tie [R].
+  std::vector<int> holds(xpoints_.size(), 0);
+  std::vector<XPointId> holding;
+  const std::vector<char> none(planes_.size(), 0);
+  for (int i = 0; i < static_cast<int>(stamped_.size()); ++i) {
+    const PlaneId p = assignment_[i];
+    holding.clear();
+    for (const RltXPointRef& ref : planes_[p].refs()) holding.push_back(ref.xpoint);
+    matches_.clear();
+    builder_.match_plane_to_map(i, stamped_[i], world_T_robot, options_.global_match, options_.rules.normal_direction,
+                                none, matches_);
+    for (const PlaneMatch& m : matches_)
+      if (m.plane != p)
+        for (const RltXPointRef& ref : planes_[m.plane].refs()) holding.push_back(ref.xpoint);
+    std::ranges::sort(holding);
+    holding.erase(std::unique(holding.begin(), holding.end()), holding.end());
+    for (XPointId x : holding)
+      if (!xpoints_[x].motion_model()) ++holds[x];
+  }
+  for (XPointId x = 0; x < static_cast<XPointId>(xpoints_.size()); ++x)
+    if (holds[x] == static_cast<int>(stamped_.size())) {
+      set_current(x);
+      return true;
+    }
   return false;
 }
 

@@ -135,13 +135,15 @@ struct RuleSwitches {
   // walls, E25 1.07 → 1.04; worse on E26 (10 → 9 of 10 walls, 1.06 → 1.27), and key-point claims
   // are right less often (E15 89 → 85 %): a reserve's key point is that of its own interval.
   bool save_reserve = true;
-  // Rule 37 (MendMergeAfterLoopClosing, spec §5.5.5): when Rule 29 returns to a visited group,
-  // each plane in view that has a duplicate on the map (the same wall as another RltPlane, found
-  // by global matching) gets a one-way link to each group the duplicate is in; Rule 22 then
-  // counts it for them, as if the two were merged, while no group compares it. Off: a wall seen
-  // again as a new plane charts only its own groups (the wrong current group of Fig 101). [T: on]
-  // Measured: E20 (Map E, seeds 1–5) and Map D two loops give identical runs on and off — the
-  // links are added rarely and have not yet changed a current group here.
+  // Rule 37 (CheckForLoopClosing and MendMergeAfterLoopClosing, spec §5.5.5): during a motion
+  // model a group also holds a plane in view through its duplicate (the same wall as another
+  // RltPlane, found by global matching), so a group holding them all that way becomes current
+  // (Rule 29 through duplicates); then each plane in view with a duplicate gets a one-way link to
+  // each group the duplicate is in, and Rule 22 counts it for them, as if the two were merged,
+  // while no group compares it. Off: a wall seen again as a new plane charts only its own groups
+  // (the wrong current group of Fig 101). [T: on] Measured: E20 (Map E, seeds 1–5) charts X0
+  // again after the fourth corner (290–450 iterations charted otherwise); poses and map are the
+  // same bit for bit either way.
   bool pseudo_merge = true;
   // Rules 31–34 (thesis 4.3.7.2, walkthrough 4.5; spec §5.11): a plane whose comparison in a
   // group still covers fewer than rollback.min_interval iterations rollback.confirm_after

@@ -150,6 +150,7 @@ class RltXPointsS : private RltXPointsState {
   void fill_chart(bool oneway_links);
   void set_current(XPointId x);
   bool switch_to_group_holding_all();
+  bool switch_to_group_holding_all_through_duplicates(const PlanarPose& world_T_robot);
   int mend_merge_after_loop_closing(const PlanarPose& world_T_robot);
   void check_for_motion_model();
   void create_motion_model(PlaneId plane);
