@@ -35,12 +35,12 @@ TEST(RotationFit, ASteadyTurnIsFittedExactly) {
   for (int t = 0; t < 30; ++t) rotations.emplace_back(t, start * about(axis, 0.23 * t));
   const auto at_start = fitted_rotation(rotations, 0);
   ASSERT_TRUE(at_start);
-  EXPECT_LT(angle_deg(*at_start, start), 1e-6);
+  EXPECT_LT(angle_deg(*at_start, start), 1e-5);  // degrees: acos near 0 resolves ~1e-6
   const std::vector<std::pair<int, Eigen::Matrix3d>> later(rotations.begin() + 10, rotations.end());
   const auto extrapolated = fitted_rotation(later, 0);
   ASSERT_TRUE(extrapolated);
-  EXPECT_LT(angle_deg(*extrapolated, start), 1e-6);
-  EXPECT_LT(angle_deg(*fitted_rotation(rotations, 29), start * about(axis, 0.23 * 29)), 1e-6);
+  EXPECT_LT(angle_deg(*extrapolated, start), 1e-5);
+  EXPECT_LT(angle_deg(*fitted_rotation(rotations, 29), start * about(axis, 0.23 * 29)), 1e-5);
 }
 
 // Each rotation with 6 degrees of noise about the viewing axis (density 5, sigma 0.3, seed 4: the
