@@ -74,6 +74,12 @@ std::optional<Rigid3> RltGroup::registration(const std::vector<RltPoint>& points
   if (used_ == 0) return std::nullopt;
   // Reused between calls: every anchored group registers each iteration it is computed.
   thread_local std::vector<Eigen::Vector3d> from, to;
+  registration_pairs(points, first_iteration, from, to);
+  return rlt_icp(from, to);
+}
+
+void RltGroup::registration_pairs(const std::vector<RltPoint>& points, int first_iteration,
+                                  std::vector<Eigen::Vector3d>& from, std::vector<Eigen::Vector3d>& to) const {
   from.clear();
   to.clear();
   for (std::size_t i = 0; i < members_.size(); ++i) {
@@ -92,7 +98,6 @@ std::optional<Rigid3> RltGroup::registration(const std::vector<RltPoint>& points
       to.push_back(p.global);
     }
   }
-  return rlt_icp(from, to);
 }
 
 }  // namespace relslam::point

@@ -1,6 +1,7 @@
 #include "relslam/point/rlt_map.hpp"
 
 #include "relslam/point/rlt_icp.hpp"
+#include "relslam/point/rotation_fit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,14 +23,17 @@ RltMap::RltMap(const PointSlamOptions& options)
                                               std::max(options.global_bound, options.merge_bound))),
       two_point_(two_point_registration_on(options)),
       max_line_sine_(std::sin(options.two_point_max_elevation_deg * std::numbers::pi / 180.0)),
-      pose_window_(history_window(options)) {}
+      pose_window_(history_window(options)),
+      root_window_(root_rotation_window_on(options)) {}
 
 void RltMap::compute(RltGroup& group, int from, int k) {
   if (group.accumulate(points, from, k, kBasisEpsilon)) anchor(group);
 }
 
 void RltMap::anchor(RltGroup& group) {
-  auto world_T_group = group.registration(points, first_iteration);
+  std::optional<Rigid3> world_T_group;
+  if (root_window_ > 0 && group.registration() == Registration::FirstObservations) world_T_group = register_root(group);
+  if (!world_T_group) world_T_group = group.registration(points, first_iteration);
   if (!world_T_group && two_point_) world_T_group = register_on_two_anchors(group);
   if (!world_T_group) return;
   for (std::size_t i = 0; i < group.members().size(); ++i) {
@@ -70,6 +74,40 @@ std::optional<Rigid3> RltMap::register_on_two_anchors(const RltGroup& group) {
   return register_two_points(group.relative(pair[0]), group.relative(pair[1]), points[group.members()[pair[0]]].global,
                              points[group.members()[pair[1]]].global, mean_rotation(prior.sum),
                              up_in_world(map_poses_.back().second), max_line_sine_);
+}
+
+std::optional<Rigid3> RltMap::register_root(const RltGroup& group) {
+  if (group.iterations_used() == 0) return std::nullopt;
+  thread_local std::vector<Eigen::Vector3d> from, to;
+  RootRotation& root = root_rotations_[group.id()];
+  if (!root.settled) {
+    // robot_R_group at each iteration of the window the group used: its averaged positions
+    // registered to that iteration's observations. The map frame is the robot frame at
+    // first_iteration, so world_R_group is the line's value there.
+    thread_local std::vector<std::pair<int, Eigen::Matrix3d>> rotations;
+    rotations.clear();
+    const int window_end = first_iteration + root_window_;
+    for (int t = first_iteration; t <= std::min(window_end, group.computed_on().last()); ++t) {
+      if (!group.computed_on().contains(t)) continue;
+      from.clear();
+      to.clear();
+      for (std::size_t i = 0; i < group.members().size(); ++i) {
+        const RltPoint& p = points[group.members()[i]];
+        const Point* observed = p.observations.at(t);
+        if (!observed || p.dynamic || p.merged) continue;
+        from.push_back(group.relative(static_cast<int>(i)));
+        to.push_back(observed->p);
+      }
+      if (const auto robot_T_group = rlt_icp(from, to)) rotations.emplace_back(t, robot_T_group->rotation);
+    }
+    const auto fitted = fitted_rotation(rotations, first_iteration);
+    if (!fitted) return std::nullopt;
+    root.rotation = *fitted;
+    root.settled = group.computed_on().last() > window_end;
+  }
+  group.registration_pairs(points, first_iteration, from, to);
+  if (from.size() < 3) return std::nullopt;
+  return register_centroids(from, to, root.rotation);
 }
 
 void RltMap::record_map_pose(int k, const Rigid3& world_T_robot) {

@@ -45,6 +45,11 @@ class RltGroup {
   // world_T_group from the averaged positions (thesis 6.3.3 step 4), as registration() says.
   // Nothing before the first accumulation or with fewer than 3 usable pairs.
   std::optional<Rigid3> registration(const std::vector<RltPoint>& points, int first_iteration) const;
+  // The pairs registration() registers: each usable member's averaged position in the basis
+  // frame (`from`) and its place in the world frame (`to`), as registration() says; valid once
+  // iterations_used() > 0.
+  void registration_pairs(const std::vector<RltPoint>& points, int first_iteration, std::vector<Eigen::Vector3d>& from,
+                          std::vector<Eigen::Vector3d>& to) const;
 
   GroupId id() const { return id_; }
   GroupLevel level() const { return level_; }

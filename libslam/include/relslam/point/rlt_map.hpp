@@ -84,6 +84,7 @@ struct RltMap {
   void forget_map_poses() {
     map_poses_.clear();
     two_anchor_priors_.clear();
+    root_rotations_.clear();
   }
   // Gives a point its map position (and its place in the global index).
   void set_global(PointId id, const Eigen::Vector3d& g);
@@ -110,10 +111,24 @@ struct RltMap {
     int last = -1;
   };
   std::unordered_map<GroupId, TwoAnchorPrior> two_anchor_priors_;
+  // Deviation (adaptive preset, issue 16, PointSlamOptions::root_rotation_window): a root group
+  // registered to the map frame's observations with its rotation fitted over its first
+  // iterations from the map frame on (rotation_fit.hpp), the translation putting its members'
+  // centroid on their first observations. Nothing before three such iterations.
+  std::optional<Rigid3> register_root(const RltGroup& group);
+  // Per root group: its fitted rotation (world_R_group), settled once the group has used an
+  // iteration past the window (its rotations there no longer change but for the averages'
+  // refinement, and refitting every iteration would cost the window's registrations each time).
+  struct RootRotation {
+    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+    bool settled = false;
+  };
+  std::unordered_map<GroupId, RootRotation> root_rotations_;
 
   bool two_point_ = false;     // two_point_registration_on(options)
   double max_line_sine_ = 0;   // sine of two_point_max_elevation_deg
   int pose_window_ = 0;        // history_window(options)
+  int root_window_ = 0;        // root_rotation_window_on(options)
   std::deque<std::pair<int, Rigid3>> map_poses_;  // (iteration, world_T_robot), oldest first
   std::vector<PointId> changed_;
   std::vector<int> changed_at_;  // per point: the iteration it was last marked
