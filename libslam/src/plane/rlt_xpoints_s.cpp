@@ -325,8 +325,9 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
       // CheckForLoopClosing (spec §5.5.5) counts a group as holding a plane in view through the
       // plane's duplicates too: a wall seen again after the motion model as a new plane (Fig
       // 101's plane 8 ≡ 2) still lets the robot return to the group of the old one.
-      if (!returned) returned = switch_to_group_holding_all_through_duplicates(world_T_robot);
-      if (returned) result.oneway_links += mend_merge_after_loop_closing(world_T_robot);
+      find_duplicate_groups(world_T_robot);
+      if (!returned) returned = switch_to_group_holding_all(duplicate_groups_);
+      if (returned) result.oneway_links += mend_merge_after_loop_closing();
     }
   }
   // Spec §5.5.1 step A, with the bootstrap of A23: the first group waits for two planes.
@@ -592,15 +593,19 @@ void RltXPointsS::set_current(XPointId x) {
   current_ = x;
 }
 
-bool RltXPointsS::switch_to_group_holding_all() {
-  // Rule 29 (CheckForLoopClosing, own memberships): with two or more planes in view, a group
-  // that holds every one of them becomes current; the lowest id wins a tie [R].
+bool RltXPointsS::switch_to_group_holding_all(std::span<const DuplicateGroup> through) {
+  // Rule 29 (CheckForLoopClosing, spec §5.5.5): with two or more planes in view, a group that
+  // holds every one of them becomes current — itself, or (Rule 37's count) through a duplicate
+  // listed in `through`; the lowest id wins a tie [R].
   if (stamped_.size() < 2) return false;
+  const auto holds = [&](const RltXPoint& x, PlaneId p) {
+    return planes_[p].ref(x.id()) != nullptr || std::ranges::any_of(through, [&](const DuplicateGroup& d) {
+             return d.plane == p && d.xpoint == x.id();
+           });
+  };
   for (const RltXPoint& x : xpoints_) {
     if (x.motion_model()) continue;
-    const bool holds_all =
-        std::ranges::all_of(assignment_, [&](PlaneId p) { return planes_[p].ref(x.id()) != nullptr; });
-    if (holds_all) {
+    if (std::ranges::all_of(assignment_, [&](PlaneId p) { return holds(x, p); })) {
       set_current(x.id());
       return true;
     }
@@ -608,42 +613,11 @@ bool RltXPointsS::switch_to_group_holding_all() {
   return false;
 }
 
-bool RltXPointsS::switch_to_group_holding_all_through_duplicates(const PlanarPose& world_T_robot) {
-  // CheckForLoopClosing's all-matches count (spec §5.5.5): per group, the planes in view it holds
-  // itself or through a duplicate — another RltPlane global matching finds for the same
-  // observation. A group holding all of them becomes current; the lowest id wins a tie [R].
-  std::vector<int> holds(xpoints_.size(), 0);
-  std::vector<XPointId> holding;
-  const std::vector<char> none(planes_.size(), 0);
-  for (int i = 0; i < static_cast<int>(stamped_.size()); ++i) {
-    const PlaneId p = assignment_[i];
-    holding.clear();
-    for (const RltXPointRef& ref : planes_[p].refs()) holding.push_back(ref.xpoint);
-    matches_.clear();
-    builder_.match_plane_to_map(i, stamped_[i], world_T_robot, options_.global_match, options_.rules.normal_direction,
-                                none, matches_);
-    for (const PlaneMatch& m : matches_)
-      if (m.plane != p)
-        for (const RltXPointRef& ref : planes_[m.plane].refs()) holding.push_back(ref.xpoint);
-    std::ranges::sort(holding);
-    holding.erase(std::unique(holding.begin(), holding.end()), holding.end());
-    for (XPointId x : holding)
-      if (!xpoints_[x].motion_model()) ++holds[x];
-  }
-  for (XPointId x = 0; x < static_cast<XPointId>(xpoints_.size()); ++x)
-    if (holds[x] == static_cast<int>(stamped_.size())) {
-      set_current(x);
-      return true;
-    }
-  return false;
-}
-
-int RltXPointsS::mend_merge_after_loop_closing(const PlanarPose& world_T_robot) {
-  // MendMergeAfterLoopClosing (Rule 37, spec §5.5.5): every plane in view against the whole map
-  // (MatchPlanetoMap's all-matches form); a match other than the plane itself is a duplicate, and
-  // each group holding it that does not hold the plane gets a one-way link from the plane. The
-  // groups' plane lists are not touched: ComputeXPoint never compares through such a link.
-  int added = 0;
+void RltXPointsS::find_duplicate_groups(const PlanarPose& world_T_robot) {
+  // MatchPlanetoMap's all-matches form (spec §5.5.5): every plane in view against the whole map
+  // from `world_T_robot`; a match other than the plane itself is a duplicate of its wall, and
+  // each group (motion models aside) holding the duplicate is listed with the plane.
+  duplicate_groups_.clear();
   const std::vector<char> none(planes_.size(), 0);
   for (int i = 0; i < static_cast<int>(stamped_.size()); ++i) {
     const PlaneId p = assignment_[i];
@@ -653,9 +627,17 @@ int RltXPointsS::mend_merge_after_loop_closing(const PlanarPose& world_T_robot) 
     for (const PlaneMatch& m : matches_) {
       if (m.plane == p) continue;
       for (const RltXPointRef& ref : planes_[m.plane].refs())
-        if (!xpoints_[ref.xpoint].motion_model() && planes_[p].add_oneway(ref.xpoint)) ++added;
+        if (!xpoints_[ref.xpoint].motion_model()) duplicate_groups_.push_back({p, ref.xpoint});
     }
   }
+}
+
+int RltXPointsS::mend_merge_after_loop_closing() {
+  // MendMergeAfterLoopClosing (Rule 37, spec §5.5.5): each group holding a duplicate of a plane
+  // in view (find_duplicate_groups) that does not hold the plane gets a one-way link from it. The
+  // groups' plane lists are not touched: ComputeXPoint never compares through such a link.
+  int added = 0;
+  for (const DuplicateGroup& d : duplicate_groups_) added += planes_[d.plane].add_oneway(d.xpoint);
   return added;
 }
 

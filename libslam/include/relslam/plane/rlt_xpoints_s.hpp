@@ -149,9 +149,15 @@ class RltXPointsS : private RltXPointsState {
   void end_motion_model_on_the_map();
   void fill_chart(bool oneway_links);
   void set_current(XPointId x);
-  bool switch_to_group_holding_all();
-  bool switch_to_group_holding_all_through_duplicates(const PlanarPose& world_T_robot);
-  int mend_merge_after_loop_closing(const PlanarPose& world_T_robot);
+  // A plane in view and a group holding a duplicate of it (Rule 37).
+  struct DuplicateGroup {
+    PlaneId plane;
+    XPointId xpoint;
+  };
+  std::vector<DuplicateGroup> duplicate_groups_;  // filled by find_duplicate_groups()
+  bool switch_to_group_holding_all(std::span<const DuplicateGroup> through = {});
+  void find_duplicate_groups(const PlanarPose& world_T_robot);
+  int mend_merge_after_loop_closing();
   void check_for_motion_model();
   void create_motion_model(PlaneId plane);
   void compute_xpoints(RelativePlaneStep& result);
