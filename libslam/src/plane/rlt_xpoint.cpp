@@ -13,12 +13,12 @@
 namespace relslam::plane {
 namespace {
 
-// The stored observations of `plane` in iteration order (the circular array unrolled), only
-// those inside `within` when it is given (IntervalMode::Group).
-void stored_observations(const RltPlane& plane, const RltPlaneInterval* within, std::vector<PlaneObject>& out) {
+// The stored observations of `plane` inside `within`, in iteration order (IntervalMode::Group:
+// the group's common interval narrows every comparison).
+void stored_observations_in(const RltPlane& plane, const RltPlaneInterval& within, std::vector<PlaneObject>& out) {
   out.clear();
   for (int i = 0; i < plane.size(); ++i)
-    if (within == nullptr || within->in_interval(plane[i].iteration)) out.push_back(plane[i]);
+    if (within.in_interval(plane[i].iteration)) out.push_back(plane[i]);
 }
 
 // A plane's canonical size in the group (spec §5.7.2, A18): the largest length any of its chain
@@ -216,7 +216,7 @@ ObservationView RltXPoint::observations(const std::vector<RltPlane>& planes, std
                                        const RltPlaneInterval* within) {
   if (within == nullptr) return planes[chain_[k]].view();
   if (!observations_filled_[k]) {
-    stored_observations(planes[chain_[k]], within, scratch_observations_[k]);
+    stored_observations_in(planes[chain_[k]], *within, scratch_observations_[k]);
     observations_filled_[k] = 1;
   }
   return scratch_observations_[k];
