@@ -16,6 +16,17 @@ Rigid3 random_motion(test::SeededRandom& rng, bool planar = false) {
   return Rigid3::from(q, {rng.uniform(-50, 50), rng.uniform(-50, 50), planar ? 0.0 : rng.uniform(-50, 50)});
 }
 
+// `n` points uniform in the cube [−half, half]³ appended to `a`, their images under `truth` to
+// `b`, each image with Gaussian noise of σ `noise` per axis (none drawn when 0).
+void cube_pairs(test::SeededRandom& rng, const Rigid3& truth, int n, double half, double noise,
+                std::vector<Eigen::Vector3d>& a, std::vector<Eigen::Vector3d>& b) {
+  for (int i = 0; i < n; ++i) {
+    a.emplace_back(rng.uniform(-half, half), rng.uniform(-half, half), rng.uniform(-half, half));
+    b.push_back(truth * a.back());
+    if (noise > 0) b.back() += noise * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian());
+  }
+}
+
 void expect_same_motion(const Rigid3& a, const Rigid3& b, const std::string& what) {
   EXPECT_LT((a.rotation - b.rotation).norm(), 1e-12) << what;
   EXPECT_LT((a.translation - b.translation).norm(), 1e-10) << what;
@@ -68,10 +79,7 @@ TEST(RltICP, FitsNoisyPointsInTheLeastSquaresSense) {
   test::SeededRandom rng(103);
   const Rigid3 truth = random_motion(rng);
   std::vector<Eigen::Vector3d> a, b;
-  for (int i = 0; i < 2000; ++i) {
-    a.emplace_back(rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50));
-    b.push_back(truth * a.back() + 0.1 * Eigen::Vector3d(rng.gaussian(), rng.gaussian(), rng.gaussian()));
-  }
+  cube_pairs(rng, truth, 2000, 50, 0.1, a, b);
   const auto fit = rlt_icp(a, b);
   ASSERT_TRUE(fit);
   // Rotation error ~ sigma / (spread·sqrt(n)) ≈ 0.1 / (29·45) ≈ 1e-4 rad.
@@ -153,10 +161,7 @@ TEST(RegisterCentroids, PutsTheCentroidOnItsImageAndIgnoresASwap) {
   test::SeededRandom rng(17);
   const Rigid3 truth = random_motion(rng);
   std::vector<Eigen::Vector3d> a, b;
-  for (int i = 0; i < 4; ++i) {
-    a.emplace_back(rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10));
-    b.push_back(truth * a.back());
-  }
+  cube_pairs(rng, truth, 4, 10, 0, a, b);
   expect_same_motion(register_centroids(a, b, truth.rotation), truth, "matched");
   std::swap(b[0], b[1]);
   expect_same_motion(register_centroids(a, b, truth.rotation), truth, "two pairs swapped");

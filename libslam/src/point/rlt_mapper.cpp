@@ -359,19 +359,10 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   result.world_T_robot = pose_;
   pose_iteration_ = k;
   // The poses whose registration fixed the rotation measure the turn rate.
-  bool rotation_registered = false;
-  switch (result.pose_source) {
-    case PoseSource::Start:
-    case PoseSource::MappedPoints:
-    case PoseSource::TwoPoints:
-    case PoseSource::UnmappedPoints:
-    case PoseSource::TwoUnmappedPoints: rotation_registered = true; break;
-    default: break;
-  }
-  if (rotation_registered) turn_rate_.record(k, pose_.rotation);
-  rejected_turns_ = rejected && !rotation_registered ? rejected_turns_ + 1 : 0;
-  pose_from_map_ = result.pose_source == PoseSource::Start || result.pose_source == PoseSource::MappedPoints ||
-                   result.pose_source == PoseSource::TwoPoints;
+  const bool registered = rotation_registered(result.pose_source);
+  if (registered) turn_rate_.record(k, pose_.rotation);
+  rejected_turns_ = rejected && !registered ? rejected_turns_ + 1 : 0;
+  pose_from_map_ = from_map(result.pose_source);
   if (pose_from_map_) map_.record_map_pose(k, pose_);
 
   // Provisional positions of the unmapped points seen now (Deviation, see options).

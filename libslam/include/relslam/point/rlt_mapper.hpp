@@ -37,6 +37,15 @@ enum class PoseSource : unsigned char {
   Odometry,        // no registration possible: the previous pose moved by the frame's odometry
 };
 
+// The pose's position and rotation came from the map itself (the map frame or mapped points).
+constexpr bool from_map(PoseSource s) {
+  return s == PoseSource::Start || s == PoseSource::MappedPoints || s == PoseSource::TwoPoints;
+}
+// A registration fixed the pose's rotation (it measures the turn rate, TurnRate).
+constexpr bool rotation_registered(PoseSource s) {
+  return from_map(s) || s == PoseSource::UnmappedPoints || s == PoseSource::TwoUnmappedPoints;
+}
+
 // Wall time of the thesis's components (Figs 138–142), milliseconds.
 struct StepTimings {
   double init_ms = 0;     // local candidates and the local OVLPQuadTree
