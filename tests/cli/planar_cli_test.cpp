@@ -253,6 +253,27 @@ TEST(PlanarSimulate, WritesWallsPathAndObservations) {
   EXPECT_FALSE(std::filesystem::exists(dir / "sim/relative_plane"));
 }
 
+// planar.speed_scale runs the same path in more iterations: at 0.5 the hallway's 760 steps take
+// 1520 (both ends of each MOVE and TURN land where they did), and the last pose is the same.
+TEST(PlanarSimulate, SpeedScaleRunsTheSamePathInMoreIterations) {
+  test::ScratchDir dir;
+  const auto simulate = [&](const std::string& out, const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"simulate", test::source_path("scenarios/p-hallway.json").string(), "--out",
+                                     (dir / out).string(), "-q"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_relslam(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return test::read_lines(dir / out / "ground_truth_path.tum");
+  };
+  const std::vector<std::string> normal = simulate("normal", {});
+  const std::vector<std::string> slow = simulate("slow", {"--set", "planar.speed_scale=0.5"});
+  ASSERT_EQ(normal.size(), 761u);
+  ASSERT_EQ(slow.size(), 2 * (normal.size() - 1) + 1);
+  const auto pose = [](const std::string& line) { return line.substr(line.find(' ')); };  // without the time
+  EXPECT_EQ(pose(slow.back()), pose(normal.back()));
+  EXPECT_EQ(pose(slow[2 * 100]), pose(normal[100]));
+}
+
 // ---- Bad input: exit 2 and a message naming the file and the field --------------------------
 
 struct Failure {
@@ -340,7 +361,8 @@ TEST(PlanarBadInput, UnknownKeysAreRejectedWithASuggestion) {
 
 TEST(PlanarBadInput, BadSettingsNameTheirKey) {
   test::ScratchDir dir;
-  for (const char* setting : {"planar.frustum=huge", "planar.noise.model=pink", "relative_plane.min_common=0",
+  for (const char* setting : {"planar.frustum=huge", "planar.noise.model=pink", "planar.speed_scale=0",
+                              "planar.speed_scale=1e-9", "relative_plane.min_common=0",
                               "relative_plane.local_match.max_normal_angle_deg=120"}) {
     const auto r = run_relslam(run_args("p-hallway.json", dir / "run", {"--set", setting}));
     EXPECT_EQ(r.exit_code, 2) << setting;

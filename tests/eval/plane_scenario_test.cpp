@@ -43,6 +43,7 @@ struct IterationScore {
   PlaneMapError map;     // spec §7.2: e_ends against the majority wall, key point to key point
   double map_faced = 0;  // the sum of e_ends with a plane facing away scored against the wall turned round
   int rlt_planes = 0;    // RltPlanes so far
+  int on_map = 0;        // RltPlanes on the map
   bool motion_model = false;  // a motion model carried the pose (Rules 23–27)
 };
 
@@ -121,6 +122,7 @@ SimRun run_map(const sim::PlanarMap& map, std::uint64_t seed, const RelativePlan
       score.map_faced += faced_error(step.map[p].plane, walls.at(votes.wall_of(static_cast<int>(p))));
     }
     score.map = plane_map_error(mapped, votes, walls);
+    score.on_map = static_cast<int>(mapped.size());
     score.rlt_planes = static_cast<int>(slam.planes().size());
     out.iterations.push_back(score);
     out.motion_models_by[k] = static_cast<int>(slam.motion_models().size());
@@ -425,6 +427,56 @@ TEST(PlaneScenario, MapDSmallStoreKeepsItsPlanesOnlyWithTheSaveSystem) {
   EXPECT_GE(w.valid, 2450);
   EXPECT_LT(w.position, kNoiseFree);
   EXPECT_LT(w.heading, kNoiseFree);
+}
+
+// E19 at the thesis's store of 1200 observations (thesis 4.3.7.3, Figs 98–99): the thesis gives no
+// speed, and at ours (0.05 a step) no wall is seen long enough for the store to overwrite what it
+// shared with its neighbours before the loop brings them back together. At a quarter of it
+// (planar.speed_scale 0.25, the E19 scenario) the mechanism of the test above comes back at the
+// thesis's size: without Rules 35 and 36 planes vanish from the map (measured: the map's planes
+// drop from 29 to 28 at 3257 and to 23 at 5177; 31 of 36 walls at the end), with both all 36 stay
+// and the map never loses one.
+TEST(PlaneScenario, MapDSlowRobotThesisStoreLosesPlanesWithoutTheSaveSystemOnly) {
+  sim::PlanarMap map = noise_free(map_file("d_office_loop.json"));
+  map.sensor.frustum = sim::ViewingFrustum::large();
+  map.path.speed *= 0.25;
+  map.path.turn_rate_rad *= 0.25;
+  const auto run_with = [&](bool save) {
+    RelativePlaneOptions options = noise_free_key_points();
+    EXPECT_EQ(options.plane_capacity, 1200);
+    options.rules.save_snapshot = save;
+    options.rules.save_reserve = save;
+    return run_map(map, 1, options);
+  };
+  const auto walls_mapped = [](const SimRun& run) {
+    return std::ranges::count_if(run.mapped_of_wall, [](const auto& wall) { return wall.second >= 1; });
+  };
+  const auto planes_lost = [](const SimRun& run) {  // iterations whose map has fewer planes than the last
+    int lost = 0;
+    for (std::size_t k = 1; k < run.iterations.size(); ++k)
+      lost += run.iterations[k].on_map < run.iterations[k - 1].on_map;
+    return lost;
+  };
+  const SimRun unsaved = run_with(false);
+  EXPECT_LE(walls_mapped(unsaved), 33);
+  EXPECT_GE(planes_lost(unsaved), 2);
+  const SimRun saved = run_with(true);
+  EXPECT_EQ(walls_mapped(saved), 36);
+  EXPECT_EQ(planes_lost(saved), 0);
+  // The pose is exact but at 2 iterations, 1469 and 1470 (0.0005 and 0.0019), the first two after
+  // wall 7's near end leaves the view, cut by 0.005 and 0.017; at the normal speed the map's ends
+  // leave the view in steps of 0.05 and no pose is off (the test above). Not traced further.
+  int inexact = 0, valid = 0;
+  double worst = 0;
+  for (const IterationScore& s : saved.iterations) {
+    if (!s.pose_valid) continue;
+    ++valid;
+    inexact += s.pose.position > kNoiseFree;
+    worst = std::max(worst, s.pose.position);
+  }
+  EXPECT_GE(valid, 9900);  // measured 9977 of 10001
+  EXPECT_LE(inexact, 4);
+  EXPECT_LT(worst, 0.01);
 }
 
 // Rule 37 (CheckForLoopClosing and MendMergeAfterLoopClosing, spec §5.5.5) on Map E with noise,

@@ -52,6 +52,8 @@ sim::PlanarMap build_planar_map(const LoadedScenario& loaded, const fs::path& fi
   sim::PlanarMap map = read_planar_map(file);
 
   if (o.loops > 0) map.path.loops = o.loops;
+  map.path.speed *= o.speed_scale;
+  map.path.turn_rate_rad *= o.speed_scale;
   sim::PlaneSensorOptions& sensor = map.sensor;
   // The names were checked when the scenario was loaded (planar_options.cpp).
   if (o.frustum != kFromMap) {

@@ -56,6 +56,10 @@ struct PlanarOptions {
   std::string map = "a_four_planes";
   int loops = 0;       // times the path's steps run; 0: as the map says
   int iterations = 0;  // stop after this many iterations; 0: the whole path
+  // The path's speed and turn rate times this [C 1]: below 1 the robot goes the same way in more
+  // iterations. The thesis gives no speed (spec §9 row 1; ours is [R] 0.05 a step), and what a store of
+  // plane_capacity observations holds depends on it: E19 runs at 0.25.
+  double speed_scale = 1.0;
   std::string frustum = std::string(kFromMap);        // map, small or large (spec §3.3)
   std::string frustum_shape = std::string(kFromMap);  // map, planar (thesis) or radial (Fig 89's fix)
   // map, frustum, full_size, always_visible (Map A) or scripted (Map B).
@@ -77,6 +81,9 @@ void describe(OptionsOf<PlanarOptions> auto& o, auto& f) {
           holds(!o.map.empty(), "names no map"));
   f.field("loops", o.loops, "times the map's path runs; 0: as the map says", at_least(0));
   f.field("iterations", o.iterations, "stop after this many iterations; 0: the whole path", at_least(0));
+  f.field("speed_scale", o.speed_scale,
+          "path speed and turn rate times this: below 1 the same path in more iterations (E19: 0.25)",
+          at_least(0.01), at_most(100.0));
   f.field("frustum", o.frustum, "viewing frustum: map, small or large (spec 3.3)",
           holds(is_frustum_name(o.frustum), "expected map, small or large"));
   f.field("frustum_shape", o.frustum_shape, "frustum shape: map, planar (thesis trapezoid) or radial (Fig 89)",
