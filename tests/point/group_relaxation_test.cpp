@@ -29,10 +29,6 @@ struct TwoGroups {
   }
 };
 
-Eigen::Vector3d tie_gap(const RelaxationProblem& problem, const GroupTie& tie) {
-  return problem.world_T_group[tie.a] * tie.p_a - problem.world_T_group[tie.b] * tie.p_b;
-}
-
 TEST(BuildRelaxation, FirstObservationsHoldTheMapFrameAndTheRootIsFree) {
   TwoGroups map;
   ASSERT_EQ(map.feed.map.groups.size(), 2u);
@@ -53,7 +49,7 @@ TEST(BuildRelaxation, FirstObservationsHoldTheMapFrameAndTheRootIsFree) {
     } else {
       ++shared;
     }
-    EXPECT_LT(tie_gap(r.problem, tie).norm(), kExact) << "noise-free ties hold at the current registrations";
+    EXPECT_LT(tie_gap(r.problem, tie), kExact) << "noise-free ties hold at the current registrations";
   }
   EXPECT_EQ(gauge, 12);
   EXPECT_EQ(shared, 12);
@@ -69,6 +65,32 @@ TEST(ApplyRelaxation, MovesWhatFreeGroupsOwnAndNothingElse) {
   for (const PointId id : map.early)
     EXPECT_LT((map.feed.map.points[id].global - motion * map.feed.truth(id, 0)).norm(), kExact) << id;
   EXPECT_LT((map.feed.map.points[map.late].global - map.feed.truth(map.late, 0)).norm(), kExact);
+}
+
+// relaxation_trigger_gap's question: which points have a tie whose gap, weighted as the solver
+// weighs it (one observation's worth), is over a bound. Group 1 moved by 0.5 opens the twelve
+// ties it shares with the root by 0.5 each; the first frame's ties stay closed.
+TEST(PointsOver, NamesThePointsOfTheOpenTiesWeightedAsTheSolverWeighsThem) {
+  TwoGroups map;
+  MapRelaxation r = build_relaxation(map.feed.map, 0.3);
+  EXPECT_TRUE(points_over(r, 1e-6).empty()) << "noise-free ties are closed";
+  r.problem.world_T_group[2].translation += Eigen::Vector3d(0.5, 0, 0);
+  double weight = 0;
+  for (const GroupTie& tie : r.problem.ties) {
+    if (tie.a == 0) {
+      EXPECT_LT(tie_gap(r.problem, tie), kExact);
+      continue;
+    }
+    EXPECT_NEAR(tie_gap(r.problem, tie), 0.5, kExact);
+    weight = tie.weight;
+  }
+  ASSERT_GT(weight, 1.0) << "two averages: a tie weighs more than one observation each";
+  const std::vector<PointId> open = points_over(r, 0.5 * weight - 1e-6);
+  std::vector<PointId> early = map.early;
+  std::ranges::sort(early);
+  EXPECT_EQ(open, early);
+  EXPECT_TRUE(points_over(r, 0.5 * weight + 1e-6).empty()) << "the bound is on the weighted gap";
+  EXPECT_EQ(points_over(r, 0.4), early) << "below 0.5 either way";
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "relslam/point/rlt_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace relslam::point {
@@ -50,6 +51,7 @@ MapRelaxation build_relaxation(const RltMap& map, double loss_scale) {
       const RltGroup& other = map.groups[r.group];
       out.problem.ties.push_back({index[hub->group], p_hub, index[r.group], other.relative(r.member),
                                   tie_weight(hub_group.iterations_used(), other.iterations_used())});
+      out.tie_points.push_back(p.id);
     }
     // The gauge: a first-iteration observation is one sample of the point in the map frame. The
     // thesis registers the root group to its own members' first observations only; here every
@@ -57,12 +59,29 @@ MapRelaxation build_relaxation(const RltMap& map, double loss_scale) {
     if (p.on_map() && p.first_observation.iteration == map.first_iteration) {
       out.problem.ties.push_back(
           {0, p.first_observation.p, index[hub->group], p_hub, tie_weight(1, hub_group.iterations_used())});
+      out.tie_points.push_back(p.id);
       ++gauge_ties;
     }
   }
   if (gauge_ties >= kGaugeTiesForFreeRoot)
     for (std::size_t i = 1; i < out.groups.size(); ++i)
       if (map.groups[out.groups[i]].registration() == Registration::FirstObservations) out.problem.fixed[i] = false;
+  return out;
+}
+
+double tie_gap(const RelaxationProblem& problem, const GroupTie& tie) {
+  return (problem.world_T_group[tie.a] * tie.p_a - problem.world_T_group[tie.b] * tie.p_b).norm();
+}
+
+std::vector<PointId> points_over(const MapRelaxation& relaxation, double gap) {
+  std::vector<PointId> out;
+  for (std::size_t t = 0; t < relaxation.problem.ties.size(); ++t) {
+    const GroupTie& tie = relaxation.problem.ties[t];
+    if (tie.weight * tie_gap(relaxation.problem, tie) > gap) out.push_back(relaxation.tie_points[t]);
+  }
+  std::ranges::sort(out);
+  const auto [first, last] = std::ranges::unique(out);
+  out.erase(first, last);
   return out;
 }
 

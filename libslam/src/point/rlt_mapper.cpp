@@ -219,10 +219,19 @@ void RltMapper::compute_groups(int k) {
 
 void RltMapper::relax(StepResult& result) {
   MapRelaxation relaxation = build_relaxation(map_, options_.relaxation_loss_scale);
+  const double trigger = options_.relaxation_trigger_gap;
+  // Skipped when every point with a tie over the trigger had one after the previous solve: the
+  // groups agree, or disagree only where the loss held a tie off then (a wrong match).
+  if (trigger > 0 && std::ranges::includes(held_off_, points_over(relaxation, trigger))) {
+    result.relaxation_skipped = true;
+    return;
+  }
   result.relaxed = true;
   result.relaxation = relaxer_(relaxation.problem);
   // The current pose follows in update_pose, registered to the moved map positions.
-  if (result.relaxation.solved) apply_relaxation(map_, relaxation);
+  if (!result.relaxation.solved) return;
+  apply_relaxation(map_, relaxation);
+  if (trigger > 0) held_off_ = points_over(relaxation, trigger);
 }
 
 void RltMapper::check_map_frame(int k) {

@@ -49,7 +49,15 @@ using GroupRelaxer = std::function<RelaxationReport(RelaxationProblem&)>;
 struct MapRelaxation {
   RelaxationProblem problem;
   std::vector<GroupId> groups;  // problem index -> map group id; kNone: the first frame's body
+  std::vector<PointId> tie_points;  // one per tie: the point it ties
 };
+
+// A tie's gap at the problem's transforms: how far apart the two groups put the point, units.
+double tie_gap(const RelaxationProblem& problem, const GroupTie& tie);
+
+// The points with a tie whose weighted gap (tie_gap times the tie's weight: the gap of one
+// observation each, whatever the groups' averaging) is over `gap`, sorted.
+std::vector<PointId> points_over(const MapRelaxation& relaxation, double gap);
 
 // The problem for `map`: one body per alive, registrable group at its current registration,
 // one tie per extra group a static point belongs to (a star around its owner), and the gauge:

@@ -312,6 +312,13 @@ struct PointSlamOptions {
   // most; beyond the scale a tie's pull stops growing (at most scale/2), so one wrong match
   // cannot drag the map far.
   double relaxation_loss_scale = 0.3;
+  // A scheduled solve runs only where the groups disagree [C 0: every scheduled solve runs]: some
+  // point has a tie whose weighted gap is over this and had none after the previous solve. The
+  // weighted gap is how far apart the tie's two groups put the point times the tie's weight, so
+  // it is the gap of one observation each whatever the averaging (about sigma * sqrt(3) for a
+  // correct tie); a wrong match the loss holds off triggers only once. Measured on S-40 cut to
+  // five loops: 1 skips 24 of 36 solves, the final map error unchanged (0.064 against 0.063).
+  double relaxation_trigger_gap = 0;
 
   // Observations kept per RltPoint (ring buffer) and iterations kept by RltPointCharting;
   // both must cover the final level's look_back + look_ahead, and level 3's visible runs
@@ -438,6 +445,10 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
           above(o.match_look_back));
   f.field("relaxation_loss_scale", o.relaxation_loss_scale, "Cauchy loss scale of the relaxation, units",
           above(0.0));
+  f.field("relaxation_trigger_gap", o.relaxation_trigger_gap,
+          "a scheduled relaxation runs only if a point has a tie whose weighted gap (one observation's worth) is "
+          "over this, and had none after the last solve, units (0: always)",
+          at_least(0.0));
   f.choice("local_index", o.local_index, "local matching index (thesis 6.6.2)",
            {spatial::LocalIndexKind::Quadtree, spatial::LocalIndexKind::Octree, spatial::LocalIndexKind::KdTree});
   f.field("octree_cell_size", o.octree_cell_size, "octree cell, units", at_least(o.local_bound));

@@ -73,6 +73,7 @@ struct StepResult {
   int merges = 0;           // RltPoints merged into older ones this iteration
   int binning_comparisons = 0;
   bool relaxed = false;   // a global relaxation ran this iteration (beyond the thesis)
+  bool relaxation_skipped = false;  // one was due but no tie's gap triggered it (relaxation_trigger_gap)
   RelaxationReport relaxation;  // its outcome, when relaxed
   StepTimings timings;
 };
@@ -135,6 +136,7 @@ class RltMapper {
   GroupRelaxer relaxer_;
   int relax_at_ = kNone;  // iteration of the solve a loop closure scheduled
   int next_relax_ = kNone;  // the earliest iteration the next loop-closure solve may run
+  std::vector<PointId> held_off_;  // points with a tie over relaxation_trigger_gap after the last solve, sorted
 
   // Per-iteration scratch.
   std::vector<PointId> scratch_ids_;
