@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 #include <ceres/rotation.h>
+#include <glog/logging.h>
 
 #include <array>
 #include <memory>
@@ -36,9 +37,23 @@ constexpr double kTolerance = 1e-14;
 constexpr double kFunctionTolerance = 1e-6;
 constexpr int kMaxIterations = 100;
 
+// Ceres reports through glog, which nothing here initialises: a Levenberg-Marquardt step whose
+// linear solve fails (a group tied by too few points, as on Victoria Park's sparse stretches)
+// printed "WARNING: Logging before InitGoogleLogging()" and the CHOLMOD message in the middle of
+// a run, though the solver just retries with more damping. The outcome is in the report
+// (solved, iterations); only glog's errors still reach stderr.
+void quiet_solver_warnings() {
+  static const bool once = [] {
+    FLAGS_minloglevel = google::GLOG_ERROR;
+    return true;
+  }();
+  (void)once;
+}
+
 }  // namespace
 
 point::RelaxationReport solve_relaxation(point::RelaxationProblem& problem) {
+  quiet_solver_warnings();
   point::RelaxationReport report;
   const std::size_t n = problem.world_T_group.size();
   std::vector<std::array<double, 4>> quaternions(n);
