@@ -36,21 +36,26 @@ TEST(GlobalRelaxation, OffNeedsNoRelaxerOthersDo) {
   EXPECT_THROW(RltMapper(relaxing(GlobalRelaxation::Periodic)), std::logic_error);
 }
 
-// Noise-free data: every tie already holds, so a solve must leave the map where the thesis's
-// algorithm puts it (exact, as the off run is), in both modes. 2000 iterations: past the
-// figure eight's crossing, where global matching re-finds the first lobe's points.
-TEST(GlobalRelaxation, NoiseFreeRunStaysExactWithRelaxationOn) {
+// 2000 noise-free iterations: past the figure eight's crossing, where global matching re-finds
+// the first lobe's points; matching bounds tight as the data (noise-free).
+sim::SimOptions noise_free_crossing() {
   sim::SimOptions world = one_loop(0.0);
   world.iterations = 2000;
-  PointSlamOptions off;
-  off.compensated_bound = 1e-3;
-  off.global_bound = 1e-3;
-  const RunReport reference = run(world, 1, off);
+  return world;
+}
+PointSlamOptions noise_free(PointSlamOptions o) {
+  o.compensated_bound = 1e-3;
+  o.global_bound = 1e-3;
+  return o;
+}
+
+// Noise-free data: every tie already holds, so a solve must leave the map where the thesis's
+// algorithm puts it (exact, as the off run is), in both modes.
+TEST(GlobalRelaxation, NoiseFreeRunStaysExactWithRelaxationOn) {
+  const sim::SimOptions world = noise_free_crossing();
+  const RunReport reference = run(world, 1, noise_free({}));
   for (const GlobalRelaxation mode : {GlobalRelaxation::OnLoopClosure, GlobalRelaxation::Periodic}) {
-    PointSlamOptions on = relaxing(mode);
-    on.compensated_bound = off.compensated_bound;
-    on.global_bound = off.global_bound;
-    const RunReport r = run(world, 1, on);
+    const RunReport r = run(world, 1, noise_free(relaxing(mode)));
     EXPECT_GT(solves(r), 0) << to_string(mode);
     EXPECT_LT(r.final_mean_landmark_error, 1e-6) << to_string(mode);
     ASSERT_EQ(r.final_map.size(), reference.final_map.size()) << to_string(mode);
@@ -62,19 +67,13 @@ TEST(GlobalRelaxation, NoiseFreeRunStaysExactWithRelaxationOn) {
 // relaxation_trigger_gap: where every tie holds nothing triggers a solve, so a noise-free run
 // with a trigger skips every scheduled one and is the off run bit for bit.
 TEST(GlobalRelaxation, NoiseFreeRunWithATriggerSkipsEverySolve) {
-  sim::SimOptions world = one_loop(0.0);
-  world.iterations = 2000;
-  PointSlamOptions off;
-  off.compensated_bound = 1e-3;
-  off.global_bound = 1e-3;
-  PointSlamOptions on = relaxing(GlobalRelaxation::OnLoopClosure);
-  on.compensated_bound = off.compensated_bound;
-  on.global_bound = off.global_bound;
+  const sim::SimOptions world = noise_free_crossing();
+  PointSlamOptions on = noise_free(relaxing(GlobalRelaxation::OnLoopClosure));
   on.relaxation_trigger_gap = 1e-3;
   const RunReport r = run(world, 1, on);
   EXPECT_EQ(solves(r), 0);
   EXPECT_GT(skipped(r), 0);
-  EXPECT_EQ(r.final_map, run(world, 1, off).final_map);
+  EXPECT_EQ(r.final_map, run(world, 1, noise_free({})).final_map);
 }
 
 // On one noisy loop (sigma 0.1) a trigger of 1 (about six sigmas of a correct tie's weighted gap)

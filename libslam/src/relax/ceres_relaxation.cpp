@@ -38,9 +38,9 @@ constexpr double kFunctionTolerance = 1e-6;
 constexpr int kMaxIterations = 100;
 
 // Ceres reports through glog, which nothing here initialises: a Levenberg-Marquardt step whose
-// linear solve fails (a group tied by too few points, as on Victoria Park's sparse stretches)
-// printed "WARNING: Logging before InitGoogleLogging()" and the CHOLMOD message in the middle of
-// a run, though the solver just retries with more damping. The outcome is in the report
+// linear solve fails (CHOLMOD: not positive definite; met on Victoria Park's whole log with the
+// adaptive preset) printed "WARNING: Logging before InitGoogleLogging()" and the message in the
+// middle of a run, though the solver just retries with more damping. The outcome is in the report
 // (solved, iterations); only glog's errors still reach stderr.
 void quiet_solver_warnings() {
   static const bool once = [] {

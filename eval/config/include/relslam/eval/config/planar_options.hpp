@@ -57,8 +57,8 @@ struct PlanarOptions {
   int loops = 0;       // times the path's steps run; 0: as the map says
   int iterations = 0;  // stop after this many iterations; 0: the whole path
   // The path's speed and turn rate times this [C 1]: below 1 the robot goes the same way in more
-  // iterations. The thesis gives no speed (spec §9 row 1; ours is [R] 0.05 a step), and what a store of
-  // plane_capacity observations holds depends on it: E19 runs at 0.25.
+  // iterations. The thesis gives no speed (spec §9 row 1; ours is [R] 0.05 a step), and what a
+  // store of plane_capacity observations holds depends on it: E19 runs at 0.25.
   double speed_scale = 1.0;
   std::string frustum = std::string(kFromMap);        // map, small or large (spec §3.3)
   std::string frustum_shape = std::string(kFromMap);  // map, planar (thesis) or radial (Fig 89's fix)
