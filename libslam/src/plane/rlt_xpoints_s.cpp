@@ -325,9 +325,9 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
       // CheckForLoopClosing (spec §5.5.5) counts a group as holding a plane in view through the
       // plane's duplicates too: a wall seen again after the motion model as a new plane (Fig
       // 101's plane 8 ≡ 2) still lets the robot return to the group of the old one.
-      find_duplicate_groups(world_T_robot);
-      if (!returned) returned = switch_to_group_holding_all(duplicate_groups_);
-      if (returned) result.oneway_links += mend_merge_after_loop_closing();
+      const std::vector<DuplicateGroup> duplicates = find_duplicate_groups(world_T_robot);
+      if (!returned) returned = switch_to_group_holding_all(duplicates);
+      if (returned) result.oneway_links += mend_merge_after_loop_closing(duplicates);
     }
   }
   // Spec §5.5.1 step A, with the bootstrap of A23: the first group waits for two planes.
@@ -613,11 +613,11 @@ bool RltXPointsS::switch_to_group_holding_all(std::span<const DuplicateGroup> th
   return false;
 }
 
-void RltXPointsS::find_duplicate_groups(const PlanarPose& world_T_robot) {
+std::vector<RltXPointsS::DuplicateGroup> RltXPointsS::find_duplicate_groups(const PlanarPose& world_T_robot) {
   // MatchPlanetoMap's all-matches form (spec §5.5.5): every plane in view against the whole map
   // from `world_T_robot`; a match other than the plane itself is a duplicate of its wall, and
   // each group (motion models aside) holding the duplicate is listed with the plane.
-  duplicate_groups_.clear();
+  std::vector<DuplicateGroup> out;
   const std::vector<char> none(planes_.size(), 0);
   for (int i = 0; i < static_cast<int>(stamped_.size()); ++i) {
     const PlaneId p = assignment_[i];
@@ -627,17 +627,18 @@ void RltXPointsS::find_duplicate_groups(const PlanarPose& world_T_robot) {
     for (const PlaneMatch& m : matches_) {
       if (m.plane == p) continue;
       for (const RltXPointRef& ref : planes_[m.plane].refs())
-        if (!xpoints_[ref.xpoint].motion_model()) duplicate_groups_.push_back({p, ref.xpoint});
+        if (!xpoints_[ref.xpoint].motion_model()) out.push_back({p, ref.xpoint});
     }
   }
+  return out;
 }
 
-int RltXPointsS::mend_merge_after_loop_closing() {
+int RltXPointsS::mend_merge_after_loop_closing(std::span<const DuplicateGroup> duplicates) {
   // MendMergeAfterLoopClosing (Rule 37, spec §5.5.5): each group holding a duplicate of a plane
   // in view (find_duplicate_groups) that does not hold the plane gets a one-way link from it. The
   // groups' plane lists are not touched: ComputeXPoint never compares through such a link.
   int added = 0;
-  for (const DuplicateGroup& d : duplicate_groups_) added += planes_[d.plane].add_oneway(d.xpoint);
+  for (const DuplicateGroup& d : duplicates) added += planes_[d.plane].add_oneway(d.xpoint);
   return added;
 }
 

@@ -154,10 +154,9 @@ class RltXPointsS : private RltXPointsState {
     PlaneId plane;
     XPointId xpoint;
   };
-  std::vector<DuplicateGroup> duplicate_groups_;  // filled by find_duplicate_groups()
   bool switch_to_group_holding_all(std::span<const DuplicateGroup> through = {});
-  void find_duplicate_groups(const PlanarPose& world_T_robot);
-  int mend_merge_after_loop_closing();
+  std::vector<DuplicateGroup> find_duplicate_groups(const PlanarPose& world_T_robot);
+  int mend_merge_after_loop_closing(std::span<const DuplicateGroup> duplicates);
   void check_for_motion_model();
   void create_motion_model(PlaneId plane);
   void compute_xpoints(RelativePlaneStep& result);
