@@ -99,11 +99,28 @@ TEST(VictoriaParkExperiment, TheWholeLogRunsEndToEndWhenBridgedByDeadReckoning) 
   EXPECT_EQ(r.scans_below_three, 381);  // scans the thesis's algorithm cannot register
   EXPECT_EQ(r.experiment.rows[0].status.text(), "ok");
   EXPECT_EQ(r.experiment.rows[0].iterations, 7249);
-  EXPECT_GT(r.experiment.rows[0].landmarks_on_map, 500);
+  // Hundreds of trees mapped over the whole park (measured 454; over 500 before dead reckoning
+  // checked the registrations, issue 19).
+  EXPECT_GT(r.experiment.rows[0].landmarks_on_map, 300);
   const test::CsvTable rp = test::read_csv(dir / "relative_point/iterations.csv");
   int bridged = 0;
   for (std::size_t i = 0; i < rp.rows.size(); ++i) bridged += rp.text(i, "pose_source") == "odometry";
   EXPECT_GT(bridged, 0);
+}
+
+// Dead reckoning checks and stands in for weak registrations (issue 19: odometry_max_turn_deg,
+// odometry_max_shift): bridged, with the adaptive preset and no relaxation, the whole log follows
+// GPS within the issue's goal of 5 m (measured 2.0 m; the EKF with odometry 1.5 m; before, 139
+// m). The run is sensitive to the gate: other settings of the two gave 2 to 58 m (README).
+TEST(VictoriaParkExperiment, TheWholeLogBridgedAndGatedByDeadReckoningFollowsGpsWithinFiveMetres) {
+  SKIP_WITHOUT_DATA();
+  test::ScratchDir dir;
+  const VictoriaParkResult r = run_victoria_park(
+      scenario("all", {"algorithms=relative_point", "relative_point.use_odometry=true", "relative_point.preset=adaptive"}),
+      *data(), dir.path(), false);
+  ASSERT_EQ(r.gps.size(), 1u);
+  EXPECT_GT(r.gps[0].alignment.pairs, 4000);
+  EXPECT_LT(r.gps[0].alignment.rmse, 5.0);
 }
 
 // The global relaxation on the whole log (issue 19): with the adaptive preset and no bridges a

@@ -166,6 +166,60 @@ TEST(RltMapper, EmptyAndSparseFramesDoNotDisturbTheRun) {
   EXPECT_LT((mapper.pose().translation - sim.path().world_T_robot(299).translation).norm(), 0.5);
 }
 
+// With use_odometry (Victoria Park's --bridge, issue 19), a registration that lands far from
+// where the frame's dead reckoning puts the robot is a mismatch: at iteration 200 every
+// observation is forced onto the point of another landmark, so each registration (to mapped or
+// provisional points) is garbage; the pose is then the dead-reckoned one, within
+// odometry_max_shift of the truth. Without odometry the same frame throws the pose off by more
+// than twice that, so the planted mismatch is one the gate has to catch.
+TEST(RltMapper, DeadReckoningRejectsARegistrationFarFromItAndCarriesThePose) {
+  sim::SimOptions o = one_loop(0.05);
+  o.iterations = 240;
+  const sim::Simulator simulator(o, 1);
+  constexpr int kPlanted = 200;
+  auto pose_error_at_planted = [&](bool use_odometry, PoseSource& source) {
+    PointSlamOptions options;
+    options.use_odometry = use_odometry;
+    RltMapper mapper(options);
+    std::map<int, PointId> point_of;  // true landmark -> the RltPoint its observations went to
+    Rigid3 previous_truth;
+    for (int k = 0; k <= kPlanted; ++k) {
+      sim::SimFrame f = simulator.frame(k);
+      if (k > 0) f.observation.odometry = previous_truth.inverse() * f.truth.world_T_robot;  // exact
+      previous_truth = f.truth.world_T_robot;
+      std::vector<std::pair<int, PointId>> forced;
+      if (k == kPlanted) {
+        // The observations of landmarks with a point of their own, each given the next one's
+        // point: a permutation of those points, so no point gets two observations.
+        std::vector<std::pair<int, PointId>> own;
+        std::set<PointId> taken;
+        for (std::size_t i = 0; i < f.truth.landmark_ids.size(); ++i) {
+          const auto known = point_of.find(f.truth.landmark_ids[i]);
+          if (known != point_of.end() && taken.insert(known->second).second)
+            own.emplace_back(static_cast<int>(i), known->second);
+        }
+        for (std::size_t j = 0; j < own.size(); ++j) forced.emplace_back(own[j].first, own[(j + 1) % own.size()].second);
+        EXPECT_GT(forced.size(), 20u);
+      }
+      const StepResult r = mapper.step(f.observation, forced);
+      for (std::size_t i = 0; i < r.assignment.size(); ++i) point_of[f.truth.landmark_ids[i]] = r.assignment[i];
+      if (k == kPlanted) {
+        source = r.pose_source;
+        return (r.world_T_robot.translation - f.truth.world_T_robot.translation).norm();
+      }
+    }
+    return -1.0;
+  };
+  const double max_shift = PointSlamOptions{}.odometry_max_shift;
+  PoseSource with_source{}, without_source{};
+  const double with = pose_error_at_planted(true, with_source);
+  const double without = pose_error_at_planted(false, without_source);
+  EXPECT_EQ(with_source, PoseSource::Odometry);
+  EXPECT_LT(with, max_shift);
+  EXPECT_EQ(without_source, PoseSource::MappedPoints);
+  EXPECT_GT(without, 2 * max_shift);
+}
+
 TEST(RltMapper, IterationsMustIncrease) {
   RltMapper mapper;
   mapper.step({5, {}, {}});

@@ -272,21 +272,31 @@ void RltMapper::move_map_frame(int k) {
   }
 }
 
-bool RltMapper::implausible_turn(const Eigen::Matrix3d& registered, const Eigen::Matrix3d& predicted) const {
-  // After kMaxRejectedTurns rejections in a row the prediction is taken for stale (a long
-  // stretch of predicted rotations drifted past the bound) and the registration stands.
-  if (options_.preset != Preset::Adaptive || !(options_.max_turn_deg > 0) || rejected_turns_ >= kMaxRejectedTurns)
-    return false;
-  const double turned = Eigen::AngleAxisd(predicted.transpose() * registered).angle();
-  return turned > options_.max_turn_deg * std::numbers::pi / 180.0;
+bool RltMapper::implausible(const Rigid3& registered, const Eigen::Matrix3d& predicted,
+                            const std::optional<Rigid3>& dead_reckoned) const {
+  // A scan's dead reckoning is never stale: a registration far from its position is rejected.
+  if (dead_reckoned && (registered.translation - dead_reckoned->translation).norm() > options_.odometry_max_shift)
+    return true;
+  // After kMaxRejectedTurns rejections in a row the predicted rotation is taken for stale (a
+  // long stretch of predicted rotations drifted past the bound) and the registration stands.
+  if (rejected_turns_ >= kMaxRejectedTurns) return false;
+  constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+  const double turned = Eigen::AngleAxisd(predicted.transpose() * registered.rotation).angle();
+  if (dead_reckoned) return turned > options_.odometry_max_turn_deg * kRadPerDeg;
+  return options_.preset == Preset::Adaptive && options_.max_turn_deg > 0 &&
+         turned > options_.max_turn_deg * kRadPerDeg;
 }
 
 void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   const int k = frame.iteration;
   const std::vector<PointId>& seen = map_.charting.at(k);
-  // The rotation the robot has now if it turned on at the measured rate (adaptive; otherwise
-  // the latest rotation).
-  const Eigen::Matrix3d predicted = pose_.rotation * turn_rate_.turn(pose_iteration_, k);
+  // With use_odometry, where this frame's dead reckoning puts the robot (the latest pose moved by it).
+  std::optional<Rigid3> dead_reckoned;
+  if (options_.use_odometry && frame.odometry && pose_iteration_ == k - 1) dead_reckoned = pose_ * *frame.odometry;
+  // The rotation the robot has now: dead-reckoned, or if it turned on at the measured rate
+  // (adaptive; otherwise the latest rotation).
+  const Eigen::Matrix3d predicted =
+      dead_reckoned ? dead_reckoned->rotation : Eigen::Matrix3d(pose_.rotation * turn_rate_.turn(pose_iteration_, k));
   bool rejected = false;
   auto register_to = [&](bool provisional) -> std::optional<Rigid3> {
     std::vector<Eigen::Vector3d>&robot = robot_scratch_, &world = world_scratch_;
@@ -304,9 +314,10 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
       }
     }
     auto registered = rlt_icp(robot, world);
-    // Deviation (adaptive, issue 16): a registration that turns the robot further from the
-    // predicted rotation than max_turn_deg is a mismatch, not a motion (implausible_turn).
-    if (registered && implausible_turn(registered->rotation, predicted)) {
+    // Deviation (adaptive, issue 16; use_odometry, issue 19): a registration that turns the robot
+    // further from the predicted rotation than max_turn_deg, or strays from the dead-reckoned
+    // pose, is a mismatch, not a motion (implausible).
+    if (registered && implausible(*registered, predicted, dead_reckoned)) {
       registered.reset();
       rejected = true;
     }
@@ -336,13 +347,18 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   } else if (mapped_pose) {
     pose_ = *mapped_pose;
     result.pose_source = PoseSource::MappedPoints;
-  } else if (mapped_pairs == 2 &&
+  } else if (!dead_reckoned && mapped_pairs == 2 &&
              (pose = map_.pose_from_two_points(mapped_robot[0], mapped_robot[1], mapped_world[0], mapped_world[1]))) {
     pose_ = *pose;
     result.pose_source = PoseSource::TwoPoints;
   } else if (options_.pose_from_unmapped && (pose = register_to(true))) {
     pose_ = average_provisional_on(options_) ? weighed(*pose) : *pose;
     result.pose_source = PoseSource::UnmappedPoints;
+  } else if (dead_reckoned) {
+    // Fewer than three points to register (use_odometry): dead reckoning rather than a pose from
+    // one or two points.
+    pose_ = *dead_reckoned;
+    result.pose_source = PoseSource::Odometry;
   } else if (average_provisional_on(options_) && robot_scratch_.size() == 2 &&
              (pose = register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1],
                                          pose_.rotation, pose_.rotation.col(1), map_.max_line_sine()))) {
@@ -359,9 +375,6 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
     // swapped pair leaves it where it was).
     pose_ = register_centroids(robot_scratch_, world_scratch_, predicted);
     result.pose_source = PoseSource::OneUnmappedPoint;
-  } else if (options_.use_odometry && frame.odometry) {
-    pose_ = pose_ * *frame.odometry;
-    result.pose_source = PoseSource::Odometry;
   } else {
     result.pose_source = PoseSource::Held;
   }

@@ -34,7 +34,8 @@ enum class PoseSource : unsigned char {
   OneUnmappedPoint,   // one provisional point visible (or two on a steep line), no mapped one: as OnePoint, the rotation of the
                       // latest pose (adaptive average_provisional)
   Held,            // no registration possible: the previous pose is kept
-  Odometry,        // no registration possible: the previous pose moved by the frame's odometry
+  Odometry,        // use_odometry, no registration to three or more points: the previous pose moved by
+                   // the frame's odometry
 };
 
 // The pose's position and rotation came from the map itself (the map frame or mapped points).
@@ -117,9 +118,11 @@ class RltMapper {
   void check_map_frame(int k);
   void move_map_frame(int k);
   void update_pose(const ObservationFrame& frame, StepResult& result);
-  // A registration's rotation differs from the predicted one by more than max_turn_deg
-  // (adaptive preset; never under the thesis preset).
-  bool implausible_turn(const Eigen::Matrix3d& registered, const Eigen::Matrix3d& predicted) const;
+  // A registration strays from the dead-reckoned pose by more than odometry_max_turn_deg or
+  // odometry_max_shift (use_odometry), or else its rotation differs from the predicted one by
+  // more than max_turn_deg (adaptive preset only).
+  bool implausible(const Rigid3& registered, const Eigen::Matrix3d& predicted,
+                   const std::optional<Rigid3>& dead_reckoned) const;
   void relax(StepResult& result);
 
   PointSlamOptions options_;
