@@ -163,6 +163,8 @@ if [ -f "$vp_data/measurements.dat" ]; then
   step vp-4220           relslam victoria-park --data "$vp_data" --window 4220:4634 --out "$out/vp-4220" --force -q
   step vp-all-relative   relslam victoria-park --data "$vp_data" --window all --bridge --set algorithms=relative_point \
                            --out "$out/vp-all" --force -q
+  step vp-bridged        relslam victoria-park scenarios/victoria-park-bridged.json --data "$vp_data" \
+                           --out "$out/vp-bridged" --force -q
   if [ -x "$bench_vp" ]; then
     step vp-timing       env RELSLAM_VICTORIA_PARK="$vp_data" "$bench_vp" --benchmark_format=json --benchmark_out="$out/vp-timing.json"
   fi

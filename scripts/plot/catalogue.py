@@ -156,6 +156,10 @@ CATALOGUE = {
     "vp-timing": ("Victoria Park time per scan with 1, 2 and 3 grouping levels (thesis 6.8 text, no figure)",
                   "0.296 ms, 0.40 ms and 0.57 ms per scan (2.15 s, 2.9 s and 4.13 s for 7249 scans) on an "
                   "AMD Athlon 64 3400+."),
+    "vp-bridged": ("Victoria Park's whole log, the Relative Point algorithm bridged by dead reckoning (beyond the "
+                   "thesis, issue 19; not a thesis figure)",
+                   "The thesis ran two windows only: 381 scans have fewer than three trees. Here dead reckoning "
+                   "bridges them and checks every registration (scenarios/victoria-park-bridged.json)."),
     # issue 14 Chapter 5: EM plane extraction (thesis 3.5, 5.2) and the companion paper's demo.
     46: ("The simulated points and lines seen in the bottom left. The bottom right has the results of the EM "
          "algorithm",

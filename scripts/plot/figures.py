@@ -4,7 +4,8 @@ the paper's Figs 1-5), Chapter 5's (Figs 46, 55-61, 105-108, the paper's Figs 6-
 Relative Point figures (Figs 110-171).
 
 Every figure reads only CSV/JSON files below RUNS (the folder names of scripts/reproduce.sh, listed
-in FIGURES) and writes one PNG, OUT/fig<N>.png (extras: OUT/components.png, OUT/vp-timing.png), of
+in FIGURES) and writes one PNG, OUT/fig<N>.png (extras: OUT/components.png, OUT/vp-timing.png,
+OUT/vp-bridged.png), of
 FIGSIZE x DPI pixels. A figure whose run folder is missing is skipped with a line naming the
 folder; a malformed file is reported with its name and column, and the other figures go on.
 
@@ -368,9 +369,12 @@ def vp_gps(ax, run, **style):
 
 
 def vp_map(fig, run):
-    """Figs 163, 165: both maps and trajectories over the GPS fixes, in the GPS frame."""
+    """Figs 163, 165 and vp-bridged: the maps and trajectories over the GPS fixes, in the GPS frame (ekf2d's
+    where the run has it)."""
     ax = fig.subplots()
     for algorithm, marker, colour in [(ALG, "s", "tab:blue"), ("ekf2d", "o", "tab:orange")]:
+        if algorithm != ALG and not os.path.isdir(os.path.join(run, algorithm)):
+            continue
         path = rp.read_table(os.path.join(run, algorithm, "trajectory_gps_frame.csv"), ["x", "y"])
         ax.plot(path["x"], path["y"], color=colour, lw=1, label=f"{algorithm} trajectory")
         lm = vp_landmarks(run, algorithm)
@@ -830,6 +834,7 @@ FIGURES = sorted([
 ], key=lambda f: f.id) + [
     Figure("components", "run-time components, one figure-eight loop", ("s-f8",), components),
     Figure("vp-timing", "Victoria Park ms per scan by grouping levels", ("vp-timing.json",), vp_timing),
+    Figure("vp-bridged", "Victoria Park whole log, bridged by dead reckoning", ("vp-bridged",), vp_map),
 ]
 # ---- issue 13 experiments: Relative Plane part 2 (spec relative_plane_em.md §6.1 E02, E07-E10, E12,
 # E15, E18, E32; thesis 4.3.3-4.3.7.1). Every helper reads one sweep's or run's CSVs; claims.py calls the
