@@ -215,9 +215,11 @@ struct PointSlamOptions {
   // scan's dead reckoning is off by centimetres and a fraction of a degree, a mismatch of trees by
   // metres); and a frame with fewer than three points to register takes it rather than a pose
   // from one or two points. At Victoria Park the three-tree registrations in sparse stretches
-  // (two to five trees) flipped the heading or jumped by metres, and the pose from one or two
-  // trees carried the error on: whole log, adaptive, --bridge, no relaxation, ATE 139 m against
-  // GPS before, about 2 m with 10 degrees and 1.5 m (README, issue 19) [C].
+  // (two to five trees) flipped the pose upside down or jumped by metres, and the pose from one
+  // or two trees carried the error on: whole log, adaptive, --bridge, no relaxation, ATE 139 m
+  // against GPS before, 2.0 m with 10 degrees and 1.5 m, the best of a grid whose runs ended at
+  // 1.9-58 m; with the global bound at 2.5 m instead of 5 (victoria-park-bridged.json) the same
+  // grid ended at 1.8-2.7 m but one run (README, issue 19) [C].
   double odometry_max_turn_deg = 10.0;
   double odometry_max_shift = 1.5;
   // Deviation (beyond the thesis): a temporary group that lacks prev_min mapped points in view
@@ -447,7 +449,8 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
           "(0: the map frame's observations alone; beyond the thesis)",
           at_least(0));
   f.field("use_odometry", o.use_odometry,
-          "frames with odometry: predict local matches and bridge unregistrable frames with it (beyond the thesis)");
+          "frames with odometry: predict local matches and the pose with it, check registrations against it, and "
+          "bridge frames with fewer than three points to register (beyond the thesis)");
   f.field("odometry_max_turn_deg", o.odometry_max_turn_deg,
           "use_odometry: a registration turning further than this from the dead-reckoned pose is a mismatch, degrees",
           above(0.0), at_most(180.0));
