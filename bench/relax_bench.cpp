@@ -2,8 +2,8 @@
 // of groups, the shape of a figure eight's chain: each point is seen by five consecutive groups,
 // the last groups' by the first ones (the loop closure). Each group's relative map is exact,
 // its start transform drifted a little more each group, to 1° and 0.5 units at the loop's end
-// (the closure's gap, as a figure eight's first loop shows), and group 0 holds the frame. Printed: ms per solve and the solver's iterations, for 100 to 1600
-// groups (S-40 keeps about 450 alive).
+// (the closure's gap, as a figure eight's first loop shows), and group 0 holds the frame. Printed: ms per solve and the
+// solver's iterations, for 100 to 1600 groups (S-40 keeps about 450 alive).
 //   build/bench/relslam_bench_relax
 #include "relslam/relax/ceres_relaxation.hpp"
 
@@ -33,8 +33,8 @@ RelaxationProblem drifted_loop(int per_lap, int laps) {
   const double radius = 0.5 * per_lap;  // about a unit between neighbours
   const auto world_point = [&](int m) {
     const double a = 2 * std::numbers::pi * m / points;
-    return Eigen::Vector3d((radius + 1.5 * std::sin(1.7 * m)) * std::cos(a), (radius + 1.5 * std::sin(1.7 * m)) * std::sin(a),
-                           0.4 * (m % 3) - 0.4);
+    return Eigen::Vector3d((radius + 1.5 * std::sin(1.7 * m)) * std::cos(a),
+                           (radius + 1.5 * std::sin(1.7 * m)) * std::sin(a), 0.4 * (m % 3) - 0.4);
   };
   std::vector<Rigid3> truth;
   for (int i = 0; i < groups; ++i) {
@@ -52,7 +52,8 @@ RelaxationProblem drifted_loop(int per_lap, int laps) {
         if (const int j = i % per_lap; kStep * j <= mm && mm < kStep * j + kSeen) seen_by.push_back(i);
     const Eigen::Vector3d p = world_point(m);
     for (std::size_t g = 1; g < seen_by.size(); ++g)
-      problem.ties.push_back({seen_by[0], truth[seen_by[0]].inverse() * p, seen_by[g], truth[seen_by[g]].inverse() * p, 3.0});
+      problem.ties.push_back(
+          {seen_by[0], truth[seen_by[0]].inverse() * p, seen_by[g], truth[seen_by[g]].inverse() * p, 3.0});
   }
   for (int i = 0; i < groups; ++i) {
     const double share = static_cast<double>(i) / groups;

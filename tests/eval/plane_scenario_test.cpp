@@ -460,8 +460,7 @@ TEST(PlaneScenario, MapDSlowRobotThesisStoreLosesPlanesWithoutTheSaveSystemOnly)
   const SimRun unsaved = run_with(false);
   const SimRun saved = run_with(true);
   std::cout << "[ measured ] save system off: " << walls_mapped(unsaved) << " walls mapped, the map lost planes at "
-            << planes_lost(unsaved) << " iterations; on: " << walls_mapped(saved) << ", " << planes_lost(saved)
-            << '\n';
+            << planes_lost(unsaved) << " iterations; on: " << walls_mapped(saved) << ", " << planes_lost(saved) << '\n';
   EXPECT_LE(walls_mapped(unsaved), 33);
   EXPECT_GE(planes_lost(unsaved), 2);
   EXPECT_EQ(walls_mapped(saved), 36);

@@ -133,11 +133,11 @@ TEST(VictoriaParkExperiment, TheBridgedWholeLogFollowsGpsWithinFiveMetresWithAnd
 TEST(VictoriaParkCommand, WholeLogRelaxationPrintsNoSolverWarnings) {
   SKIP_WITHOUT_DATA();
   test::ScratchDir dir;
-  const auto r = test::run_relslam(
-      {"victoria-park", test::source_path("scenarios/victoria-park.json").string(), "--data",
-       test::victoria_park_data().string(), "--window", "all", "--out", (dir / "vp").string(), "-q", "--set",
-       "algorithms=[\"relative_point\"]", "--set", "relative_point.preset=adaptive", "--set",
-       "relative_point.global_relaxation=periodic"});
+  const auto r =
+      test::run_relslam({"victoria-park", test::source_path("scenarios/victoria-park.json").string(), "--data",
+                         test::victoria_park_data().string(), "--window", "all", "--out", (dir / "vp").string(), "-q",
+                         "--set", "algorithms=[\"relative_point\"]", "--set", "relative_point.preset=adaptive", "--set",
+                         "relative_point.global_relaxation=periodic"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   const test::CsvTable rp = test::read_csv(dir / "vp/relative_point/iterations.csv");

@@ -213,8 +213,9 @@ TEST(GlobalRelaxation, TriggerIgnoresTiesThatStayedOpenAfterTheLastSolve) {
     scheduled += planted.steps[k].relaxed || planted.steps[k].relaxation_skipped;
     after += planted.steps[k].relaxed;
   }
-  std::cout << "planted at " << wrong.iteration << " of " << planted.steps.size() << "; solves " << solves(reference) << " without the planted match, " << solves(planted) << " with it; "
-            << after << " of " << scheduled << " scheduled from the match on\n";
+  std::cout << "planted at " << wrong.iteration << " of " << planted.steps.size() << "; solves " << solves(reference)
+            << " without the planted match, " << solves(planted) << " with it; " << after << " of " << scheduled
+            << " scheduled from the match on\n";
   EXPECT_LE(solves(planted), solves(reference) + 1);
   EXPECT_LT(after, scheduled);
 }

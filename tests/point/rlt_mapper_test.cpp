@@ -198,7 +198,8 @@ TEST(RltMapper, DeadReckoningRejectsARegistrationFarFromItAndCarriesThePose) {
           if (known != point_of.end() && taken.insert(known->second).second)
             own.emplace_back(static_cast<int>(i), known->second);
         }
-        for (std::size_t j = 0; j < own.size(); ++j) forced.emplace_back(own[j].first, own[(j + 1) % own.size()].second);
+        for (std::size_t j = 0; j < own.size(); ++j)
+          forced.emplace_back(own[j].first, own[(j + 1) % own.size()].second);
         EXPECT_GT(forced.size(), 20u);
       }
       const StepResult r = mapper.step(f.observation, forced);

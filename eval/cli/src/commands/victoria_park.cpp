@@ -43,7 +43,9 @@ void add_victoria_park(CLI::App& app, VictoriaParkArgs& args) {
   cmd->add_option("--data", args.data,
                   "Data folder (default $RELSLAM_VICTORIA_PARK, else ../shared/datasets/victoria_park)");
   cmd->add_option("--window,-w", args.window, "Scans FIRST:LAST (1-based, of 7249) or all (default: the scenario's)");
-  cmd->add_flag("--bridge", args.bridge, "Relative Point: bridge scans with fewer than 3 trees by dead reckoning, and check registrations against it");
+  cmd->add_flag(
+      "--bridge", args.bridge,
+      "Relative Point: bridge scans with fewer than 3 trees by dead reckoning, and check registrations against it");
 }
 
 int run_victoria_park_command(const VictoriaParkArgs& args, const std::vector<std::string>& command_line) {

@@ -22,20 +22,20 @@
 namespace relslam::point {
 
 enum class PoseSource : unsigned char {
-  Start,           // the first iteration: the identity by definition (the map frame)
-  MappedPoints,    // RltICP of this iteration's observations to their map positions (thesis 6.1)
-  UnmappedPoints,  // fewer than 3 mapped points visible: registered to provisional positions
-  TwoPoints,       // exactly 2 mapped points visible: registered to them, the rotation about their line
-                   // from the latest map-registered pose (adaptive two_point_registration)
-  OnePoint,        // one mapped point visible, no registration to provisional positions: the rotation of
-                   // the latest map-registered pose, the translation from that point (adaptive)
+  Start,              // the first iteration: the identity by definition (the map frame)
+  MappedPoints,       // RltICP of this iteration's observations to their map positions (thesis 6.1)
+  UnmappedPoints,     // fewer than 3 mapped points visible: registered to provisional positions
+  TwoPoints,          // exactly 2 mapped points visible: registered to them, the rotation about their line
+                      // from the latest map-registered pose (adaptive two_point_registration)
+  OnePoint,           // one mapped point visible, no registration to provisional positions: the rotation of
+                      // the latest map-registered pose, the translation from that point (adaptive)
   TwoUnmappedPoints,  // two points with a map or provisional position visible, not both mapped: as TwoPoints,
                       // the rotation about their line from the latest pose (adaptive average_provisional)
-  OneUnmappedPoint,   // one provisional point visible (or two on a steep line), no mapped one: as OnePoint, the rotation of the
-                      // latest pose (adaptive average_provisional)
-  Held,            // no registration possible: the previous pose is kept
-  Odometry,        // use_odometry, no registration to three or more points: the previous pose moved by
-                   // the frame's odometry
+  OneUnmappedPoint,  // one provisional point visible (or two on a steep line), no mapped one: as OnePoint, the rotation
+                     // of the latest pose (adaptive average_provisional)
+  Held,      // no registration possible: the previous pose is kept
+  Odometry,  // use_odometry, no registration to three or more points: the previous pose moved by
+             // the frame's odometry
 };
 
 // The pose's position and rotation came from the map itself (the map frame or mapped points).
