@@ -136,12 +136,14 @@ TEST(SweepEngines, AFailedCellIsListedAndResumeFailedRunsOnlyIt) {
       << test::read_file(dir / "s/commands.txt");
   const auto incomplete = run_relslam({"sweep", "--aggregate", (dir / "s").string(), "-q"});
   EXPECT_EQ(incomplete.exit_code, 1);
-  EXPECT_NE(incomplete.out.find("1 of 3 runs missing or failed"), std::string::npos) << incomplete.out;
-  EXPECT_NE(incomplete.out.find("  2 seed-2: failed or unfinished"), std::string::npos) << incomplete.out;
+  EXPECT_NE(incomplete.out.find("1 of 3 runs did not finish"), std::string::npos) << incomplete.out;
+  EXPECT_NE(incomplete.out.find("  2 seed-2: not run or cut off (no readable manifest.json)"), std::string::npos)
+      << incomplete.out;
+  EXPECT_NE(incomplete.out.find("relslam sweep --resume"), std::string::npos) << incomplete.out;
   EXPECT_NE(incomplete.out.find("sbatch --array=2 slurm.sbatch"), std::string::npos) << incomplete.out;
   const CsvTable runs = read_csv(dir / "s/sweep.csv");
   ASSERT_EQ(runs.rows.size(), 3u);
-  EXPECT_EQ(runs.text(1, "status").rfind("error: failed or unfinished", 0), 0u) << runs.text(1, "status");
+  EXPECT_EQ(runs.text(1, "status").rfind("error: not run or cut off", 0), 0u) << runs.text(1, "status");
   const CsvTable partial = read_csv(dir / "s/aggregate.csv");
   ASSERT_EQ(partial.rows.size(), 1u);
   EXPECT_EQ(partial.text(0, "runs"), "3") << "every planned seed is counted";

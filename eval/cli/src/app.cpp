@@ -1,5 +1,7 @@
 #include "relslam/eval/cli/app.hpp"
 
+#include "command_line_errors.hpp"
+
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/cli/commands/bench_binning.hpp"
 #include "relslam/eval/cli/commands/em_bench.hpp"
@@ -13,6 +15,7 @@
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/config/scenario_keys.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/config/spelling.hpp"
 #include "relslam/eval/io/build_info.hpp"
 
 #include <CLI/CLI.hpp>
@@ -46,7 +49,8 @@ Examples:
   relslam convert victoria-park --out runs/vp.rawlog           # Victoria Park as an MRPT rawlog
   relslam render runs/f8 --iteration 1200 --out map.png        # top view of the map (thesis Fig 127)
 
-Exit codes: 0 ok, 2 bad input (the message names the file, line and key), 1 internal error.)";
+Exit codes: 0 ok, 2 bad input (a command line, file, line or key: the message names it and says what
+to do), 1 internal error or an unfinished sweep, 130 interrupted (Ctrl-C, SIGTERM).)";
 
 struct ScenarioArgs {
   std::string scenario;
@@ -59,9 +63,37 @@ void add_scenario(CLI::App& app, ScenarioArgs& args) {
   cmd->add_option("--set", args.set, "Override a scenario key, e.g. --set sim.density=50 (repeatable)");
 }
 
+// Everything `run` checks before it reads observations: the keys and values, and that every
+// algorithm named exists for the scenario's kind.
 int run_scenario(const ScenarioArgs& args) {
   const LoadedScenario loaded = load_with_overrides(args.scenario, args.set);
+  check_algorithm_names(loaded);
   std::cout << to_json(loaded.scenario).dump(2) << '\n';
+  const ScenarioKind kind = loaded.scenario.kind;
+  if (loaded.scenario.algorithms.empty() && (kind == ScenarioKind::Simulation || kind == ScenarioKind::Planar))
+    std::cerr << "relslam: note: " << args.scenario
+              << " lists no algorithm: relslam simulate takes it, relslam run and sweep refuse it "
+                 "(add one, e.g. --set algorithms=relative_point)\n";
+  return 0;
+}
+
+// `relslam keys [PREFIX]`: every key, or those starting with PREFIX; an unknown prefix is bad input.
+int run_keys(const std::string& prefix, bool markdown) {
+  const Scenario defaults;
+  std::vector<std::string> names;
+  std::size_t shown = 0;
+  for (const ScenarioKey& k : scenario_keys()) {
+    // The names a prefix may mean: every group ("ekf6d", "relative_plane.rules") and every key.
+    for (std::size_t dot = k.key.find('.'); dot != std::string::npos; dot = k.key.find('.', dot + 1))
+      names.push_back(k.key.substr(0, dot));
+    names.push_back(k.key);
+    if (k.key.rfind(prefix, 0) != 0) continue;
+    ++shown;
+    if (!markdown)
+      std::cout << k.key << " = " << k.read(defaults).dump() << "  (" << k.type << ")\n    " << k.help << '\n';
+  }
+  if (shown == 0) throw InputError("", 0, prefix, "no scenario key starts with this" + did_you_mean(prefix, names));
+  if (markdown) std::cout << scenario_keys_markdown(prefix);
   return 0;
 }
 
@@ -97,14 +129,18 @@ int run_cli(int argc, const char* const* argv) {
   add_render(app, render);
   app.add_subcommand("algorithms", "List the algorithms a scenario's \"algorithms\" key may name");
   bool markdown = false;
+  std::string keys_prefix;
   CLI::App* keys = app.add_subcommand("keys", "List every scenario key with its type, default and meaning");
+  keys->add_option("prefix", keys_prefix, "Only the keys that start with this, e.g. ekf6d or relative_plane.rules");
   keys->add_flag("--markdown", markdown, "Markdown table (the one in README.md)");
 
   const std::vector<std::string> command_line(argv, argv + argc);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << "relslam: " << command_line_problem(app, e, command_line) << '\n';
+    return 2;
   }
 
   try {
@@ -127,16 +163,7 @@ int run_cli(int argc, const char* const* argv) {
         std::cout << "  " << a.name << "\n      " << a.help << '\n';
       return 0;
     }
-    if (app.got_subcommand("keys")) {
-      if (markdown) {
-        std::cout << scenario_keys_markdown();
-      } else {
-        const Scenario defaults;
-        for (const ScenarioKey& k : scenario_keys())
-          std::cout << k.key << " = " << k.read(defaults).dump() << "  (" << k.type << ")\n    " << k.help << '\n';
-      }
-      return 0;
-    }
+    if (app.got_subcommand("keys")) return run_keys(keys_prefix, markdown);
   } catch (const InputError& e) {
     std::cerr << "relslam: " << e.what() << '\n';
     return 2;

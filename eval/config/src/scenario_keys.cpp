@@ -1,5 +1,7 @@
 #include "relslam/eval/config/scenario_keys.hpp"
 
+#include "relslam/eval/config/spelling.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -359,15 +361,17 @@ std::string cell(std::string_view text) {
 
 }  // namespace
 
-std::string scenario_keys_markdown() {
+std::string scenario_keys_markdown(const std::string& prefix) {
   const Scenario defaults;
   std::ostringstream out;
   out << "| key | type | default | meaning |\n|---|---|---|---|\n";
   for (const ScenarioKey& k : scenario_keys()) {
+    if (k.key.rfind(prefix, 0) != 0) continue;
     std::string value = k.read(defaults).dump();
     if (k.key == "name") value = "file name";
     out << "| `" << k.key << "` | " << k.type << " | `" << value << "` | " << cell(k.help) << " |\n";
   }
+  if (!prefix.empty()) return out.str();
   out << "| `sweep` | object | `{}` | parameter grid for `relslam sweep`: key → list of values |\n";
   out << "| `variants` | object | `{}` | named settings for `relslam sweep` (axis `variant`): name → {key: value} |\n";
   return out.str();
@@ -390,6 +394,12 @@ nlohmann::json to_json(const Scenario& scenario) {
   }
   out["variants"] = variants;
   return out;
+}
+
+std::string unknown_key_problem(const std::string& key) {
+  std::vector<std::string> names;
+  for (const ScenarioKey& k : scenario_keys()) names.push_back(k.key);
+  return "unknown key" + did_you_mean(key, names) + " (relslam keys lists them all)";
 }
 
 }  // namespace relslam::eval

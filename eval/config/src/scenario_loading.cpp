@@ -13,33 +13,6 @@ namespace {
 
 using nlohmann::json;
 
-// Levenshtein distance, for "did you mean" on unknown keys.
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
-std::string unknown_key_problem(const std::string& key) {
-  std::string best;
-  std::size_t best_distance = 4;  // suggest only near misses
-  for (const ScenarioKey& k : scenario_keys()) {
-    const std::size_t d = edit_distance(key, k.key);
-    if (d < best_distance) best_distance = d, best = k.key;
-  }
-  return "unknown key" + (best.empty() ? std::string() : "; did you mean \"" + best + "\"?") +
-         " (relslam keys lists them all)";
-}
-
 bool is_group(const std::string& path) {
   const std::string prefix = path + ".";
   return std::any_of(scenario_keys().begin(), scenario_keys().end(),
@@ -56,14 +29,14 @@ class Loader {
   }
 
   void apply_override(const Override& o) {
-    const std::string where = "--set";
+    const std::string& where = o.origin;
     for (const char* grid : {"sweep", "variants"})
       if (o.key == grid || o.key.rfind(std::string(grid) + ".", 0) == 0)
         throw InputError(where, 0, o.key,
                          "sweeps and variants are set in the scenario file or with relslam sweep --param");
     const ScenarioKey* key = find_scenario_key(o.key);
     if (!key) throw InputError(where, 0, o.key, unknown_key_problem(o.key));
-    store(*key, override_value(*key, o.value), {where, 0});
+    store(*key, override_value(*key, o.value, where), {where, 0});
   }
 
   const std::map<std::string, KeyOrigin>& origins() const { return origins_; }
@@ -135,7 +108,7 @@ class Loader {
     if (!problem.empty()) throw InputError(file, line, path, problem);
   }
 
-  static json override_value(const ScenarioKey& key, const std::string& raw) {
+  static json override_value(const ScenarioKey& key, const std::string& raw, const std::string& where) {
     if (key.text_value) {
       if (key.key == "algorithms" && (raw.empty() || raw.front() != '[')) {
         json list = json::array();
@@ -148,13 +121,13 @@ class Loader {
       }
       if (raw.empty() || (raw.front() != '"' && raw.front() != '[')) return raw;
     }
-    check_json_nesting(raw, "--set", key.key);
+    check_json_nesting(raw, where, key.key);
     try {
       return json::parse(raw);
     } catch (const json::parse_error&) {
       return raw;  // not JSON: the key's own check says what it expected
     } catch (const json::out_of_range&) {  // 1e400: JSON, but no double holds it
-      throw InputError("--set", 0, key.key, "number too large for a double: " + raw);
+      throw InputError(where, 0, key.key, "number too large for a double: " + raw);
     }
   }
 

@@ -62,14 +62,15 @@ void check_jobs_load(const std::string& scenario_file, const std::vector<std::st
   for (const BatchJob& job : jobs) {
     std::vector<std::string> set = base_overrides;
     set.insert(set.end(), job.overrides.begin(), job.overrides.end());
-    load_with_overrides(scenario_file, set);
+    require_algorithms(load_with_overrides(scenario_file, set));
   }
 }
 
 std::vector<BatchResult> run_batch(const std::string& scenario_file, const std::vector<std::string>& base_overrides,
                                    const std::vector<BatchJob>& jobs, int threads, bool progress,
                                    const std::vector<std::string>& command_line) {
-  std::vector<BatchResult> results(jobs.size());
+  std::vector<BatchResult> results;
+  for (const BatchJob& job : jobs) results.push_back({job, "", {}});
   std::atomic<std::size_t> next{0};
   std::atomic<long long> done{0};
   std::mutex progress_mutex;
@@ -77,14 +78,13 @@ std::vector<BatchResult> run_batch(const std::string& scenario_file, const std::
   auto worker = [&] {
     for (std::size_t i = next++; i < jobs.size(); i = next++) {
       BatchResult& r = results[i];
-      r.job = jobs[i];
       try {
         std::vector<std::string> set = base_overrides;
         set.insert(set.end(), jobs[i].overrides.begin(), jobs[i].overrides.end());
         const LoadedScenario loaded = load_with_overrides(scenario_file, set);
         if (interrupt_requested()) {  // a signal: start no further cell
-          r.error = kRunStatusInterrupted;
-          break;
+          r.error = "not run (interrupted)";
+          continue;
         }
         prepare_run_folder(jobs[i].folder, true);
         const Invocation invocation{"sweep", command_line, scenario_file, set};
@@ -99,7 +99,7 @@ std::vector<BatchResult> run_batch(const std::string& scenario_file, const std::
                          e.interrupted ? kRunStatusInterrupted : kRunStatusOk);
           if (e.interrupted) r.error = kRunStatusInterrupted;
         } catch (const std::exception& e) {
-          write_manifest(jobs[i].folder, loaded.scenario, invocation, {}, failed_status(e.what()));
+          record_failure(jobs[i].folder, loaded.scenario, invocation, e);
           throw;
         }
       } catch (const std::exception& e) {  // one bad combination does not end the batch

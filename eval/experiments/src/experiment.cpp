@@ -40,10 +40,12 @@ ExperimentResult Experiment::run(bool progress) {
   const auto start = std::chrono::steady_clock::now();
   Progress bar(source_.label(), source_.frames(), progress);
   ExperimentResult result;
-  // Interrupted, the run finishes with the frames processed so far and the command marks the
-  // manifest "interrupted".
-  result.interrupted = stream_to_recorders(source_, recorders_, bar);
+  // Interrupted, the run finishes with the frames processed so far, every row says where it was
+  // cut, and the command marks the manifest "interrupted".
+  const std::optional<int> stopped_at = stream_to_recorders(source_, recorders_, bar);
+  result.interrupted = stopped_at.has_value();
   for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
+  if (stopped_at) mark_interrupted(result.rows, *stopped_at);
   // The Relative Point / EKF ratios, over the iterations both processed: against the 6D EKF,
   // or else the planar one with odometry.
   auto index_of = [&](const char* name) {

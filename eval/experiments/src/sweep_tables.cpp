@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <system_error>
 
 namespace relslam::eval {
 namespace {
@@ -33,6 +34,15 @@ constexpr Metric kMetrics[] = {
 
 bool usable(const SummaryRow& s) { return s.status.is_ok() || s.status.kind == RunStatus::Kind::Ratio; }
 
+// A table is written beside its name and renamed over it once whole, so a signal or a kill
+// mid-write leaves the previous table, never a cut one.
+std::filesystem::path partial(const std::filesystem::path& file) { return file.string() + ".partial"; }
+void publish(const std::filesystem::path& file) {
+  std::error_code ec;
+  std::filesystem::rename(partial(file), file, ec);
+  if (ec) throw std::runtime_error(file.string() + ": " + ec.message());
+}
+
 }  // namespace
 
 bool planar(const std::vector<BatchResult>& results) {
@@ -48,20 +58,24 @@ void write_runs_table(const std::filesystem::path& out, const std::vector<GridAx
   for (const char* name : {"seed", "folder", "algorithm", "status", "iterations", "final_landmark_error",
                            "final_mean_landmark_error", "final_position_error", "ate_rmse", "runtime_median_ms"})
     columns.push_back(summary_column(name, planar(results)));
-  CsvWriter table(out / "sweep.csv", columns);
+  CsvWriter table(partial(out / "sweep.csv"), columns);
   for (const BatchResult& r : results) {
     auto texts = [&](const std::string& algorithm, const std::string& status) {
       std::vector<std::string> f = r.job.labels;
       f.insert(f.end(), {std::to_string(r.job.seed), r.job.folder.lexically_relative(out).string(), algorithm, status});
       return f;
     };
-    if (!r.error.empty()) table.row_fields(texts("", "error: " + r.error), std::vector<std::optional<double>>(6));
+    if (!r.error.empty()) {  // one row for an unfinished run, whatever it wrote before it ended
+      table.row_fields(texts("", "error: " + r.error), std::vector<std::optional<double>>(6));
+      continue;
+    }
     for (const SummaryRow& s : r.rows)
       table.row_fields(texts(s.algorithm, s.status.text()),
                        {static_cast<double>(s.iterations), s.final_landmark_error, s.final_mean_landmark_error,
                         s.final_position_error, s.trajectory.ate_rmse, s.runtime.median_ms});
   }
   table.close();
+  publish(out / "sweep.csv");
 }
 
 // aggregate.csv: per combination and algorithm, statistics over the seeds whose run succeeded.
@@ -119,7 +133,7 @@ void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxi
   columns.insert(columns.end(), {"algorithm", "runs", "ok", "not_ok_seeds"});
   for (const Metric& m : kMetrics)
     for (const char* suffix : {"_mean", "_std", "_ci95"}) columns.push_back(summary_column(m.name, planar) + suffix);
-  CsvWriter table(out / "aggregate.csv", columns);
+  CsvWriter table(partial(out / "aggregate.csv"), columns);
   for (const SweepCell& cell : cells) {
     std::vector<std::string> texts = cell.labels;
     std::string seeds;
@@ -135,6 +149,7 @@ void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxi
     table.row_fields(texts, values);
   }
   table.close();
+  publish(out / "aggregate.csv");
 }
 
 void print_cells(const std::vector<GridAxis>& axes, const std::vector<SweepCell>& cells, bool planar) {

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <ctime>
 #include <fstream>
+#include <iterator>
 
 namespace relslam::eval {
 namespace fs = std::filesystem;
@@ -24,12 +25,28 @@ bool is_relslam_manifest(const fs::path& file) {
   return manifest.is_object() && manifest.contains("relslam_version");
 }
 
+constexpr const char* kBadInput = "failed: bad input: ";
+
+void clear_folder(const fs::path& dir) {
+  for (const auto& entry : fs::directory_iterator(dir)) fs::remove_all(entry.path());
+}
+
+// Nothing in `dir` but the manifest of a run refused for bad input.
+bool holds_only_refused_input(const fs::path& dir) {
+  auto entries = fs::directory_iterator(dir);
+  const bool only_manifest = std::distance(fs::begin(entries), fs::end(entries)) == 1 &&
+                             fs::is_regular_file(dir / "manifest.json");
+  return only_manifest && is_relslam_manifest(dir / "manifest.json") &&
+         manifest_status(dir).rfind(kBadInput, 0) == 0;
+}
+
 }  // namespace
 
 void prepare_run_folder(const fs::path& dir, bool force) {
   std::error_code ec;
   if (fs::exists(dir, ec)) {
     if (!fs::is_directory(dir)) throw InputError("", 0, "--out", dir.string() + " exists and is not a folder");
+    if (!fs::is_empty(dir) && holds_only_refused_input(dir)) force = true;
     if (!fs::is_empty(dir)) {
       if (!force)
         throw InputError("", 0, "--out",
@@ -39,7 +56,7 @@ void prepare_run_folder(const fs::path& dir, bool force) {
                          dir.string() +
                              " is not empty and holds no relslam manifest.json, so it is not a relslam run folder; "
                              "refusing to delete it");
-      for (const auto& entry : fs::directory_iterator(dir)) fs::remove_all(entry.path());
+      clear_folder(dir);
     }
   }
   fs::create_directories(dir, ec);
@@ -99,10 +116,27 @@ void write_manifest(const fs::path& dir, const Scenario& scenario, const Invocat
 
 std::string failed_status(const std::string& why) { return "failed: " + why; }
 
-std::string manifest_status(const fs::path& dir) {
+std::string bad_input_status(const std::string& why) { return kBadInput + why; }
+
+void record_failure(const fs::path& dir, const Scenario& scenario, const Invocation& invocation,
+                    const std::exception& error) {
+  if (dynamic_cast<const InputError*>(&error)) {
+    clear_folder(dir);
+    write_manifest(dir, scenario, invocation, {}, bad_input_status(error.what()));
+  } else {
+    write_manifest(dir, scenario, invocation, {}, failed_status(error.what()));
+  }
+}
+
+nlohmann::json read_manifest(const fs::path& dir) {
   std::ifstream in(dir / "manifest.json");
-  if (!in) return "";
-  const nlohmann::json manifest = nlohmann::json::parse(in, nullptr, false);
+  if (!in) return nullptr;
+  nlohmann::json manifest = nlohmann::json::parse(in, nullptr, false);
+  return manifest.is_object() ? manifest : nlohmann::json();
+}
+
+std::string manifest_status(const fs::path& dir) {
+  const nlohmann::json manifest = read_manifest(dir);
   if (!manifest.is_object()) return "";
   if (!manifest.contains("status")) return kRunStatusOk;
   return manifest["status"].is_string() ? manifest["status"].get<std::string>() : "";

@@ -16,15 +16,21 @@ std::string_view to_string(RunStatus::Kind kind) {
     case RunStatus::Kind::Failed: return "failed";
     case RunStatus::Kind::Stopped: return "stopped";
     case RunStatus::Kind::Ratio: return "ratio";
+    case RunStatus::Kind::Interrupted: return "interrupted";
   }
   return "?";
 }
 
 std::string RunStatus::text() const {
   std::string out(to_string(kind));
-  if (kind != Kind::Failed && kind != Kind::Stopped) return out;
+  if (kind != Kind::Failed && kind != Kind::Stopped && kind != Kind::Interrupted) return out;
   if (iteration >= 0) out += " at iteration " + std::to_string(iteration);
-  return out + ": " + reason;
+  return kind == Kind::Interrupted && reason.empty() ? out : out + ": " + reason;
+}
+
+void mark_interrupted(std::vector<SummaryRow>& rows, int iteration) {
+  for (SummaryRow& row : rows)
+    if (row.status.is_ok()) row.status = RunStatus::interrupted(iteration);
 }
 
 RuntimeStats runtime_stats(std::vector<double> t) {

@@ -4,6 +4,7 @@
 #include "relslam/eval/io/csv_reader.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -12,7 +13,7 @@ namespace relslam::eval {
 RunStatus parse_run_status(std::string_view text) {
   for (RunStatus::Kind kind : {RunStatus::Kind::NotRun, RunStatus::Kind::Ok, RunStatus::Kind::Ratio})
     if (text == to_string(kind)) return {kind, -1, ""};
-  for (RunStatus::Kind kind : {RunStatus::Kind::Failed, RunStatus::Kind::Stopped}) {
+  for (RunStatus::Kind kind : {RunStatus::Kind::Failed, RunStatus::Kind::Stopped, RunStatus::Kind::Interrupted}) {
     const std::string_view name = to_string(kind);
     if (text.substr(0, name.size()) != name) continue;
     std::string_view rest = text.substr(name.size());
@@ -24,6 +25,8 @@ RunStatus parse_run_status(std::string_view text) {
       if (ec != std::errc()) break;
       rest.remove_prefix(static_cast<std::size_t>(end - rest.data()));
     }
+    // An interruption names no reason: the signal is the reason.
+    if (kind == RunStatus::Kind::Interrupted && rest.empty() && status.iteration >= 0) return status;
     if (rest.substr(0, 2) != ": ") break;
     status.reason = std::string(rest.substr(2));
     return status;
@@ -45,6 +48,8 @@ class SummaryFields {
     double v = 0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
     if (ec != std::errc() || end != t.data() + t.size()) fail(name, "expected a number, got \"" + t + "\"");
+    if (std::abs(v) > kLargestSummaryValue)
+      fail(name, t + " is beyond any value a run writes (at most 1e150 in magnitude): the file is damaged");
     return v;
   }
   int count(std::string_view name) const {
@@ -109,9 +114,12 @@ std::vector<SummaryRow> read_summary(const std::filesystem::path& file) {
     // The ratio row of a planar run carries no planar scores of its own (write_summary
     // writes zeros there); the rows of the runs do.
     if (planar && r.status.kind != RunStatus::Kind::Ratio)
-      r.planar = PlanarScores{f.number("final_heading_error_deg"), f.number("max_position_error"),
-                              f.number("pose_valid_fraction"),     f.count("walls_mapped"),
-                              f.count("walls_seen"),               f.number("key_point_accuracy"),
+      r.planar = PlanarScores{f.number("final_heading_error_deg"),
+                              f.number("max_position_error"),
+                              f.number("pose_valid_fraction"),
+                              f.count("walls_mapped"),
+                              f.count("walls_seen"),
+                              f.number("key_point_accuracy"),
                               f.count("wrong_key_point_iterations")};
     rows.push_back(std::move(r));
   }

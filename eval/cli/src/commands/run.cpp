@@ -38,6 +38,9 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
   if (args.scenario.empty()) set.insert(set.begin(), "algorithms=relative_point,ekf6d");
   const LoadedScenario loaded =
       args.scenario.empty() ? parse_checked("{}", "(defaults)", set) : load_checked(args.scenario, set);
+  // Input before output: what can be checked without reading the observations is checked before
+  // the folder exists (a bad input found later leaves a folder the corrected command reuses).
+  require_algorithms(loaded);
   prepare_run_folder(args.out, args.force);
   const Invocation invocation{"run", command_line, args.scenario, set};
   catch_interrupts();  // before the manifest says running: a signal from then on is seen
@@ -54,7 +57,7 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
       result = run_on_rawlog(loaded, files, args.out, !args.quiet);
     }
   } catch (const std::exception& e) {
-    write_manifest(args.out, loaded.scenario, invocation, {}, failed_status(e.what()));
+    record_failure(args.out, loaded.scenario, invocation, e);
     throw;
   }
   nlohmann::json results = nlohmann::json::array();

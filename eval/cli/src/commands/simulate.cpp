@@ -37,7 +37,7 @@ bool stream_until_interrupted(const SimulateArgs& args, const Scenario& scenario
     std::fprintf(stderr, "relslam: interrupted; %s holds the iterations simulated\n", args.out.c_str());
     return true;
   } catch (const std::exception& e) {
-    write_manifest(args.out, scenario, invocation, {}, failed_status(e.what()));
+    record_failure(args.out, scenario, invocation, e);
     throw;
   }
 }

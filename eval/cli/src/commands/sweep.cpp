@@ -5,6 +5,7 @@
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/batch.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
+#include "relslam/eval/experiments/sweep_folder.hpp"
 #include "relslam/eval/experiments/sweep_launchers.hpp"
 #include "relslam/eval/experiments/sweep_plan.hpp"
 #include "relslam/eval/experiments/sweep_tables.hpp"
@@ -43,9 +44,17 @@ std::vector<GridAxis> axes_of(const SweepArgs& args, const LoadedScenario& loade
     const std::size_t eq = p.find('=');
     if (eq == std::string::npos || eq == 0) throw InputError("--param", 0, p, "expected key=v1,v2,...");
     const std::string key = p.substr(0, eq);
-    if (!find_scenario_key(key)) throw InputError("--param", 0, key, "unknown key (relslam keys lists them all)");
     if (key == "seed") throw InputError("--param", 0, "seed", "seeds are swept with --seeds N");
-    axes.push_back(key_axis(key, split_values(p.substr(eq + 1))));
+    if (!find_scenario_key(key)) throw InputError("--param", 0, key, unknown_key_problem(key));
+    const std::vector<std::string> values = split_values(p.substr(eq + 1));
+    // Each value checked on its own, so the message names --param and the value, not a cell.
+    for (const std::string& value : values) {
+      std::vector<Override> overrides;
+      for (const std::string& text : args.set) overrides.push_back(parse_override(text));
+      overrides.push_back({key, value, "--param"});
+      load_scenario(args.scenario, overrides);
+    }
+    axes.push_back(key_axis(key, values));
   }
   if (!axes.empty()) return axes;
   if (!loaded.scenario.variants.empty()) {
@@ -74,54 +83,92 @@ std::filesystem::path relslam_bin_dir() {
   return ec ? std::filesystem::path() : self.parent_path();
 }
 
-void write_tables(const SweepArgs& args, const std::filesystem::path& out, const std::vector<GridAxis>& axes,
-                  const std::vector<BatchResult>& results) {
-  write_runs_table(out, axes, results);
-  const std::vector<SweepCell> cells = sweep_cells(results);
-  write_aggregate(out, axes, cells, planar(results));
-  if (args.quiet) return;
-  print_cells(axes, cells, planar(results));
-  std::printf("wrote %s: sweep.csv (%zu runs), aggregate.csv (%zu cells)\n", out.c_str(), results.size(), cells.size());
-}
+struct Tabulated {
+  std::size_t unfinished = 0;  // cells that did not finish, the damaged among them
+  std::size_t damaged = 0;
+};
 
-// --aggregate: the tables from the cells the plan names. A cell counts when its run finished
-// (manifest.json and summary.csv); the others are listed with their commands.txt lines and
-// appear in sweep.csv as errors, so no mean hides a missing seed.
-int aggregate_sweep(const SweepArgs& args) {
-  if (!args.scenario.empty() || !args.out.empty() || !args.emit.empty() || !args.params.empty())
-    throw InputError("", 0, "--aggregate", "takes only the sweep folder (its plan.json names the grid)");
-  const std::filesystem::path dir = args.aggregate;
-  const SweepPlan plan = read_plan(dir);
-  std::vector<BatchResult> results;
-  std::vector<std::size_t> incomplete;
-  for (std::size_t i = 0; i < plan.jobs.size(); ++i) {
-    BatchResult r{plan.jobs[i], "", {}};
-    const std::filesystem::path& cell = r.job.folder;
-    if (!std::filesystem::exists(cell))
-      r.error = "not run (no folder)";
-    else if (!std::filesystem::exists(cell / "manifest.json") || !std::filesystem::exists(cell / "summary.csv"))
-      r.error = "failed or unfinished (no manifest.json or summary.csv; rerun it with --force)";
-    else if (const std::string status = manifest_status(cell); status != kRunStatusOk)
-      // An interrupted run has a summary of the frames it processed: not a finished cell.
-      r.error = "not finished (manifest status \"" + status + "\"; rerun it with --force)";
-    else
-      r.rows = read_summary(cell / "summary.csv");
-    if (!r.error.empty()) incomplete.push_back(i);
-    results.push_back(std::move(r));
+// The tables of sweep folder `dir`, made from its cells as they are on disk (sweep_folder.hpp),
+// whoever ran them and however they ended; then the cells that did not finish, with how to
+// run them again.
+Tabulated write_tables(bool quiet, const std::filesystem::path& dir, const SweepPlan& plan) {
+  const std::vector<BatchResult> results = read_cells(plan);
+  Tabulated counts;
+  for (const BatchResult& r : results) counts.unfinished += !r.error.empty(), counts.damaged += damaged(r);
+  write_runs_table(dir, plan.axes, results);
+  const std::vector<SweepCell> cells = sweep_cells(results);
+  write_aggregate(dir, plan.axes, cells, planar(results));
+  if (!quiet) {
+    print_cells(plan.axes, cells, planar(results));
+    std::printf("wrote %s: sweep.csv (%zu runs, %zu finished), aggregate.csv (%zu cells)\n", dir.c_str(),
+                results.size(), results.size() - counts.unfinished, cells.size());
   }
-  write_tables(args, dir, plan.axes, results);
-  if (incomplete.empty()) return 0;
+  if (counts.unfinished == 0) return counts;
   // Listed even with --quiet: an incomplete table must not pass unnoticed.
   std::string lines;
-  std::printf("%zu of %zu runs missing or failed (line of commands.txt, folder, why):\n", incomplete.size(),
+  std::printf("%zu of %zu runs did not finish (line of commands.txt, folder, why):\n", counts.unfinished,
               results.size());
-  for (std::size_t i : incomplete) {
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (results[i].error.empty()) continue;
     std::printf("  %zu %s: %s\n", i + 1, results[i].job.folder.lexically_relative(dir).c_str(),
                 results[i].error.c_str());
     lines += (lines.empty() ? "" : ",") + std::to_string(i + 1);
   }
-  std::printf("run them again: ./parallel.sh --resume-failed ... or sbatch --array=%s slurm.sbatch\n", lines.c_str());
-  return 1;
+  std::printf("run exactly those again: relslam sweep --resume %s\n", dir.c_str());
+  if (std::filesystem::exists(dir / "commands.txt"))
+    std::printf("  (or with the emitted launchers: ./parallel.sh --resume-failed, or sbatch --array=%s slurm.sbatch)\n",
+                lines.c_str());
+  return counts;
+}
+
+// --aggregate: the tables from the cells the plan names; exit 2 when a cell's files are damaged
+// (bad input), else 1 while any cell did not finish.
+int aggregate_sweep(const SweepArgs& args) {
+  if (!args.scenario.empty() || !args.out.empty() || !args.emit.empty() || !args.params.empty() || !args.resume.empty())
+    throw InputError("", 0, "--aggregate", "takes only the sweep folder (its plan.json names the grid)");
+  const Tabulated t = write_tables(args.quiet, args.aggregate, read_plan(args.aggregate));
+  return t.damaged > 0 ? 2 : t.unfinished > 0 ? 1 : 0;
+}
+
+// Runs `jobs` of the sweep in `dir` here, then makes its tables from every cell; the sweep's
+// manifest says running until then, and interrupted when a signal left cells unfinished.
+int run_cells(const SweepArgs& args, const std::filesystem::path& dir, const SweepPlan& plan,
+              const std::vector<BatchJob>& jobs, const Scenario& scenario, const Invocation& invocation,
+              const nlohmann::json& sweep) {
+  write_manifest(dir, scenario, invocation, {{"sweep", sweep}}, kRunStatusRunning);
+  run_batch(plan.scenario, plan.set, jobs, args.jobs, !args.quiet, invocation.arguments);
+  const std::size_t unfinished = write_tables(args.quiet, dir, plan).unfinished;
+  const bool interrupted = interrupt_requested() && unfinished > 0;
+  write_manifest(dir, scenario, invocation, {{"sweep", sweep}}, interrupted ? kRunStatusInterrupted : kRunStatusOk);
+  if (interrupted) return kInterruptedExit;
+  return unfinished == 0 ? 0 : 1;
+}
+
+// What the sweep's manifest says of its grid.
+nlohmann::json sweep_json(const SweepPlan& plan, int jobs) {
+  nlohmann::json grid = nlohmann::json::object();
+  for (const GridAxis& axis : plan.axes)
+    for (const AxisValue& v : axis.values) grid[axis.name].push_back(v.label);
+  nlohmann::json sweep = {{"grid", grid}, {"seeds", plan.seeds}, {"runs", plan.jobs.size()}};
+  if (jobs > 0) sweep["jobs"] = jobs;
+  return sweep;
+}
+
+// --resume: the cells of the plan that did not finish, run here, then the tables of all.
+int resume_sweep(const SweepArgs& args, const std::vector<std::string>& command_line) {
+  if (!args.scenario.empty() || !args.out.empty() || !args.emit.empty() || !args.params.empty() || !args.set.empty())
+    throw InputError("", 0, "--resume", "takes only the sweep folder (its plan.json names the scenario and grid)");
+  const std::filesystem::path dir = args.resume;
+  const SweepPlan plan = read_plan(dir);
+  const LoadedScenario loaded = load_checked(plan.scenario, plan.set);
+  check_jobs_load(plan.scenario, plan.set, plan.jobs);
+  const std::vector<BatchJob> jobs = unfinished_jobs(plan);
+  if (!args.quiet)
+    std::printf("sweep %s: %zu of %zu runs to run again, %d at a time\n", dir.c_str(), jobs.size(), plan.jobs.size(),
+                args.jobs);
+  nlohmann::json sweep = sweep_json(plan, args.jobs);
+  sweep["resumed_runs"] = jobs.size();
+  return run_cells(args, dir, plan, jobs, loaded.scenario, {"sweep", command_line, plan.scenario, plan.set}, sweep);
 }
 
 }  // namespace
@@ -135,10 +182,13 @@ void add_sweep(CLI::App& app, SweepArgs& args) {
       "sweep.csv lists every run; aggregate.csv gives per combination and algorithm the mean, sample\n"
       "standard deviation and 95 % confidence interval (Student t) over the seeds. A failing run is\n"
       "recorded and the sweep goes on; aggregate.csv lists its seed (not_ok_seeds) and the sweep exits 1.\n"
+      "Only runs that finished enter the tables' statistics: an interrupted, failed or missing run is one\n"
+      "`error:` row of sweep.csv with its reason. Ctrl-C stops the sweep (exit 130, tables of what\n"
+      "finished); --resume DIR runs exactly the cells that did not finish and remakes the tables.\n"
       "With --emit DIR nothing runs: DIR gets the plan (plan.json), one relslam run line per cell\n"
       "(commands.txt) and launchers for GNU parallel (parallel.sh) and Slurm (slurm.sbatch); once they\n"
       "ran, --aggregate DIR writes sweep.csv and aggregate.csv as a local sweep does, listing missing\n"
-      "or failed cells (exit status 1 while any are).",
+      "or failed cells (exit status 1 while any are; 2 when a cell's files are damaged).",
       "scenarios/s-dens-q.json");
   // With --emit or --aggregate the folder is given there.
   cmd->get_option("scenario")->required(false);
@@ -149,6 +199,8 @@ void add_sweep(CLI::App& app, SweepArgs& args) {
   cmd->add_option("--emit", args.emit, "Write the sweep into this folder as a plan with launchers; run nothing");
   cmd->add_option("--aggregate", args.aggregate,
                   "Make sweep.csv and aggregate.csv from the cells of this sweep folder");
+  cmd->add_option("--resume", args.resume,
+                  "Run the missing, failed and interrupted cells of this sweep folder, then its tables");
   cmd->add_option("--slurm-time", args.slurm_time, "With --emit: time limit per Slurm task")->capture_default_str();
   cmd->add_option("--slurm-mem", args.slurm_memory, "With --emit: memory per Slurm task")->capture_default_str();
   cmd->add_option("--slurm-throttle", args.slurm_throttle, "With --emit: Slurm tasks running at once")
@@ -157,8 +209,12 @@ void add_sweep(CLI::App& app, SweepArgs& args) {
 }
 
 int run_sweep(const SweepArgs& args, const std::vector<std::string>& command_line) {
+  // From the start: a signal at any moment ends the sweep with its tables, never half-made.
+  catch_interrupts();
   if (!args.aggregate.empty()) return aggregate_sweep(args);
-  if (args.scenario.empty()) throw InputError("", 0, "scenario", "give a scenario file (or --aggregate DIR)");
+  if (!args.resume.empty()) return resume_sweep(args, command_line);
+  if (args.scenario.empty())
+    throw InputError("", 0, "scenario", "give a scenario file (or --aggregate DIR, --resume DIR)");
   if (!args.emit.empty() && !args.out.empty())
     throw InputError("", 0, "--out", "--emit DIR is the sweep folder; leave out --out");
   if (args.emit.empty() && args.out.empty())
@@ -171,50 +227,32 @@ int run_sweep(const SweepArgs& args, const std::vector<std::string>& command_lin
   const std::vector<BatchJob> jobs = grid_jobs(axes, seeds, out);
   check_jobs_load(args.scenario, args.set, jobs);
   prepare_run_folder(out, args.force);
-  nlohmann::json grid = nlohmann::json::object();
-  for (const GridAxis& axis : axes)
-    for (const AxisValue& v : axis.values) grid[axis.name].push_back(v.label);
-  nlohmann::json sweep = {{"grid", grid}, {"seeds", seeds}, {"runs", jobs.size()}};
-  if (args.emit.empty()) sweep["jobs"] = args.jobs;
-  const Invocation invocation{"sweep", command_line, args.scenario, args.set};
-  // An emitted plan is complete once written; a sweep run here is running until its cells end.
-  write_manifest(out, loaded.scenario, invocation, {{"sweep", sweep}},
-                 args.emit.empty() ? kRunStatusRunning : kRunStatusOk);
-  // Every sweep folder has its plan, so --aggregate can remake the tables of any of them.
+  // Every sweep folder has its plan, so --aggregate and --resume can take up any of them.
   const SweepPlan plan{std::filesystem::absolute(args.scenario).lexically_normal().string(), args.set, axes, seeds,
                        jobs};
   write_plan(out, plan);
-
-  if (!args.emit.empty()) {
-    write_commands(out, plan);
-    write_parallel_launcher(out, relslam_bin_dir());
-    write_slurm_launcher(out, relslam_bin_dir(), loaded.scenario.name, jobs.size(),
-                         {args.slurm_time, args.slurm_memory, args.slurm_throttle});
+  const Invocation invocation{"sweep", command_line, args.scenario, args.set};
+  if (args.emit.empty()) {
     if (!args.quiet)
-      std::printf(
-          "sweep %s: %zu runs written to %s/commands.txt, none run. Run them with\n"
-          "  %s/parallel.sh --jobs 2        (GNU parallel; -S hosts for other machines)\n"
-          "  sbatch %s/slurm.sbatch         (Slurm)\n"
-          "then: relslam sweep --aggregate %s\n",
-          loaded.scenario.name.c_str(), jobs.size(), out.c_str(), out.c_str(), out.c_str(), out.c_str());
-    return 0;
+      std::printf("sweep %s: %zu combinations x %d seeds = %zu runs, %d at a time\n", loaded.scenario.name.c_str(),
+                  jobs.size() / seeds.size(), args.seeds, jobs.size(), args.jobs);
+    return run_cells(args, out, plan, jobs, loaded.scenario, invocation, sweep_json(plan, args.jobs));
   }
+
+  // An emitted plan is complete once written.
+  write_manifest(out, loaded.scenario, invocation, {{"sweep", sweep_json(plan, 0)}}, kRunStatusOk);
+  write_commands(out, plan);
+  write_parallel_launcher(out, relslam_bin_dir());
+  write_slurm_launcher(out, relslam_bin_dir(), loaded.scenario.name, jobs.size(),
+                       {args.slurm_time, args.slurm_memory, args.slurm_throttle});
   if (!args.quiet)
-    std::printf("sweep %s: %zu combinations x %d seeds = %zu runs, %d at a time\n", loaded.scenario.name.c_str(),
-                jobs.size() / seeds.size(), args.seeds, jobs.size(), args.jobs);
-  catch_interrupts();
-  const std::vector<BatchResult> results =
-      run_batch(args.scenario, args.set, jobs, args.jobs, !args.quiet, command_line);
-  write_tables(args, out, axes, results);
-  const bool interrupted = interrupt_requested();
-  write_manifest(out, loaded.scenario, invocation, {{"sweep", sweep}},
-                 interrupted ? kRunStatusInterrupted : kRunStatusOk);
-  // Listed even with --quiet, and exit 1 as --aggregate does: an incomplete table must not pass
-  // unnoticed (aggregate.csv names the seeds in not_ok_seeds).
-  for (const BatchResult& r : results)
-    if (!r.error.empty()) std::printf("run %s failed: %s\n", r.job.folder.c_str(), r.error.c_str());
-  if (interrupted) return kInterruptedExit;
-  return any_run_failed(results) ? 1 : 0;
+    std::printf(
+        "sweep %s: %zu runs written to %s/commands.txt, none run. Run them with\n"
+        "  %s/parallel.sh --jobs 2        (GNU parallel; -S hosts for other machines)\n"
+        "  sbatch %s/slurm.sbatch         (Slurm)\n"
+        "then: relslam sweep --aggregate %s\n",
+        loaded.scenario.name.c_str(), jobs.size(), out.c_str(), out.c_str(), out.c_str(), out.c_str());
+  return 0;
 }
 
 }  // namespace relslam::eval

@@ -62,7 +62,7 @@ int run_victoria_park_command(const VictoriaParkArgs& args, const std::vector<st
   try {
     result = run_victoria_park(loaded, log, args.out, !args.quiet);
   } catch (const std::exception& e) {
-    write_manifest(args.out, loaded.scenario, invocation, {}, failed_status(e.what()));
+    record_failure(args.out, loaded.scenario, invocation, e);
     throw;
   }
   nlohmann::json extra = result.experiment.source;

@@ -4,8 +4,8 @@
 
 namespace relslam::eval {
 
-// Exit codes: 0 success, 1 internal error (a bug), 2 bad input (file, key, value),
-// CLI11's own codes for command-line syntax errors.
+// Exit codes: 0 success, 1 internal error (a bug) or a sweep with unfinished runs, 2 bad input
+// (a command line, file, key or value), 130 a run or sweep stopped by SIGINT or SIGTERM.
 int run_cli(int argc, const char* const* argv);
 
 }  // namespace relslam::eval

@@ -25,8 +25,11 @@ struct ScenarioKey {
 const std::vector<ScenarioKey>& scenario_keys();
 // nullptr if there is no such key.
 const ScenarioKey* find_scenario_key(const std::string& key);
+// The problem to report for a key the registry does not have: "unknown key; did you mean
+// \"sim.density\"? (relslam keys lists them all)".
+std::string unknown_key_problem(const std::string& key);
 // The key table for README.md (Markdown), defaults read from a default Scenario.
-std::string scenario_keys_markdown();
+std::string scenario_keys_markdown(const std::string& prefix = "");
 
 // Every key with its current value (degrees for *_deg keys), nested as in the files: the
 // fully resolved scenario written to manifest.json. parse_scenario(to_json(s)) == s.

@@ -17,6 +17,7 @@ namespace relslam::eval {
 struct Override {
   std::string key;
   std::string value;
+  std::string origin = "--set";  // the option that gave it, named in messages (--set, --param)
 };
 // Splits "key=value"; throws InputError when there is no '='.
 Override parse_override(const std::string& text);

@@ -35,8 +35,8 @@ struct BatchJob {
 std::vector<BatchJob> grid_jobs(const std::vector<GridAxis>& axes, const std::vector<int>& seeds,
                                 const std::filesystem::path& out);
 
-// Loads the scenario with every job's overrides, so a bad value fails before hours of runs
-// (throws the InputError naming it).
+// Loads the scenario with every job's overrides, so a bad value or a cell with no algorithm to
+// run fails before hours of runs (throws the InputError naming it).
 void check_jobs_load(const std::string& scenario_file, const std::vector<std::string>& base_overrides,
                      const std::vector<BatchJob>& jobs);
 

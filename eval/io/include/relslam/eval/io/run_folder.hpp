@@ -14,7 +14,9 @@ namespace relslam::eval {
 // Creates `dir` (and parents). An existing non-empty folder is refused, unless `force` and its
 // manifest.json says it is a relslam run (it names a relslam_version), in any state: running
 // (killed), interrupted, failed or ok; then its contents are deleted. A folder without such a
-// manifest is never deleted, so a mistyped --out cannot wipe a home directory.
+// manifest is never deleted, so a mistyped --out cannot wipe a home directory. A folder holding
+// nothing but the manifest of a run refused for bad input (record_failure) is reused without
+// `force`: nothing was computed there, and the corrected command should just work.
 // Throws InputError(field "--out").
 void prepare_run_folder(const std::filesystem::path& dir, bool force);
 
@@ -44,6 +46,17 @@ inline constexpr const char* kRunStatusOk = "ok";
 inline constexpr const char* kRunStatusInterrupted = "interrupted";
 // "failed: <why>" for an error that ended the run.
 std::string failed_status(const std::string& why);
+// The status of a run refused for bad input: "failed: bad input: <why>".
+std::string bad_input_status(const std::string& why);
+
+// Finishes the manifest of a run that `error` ended. Bad input (an InputError: a file, key or
+// value the user can correct) found after the folder was made leaves only the manifest, marked
+// bad_input_status, so the corrected command reuses the folder without --force; any other
+// error keeps what the run wrote, for the post-mortem, under failed_status.
+void record_failure(const std::filesystem::path& dir, const Scenario& scenario, const Invocation& invocation,
+                    const std::exception& error);
+// dir/manifest.json as JSON: an object, or null when there is none or it does not parse.
+nlohmann::json read_manifest(const std::filesystem::path& dir);
 // The status in dir/manifest.json: kRunStatusOk for a manifest from before statuses existed
 // (it was written only at the end), "" when there is no readable manifest.
 std::string manifest_status(const std::filesystem::path& dir);

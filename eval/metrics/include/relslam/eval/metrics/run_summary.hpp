@@ -27,8 +27,9 @@ struct RunStatus {
     NotRun,   // never stepped
     Ok,       // processed every frame
     Failed,   // an exception, a non-finite estimate, or the algorithm gave up
-    Stopped,  // over its time budget: the rest of the stream was not processed
-    Ratio,    // not a run: the row of ratios between two runs
+    Stopped,      // over its time budget: the rest of the stream was not processed
+    Ratio,        // not a run: the row of ratios between two runs
+    Interrupted,  // SIGINT or SIGTERM ended the stream early: the row covers the frames before it
   };
   Kind kind = Kind::NotRun;
   int iteration = -1;  // where it failed or stopped; -1 when no single iteration is to blame
@@ -37,11 +38,14 @@ struct RunStatus {
   static RunStatus ok() { return {Kind::Ok, -1, ""}; }
   static RunStatus failed(int iteration, std::string reason) { return {Kind::Failed, iteration, std::move(reason)}; }
   static RunStatus stopped(int iteration, std::string reason) { return {Kind::Stopped, iteration, std::move(reason)}; }
+  // `iteration` is the first frame the run did not process.
+  static RunStatus interrupted(int iteration) { return {Kind::Interrupted, iteration, ""}; }
   bool is_ok() const { return kind == Kind::Ok; }
-  // "ok", "failed at iteration 30: why", "failed: why", "stopped at iteration 4: why", "ratio", "not run".
+  // "ok", "failed at iteration 30: why", "failed: why", "stopped at iteration 4: why",
+  // "interrupted at iteration 2240", "ratio", "not run".
   std::string text() const;
 };
-// The kind alone: "ok", "failed", "stopped", "ratio", "not run".
+// The kind alone: "ok", "failed", "stopped", "interrupted", "ratio", "not run".
 std::string_view to_string(RunStatus::Kind kind);
 
 // The scores of a planar run (spec relative_plane_em.md §7.2) that the point columns lack.
@@ -91,6 +95,11 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryR
 // "landmarks_on_map" -> "planes_on_map"), or as is for the point half. summary.csv, sweep.csv and
 // aggregate.csv all name their columns through it.
 std::string summary_column(std::string_view name, bool planar);
+
+// A signal stopped the frames before `iteration`: every row still "ok" becomes "interrupted at
+// iteration <iteration>", so no table counts a cut run as finished; failed and stopped rows keep
+// the reason they ended for.
+void mark_interrupted(std::vector<SummaryRow>& rows, int iteration);
 
 // Element-wise a / b of the scores (landmark, position, trajectory errors and run times).
 SummaryRow ratio_row(const SummaryRow& a, const SummaryRow& b);

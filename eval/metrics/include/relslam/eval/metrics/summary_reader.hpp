@@ -16,9 +16,14 @@ namespace relslam::eval {
 // Throws std::invalid_argument on other text.
 RunStatus parse_run_status(std::string_view text);
 
+// Errors, times and counts of a real run are far below this; a larger magnitude is damage, and
+// refusing it keeps the sums and squares of a sweep's statistics finite.
+inline constexpr double kLargestSummaryValue = 1e150;
+
 // The rows of a summary.csv, the ratio row (if any) last as write_summary put it. Reads point
 // and planar spellings of the columns (summary_column). Throws InputError (file:line: column:
-// problem) on a missing column or a field that is not a number.
+// problem) on a missing column, a field that is not a number, or one beyond
+// kLargestSummaryValue.
 std::vector<SummaryRow> read_summary(const std::filesystem::path& file);
 
 }  // namespace relslam::eval

@@ -19,6 +19,7 @@ struct SweepArgs : ScenarioCommandArgs {
   int jobs = 2;
   std::string emit;       // write the sweep into this folder as a plan and launchers, run nothing
   std::string aggregate;  // make the tables of this sweep folder from whatever cells it holds
+  std::string resume;     // run the missing, failed and interrupted cells of this sweep folder
   std::string slurm_time = "01:00:00";
   std::string slurm_memory = "2G";
   int slurm_throttle = 8;
