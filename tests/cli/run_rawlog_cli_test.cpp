@@ -1,6 +1,7 @@
 // relslam run --rawlog: any MRPT range-bearing rawlog through both algorithms, scored against
 // ground truth in MRPT's text formats.
 #include "relslam/eval/io/range_bearing.hpp"
+#include "relslam/eval/io/rawlog.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -16,9 +17,10 @@ using test::CsvTable;
 using test::read_csv;
 using test::run_relslam;
 
-// Our TUM path and landmark CSV as MRPT's simul-landmarks writes them (MRPT axes).
+// Our TUM path and landmark CSV as MRPT's simul-landmarks writes them (MRPT axes), in an MRPT
+// world frame whose pose relative to our world's origin is `world` (identity: the same origin).
 void write_mrpt_truth(const std::filesystem::path& run, const std::filesystem::path& path_txt,
-                      const std::filesystem::path& landmarks_txt) {
+                      const std::filesystem::path& landmarks_txt, const Rigid3& world = Rigid3()) {
   std::ofstream path(path_txt);
   path.precision(17);
   path << "% x y z yaw pitch roll\n";
@@ -30,8 +32,8 @@ void write_mrpt_truth(const std::filesystem::path& run, const std::filesystem::p
     const Eigen::Matrix3d r_o = Eigen::Quaterniond(qw, qx, qy, qz).normalized().toRotationMatrix();
     Eigen::Matrix3d a;
     a << 0, 1, 0, 0, 0, 1, 1, 0, 0;
-    const Eigen::Matrix3d r = a.transpose() * r_o * a;
-    const Eigen::Vector3d p = eval::mrpt_from_robot({x, y, z});
+    const Eigen::Matrix3d r = world.rotation * a.transpose() * r_o * a;
+    const Eigen::Vector3d p = world * eval::mrpt_from_robot({x, y, z});
     path << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << std::atan2(r(1, 0), r(0, 0)) << ' ' << -std::asin(r(2, 0))
          << ' ' << std::atan2(r(2, 1), r(2, 2)) << '\n';
   }
@@ -39,7 +41,8 @@ void write_mrpt_truth(const std::filesystem::path& run, const std::filesystem::p
   landmarks.precision(17);
   const CsvTable truth = read_csv(run / "ground_truth_landmarks.csv");
   for (std::size_t i = 0; i < truth.rows.size(); ++i) {
-    const Eigen::Vector3d p = eval::mrpt_from_robot({truth.number(i, "x"), truth.number(i, "y"), truth.number(i, "z")});
+    const Eigen::Vector3d p =
+        world * eval::mrpt_from_robot({truth.number(i, "x"), truth.number(i, "y"), truth.number(i, "z")});
     landmarks << p.x() << ' ' << p.y() << ' ' << p.z() << " 0 0 0 " << truth.text(i, "id") << '\n';
   }
 }
@@ -103,6 +106,56 @@ TEST(RunRawlog, ATruthPathShorterThanTheLogIsABadInput) {
                               (dir / "sim/observations.rawlog").string(), "--truth-path", (dir / "path.txt").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("path.txt: --truth-path: 1 rows for 150 frames"), std::string::npos) << r.err;
+}
+
+// A rawlog run writes the truth it was given as a simulated run has it (our axes and world,
+// the log's times), its trajectories carry the log's times, and `relslam convert tum` puts them
+// back into MRPT's axes and world frame: the truth path then equals MRPT's truth file row by row.
+TEST(RunRawlog, TruthFilesAndTrajectoriesCarryTheLogsTimesAndConvertGivesMrptsFrame) {
+  test::ScratchDir dir;
+  ASSERT_EQ(run_relslam(small_ekf_run(dir / "sim")).exit_code, 0);
+  const Rigid3 world{Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()).toRotationMatrix(), {5, -2, 1}};
+  write_mrpt_truth(dir / "sim", dir / "path.txt", dir / "landmarks.txt", world);
+  const auto r = run_relslam({"run", "--out", (dir / "log").string(), "-q", "--rawlog",
+                              (dir / "sim/observations.rawlog").string(), "--truth-path", (dir / "path.txt").string(),
+                              "--truth-landmarks", (dir / "landmarks.txt").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto simulated = test::read_lines(dir / "sim/ground_truth_path.tum");
+  const auto recorded = test::read_lines(dir / "log/ground_truth_path.tum");
+  const auto estimated = test::read_lines(dir / "log/relative_point/trajectory.tum");
+  ASSERT_EQ(recorded.size(), 150u);
+  ASSERT_EQ(estimated.size(), 150u);
+  for (std::size_t k = 0; k < recorded.size(); ++k) {
+    std::istringstream sim_row(simulated[k]), log_row(recorded[k]), est_row(estimated[k]);
+    double st, sx, sy, sz, lt, lx, ly, lz, et;
+    sim_row >> st >> sx >> sy >> sz;
+    log_row >> lt >> lx >> ly >> lz;
+    est_row >> et;
+    EXPECT_DOUBLE_EQ(lt, eval::kSimulationEpoch_s + static_cast<double>(k)) << "the log's time, row " << k;
+    EXPECT_DOUBLE_EQ(et, lt) << "row " << k;
+    EXPECT_NEAR((Eigen::Vector3d(lx, ly, lz) - Eigen::Vector3d(sx, sy, sz)).norm(), 0, 1e-9) << "row " << k;
+  }
+  const CsvTable true_landmarks = read_csv(dir / "log/ground_truth_landmarks.csv");
+  const CsvTable sim_landmarks = read_csv(dir / "sim/ground_truth_landmarks.csv");
+  ASSERT_EQ(true_landmarks.rows.size(), sim_landmarks.rows.size());
+  for (std::size_t i = 0; i < true_landmarks.rows.size(); ++i) {
+    EXPECT_EQ(true_landmarks.text(i, "log_id"), sim_landmarks.text(i, "id"));
+    EXPECT_NEAR(true_landmarks.number(i, "z"), sim_landmarks.number(i, "z"), 1e-9);
+  }
+
+  ASSERT_EQ(run_relslam({"convert", "tum", (dir / "log").string(), "--out", (dir / "mrpt").string()}).exit_code, 0);
+  const auto converted = test::read_lines(dir / "mrpt/ground_truth_path.tum");
+  const auto mrpt_rows = test::read_lines(dir / "path.txt");  // a comment line, then x y z yaw pitch roll
+  ASSERT_EQ(converted.size() + 1, mrpt_rows.size());
+  for (std::size_t k = 0; k < converted.size(); ++k) {
+    std::istringstream ours(converted[k]), theirs(mrpt_rows[k + 1]);
+    double t, x, y, z, mx, my, mz;
+    ours >> t >> x >> y >> z;
+    theirs >> mx >> my >> mz;
+    EXPECT_NEAR((Eigen::Vector3d(x, y, z) - Eigen::Vector3d(mx, my, mz)).norm(), 0, 1e-9) << "row " << k;
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir / "mrpt/relative_point/trajectory.tum"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "mrpt/ekf6d/trajectory.tum"));
 }
 
 // MRPT's own 6D EKF-SLAM demo log, where the mrpt-common package is installed.

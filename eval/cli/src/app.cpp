@@ -4,6 +4,8 @@
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/cli/commands/bench_binning.hpp"
+#include "relslam/eval/cli/commands/compare.hpp"
+#include "relslam/eval/cli/commands/convert_tum.hpp"
 #include "relslam/eval/cli/commands/em_bench.hpp"
 #include "relslam/eval/cli/commands/rawlog_info.hpp"
 #include "relslam/eval/cli/commands/render.hpp"
@@ -48,6 +50,8 @@ Examples:
   relslam victoria-park --window 1181:1642 --out runs/vp-1181  # Victoria Park against GPS (thesis 6.8)
   relslam convert victoria-park --out runs/vp.rawlog           # Victoria Park as an MRPT rawlog
   relslam render runs/f8 --iteration 1200 --out map.png        # top view of the map (thesis Fig 127)
+  relslam render runs/kf --overview --out kf.png               # every algorithm over the truth, any run
+  relslam compare runs/f8 runs/f8-adaptive --out both.png      # two runs side by side
 
 Exit codes: 0 ok, 2 bad input (a command line, file, line or key: the message names it and says what
 to do), 1 internal error or an unfinished sweep, 130 interrupted (Ctrl-C, SIGTERM).)";
@@ -121,12 +125,16 @@ int run_cli(int argc, const char* const* argv) {
   add_victoria_park(app, victoria_park);
   ConvertVictoriaParkArgs convert;
   add_convert(app, convert);
+  ConvertTumArgs convert_tum;
+  add_convert_tum(*app.get_subcommand("convert"), convert_tum);
   BenchBinningArgs bench_binning;
   add_bench_binning(app, bench_binning);
   EmBenchArgs em_bench;
   add_em_bench(app, em_bench);
   RenderArgs render;
   add_render(app, render);
+  CompareArgs compare;
+  add_compare(app, compare);
   app.add_subcommand("algorithms", "List the algorithms a scenario's \"algorithms\" key may name");
   bool markdown = false;
   std::string keys_prefix;
@@ -149,12 +157,15 @@ int run_cli(int argc, const char* const* argv) {
     if (app.got_subcommand("sweep")) return run_sweep(sweep, command_line);
     if (app.got_subcommand("tune-ekf")) return run_tune_ekf(tune_ekf, command_line);
     if (app.got_subcommand("victoria-park")) return run_victoria_park_command(victoria_park, command_line);
-    if (app.got_subcommand("convert")) return run_convert_victoria_park(convert);
+    if (app.got_subcommand("convert"))
+      return app.get_subcommand("convert")->got_subcommand("tum") ? run_convert_tum(convert_tum)
+                                                                   : run_convert_victoria_park(convert);
     if (app.got_subcommand("scenario")) return run_scenario(scenario);
     if (app.got_subcommand("rawlog")) return run_rawlog(rawlog);
     if (app.got_subcommand("bench-binning")) return run_bench_binning(bench_binning, command_line);
     if (app.got_subcommand("em-bench")) return run_em_bench_command(em_bench, command_line);
     if (app.got_subcommand("render")) return run_render(render);
+    if (app.got_subcommand("compare")) return run_compare(compare);
     if (app.got_subcommand("algorithms")) {
       std::cout << "On point landmarks (kind simulation, rawlogs, Victoria Park):\n";
       for (const AlgorithmEntry& a : algorithm_registry()) std::cout << "  " << a.name << "\n      " << a.help << '\n';

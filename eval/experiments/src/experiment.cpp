@@ -141,6 +141,7 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
   if (std::find(scenario.algorithms.begin(), scenario.algorithms.end(), "ekf6d") != scenario.algorithms.end() &&
       scenario.ekf6d.association == EkfAssociation::Known && !source.ids_everywhere())
     throw loaded.error("ekf6d.association", "the rawlog does not give every landmark an id; use jcbb or nn");
+  source.record_into(out);
   Experiment experiment(adapted, source, out);
   ExperimentResult result = experiment.run(progress);
   if (!adapted.scenario.derived.empty()) result.source["derived"] = derived_json(adapted.scenario);
@@ -151,8 +152,9 @@ void print_results(const ExperimentResult& result, const std::string& title) {
   std::printf("%s: %d iterations\n", title.c_str(), result.iterations);
   // Planar runs score planes (the key-point error e_ends), the others landmarks.
   const bool planar = !result.rows.empty() && result.rows.front().planar.has_value();
-  std::printf("%-20s %-8s %10s %14s %10s %10s %10s\n", "algorithm", "status", planar ? "planes" : "map size",
-              planar ? "mean map err" : "mean lm err", "pos err", "median ms", "p95 ms");
+  // Errors are in the world's units: a simulation's own, metres for recorded data.
+  std::printf("%-20s %-8s %10s %14s %10s %10s %10s\n", "algorithm", "status", planar ? "planes" : "landmarks",
+              planar ? "map err" : "landmark err", "pos err", "median ms", "p95 ms");
   auto line = [](const SummaryRow& r) {
     std::printf("%-20s %-8s %10d %14.4g %10.4g %10.4g %10.4g\n", r.algorithm.c_str(),
                 std::string(to_string(r.status.kind)).c_str(), r.landmarks_on_map, r.final_mean_landmark_error,
@@ -161,10 +163,14 @@ void print_results(const ExperimentResult& result, const std::string& title) {
   for (const SummaryRow& r : result.rows) line(r);
   if (result.ratio) {
     const SummaryRow& r = *result.ratio;
-    std::printf("%-20s %-8s %10s %14.3g %10.3g %10.3g %10.3g   (over %d iterations)\n", r.algorithm.c_str(), "ratio",
-                "", r.final_mean_landmark_error, r.final_position_error, r.runtime.median_ms, r.runtime.p95_ms,
-                r.iterations);
+    std::printf("%-20s %-8s %10s %14.3g %10.3g %10.3g %10.3g\n", r.algorithm.c_str(), "ratio", "",
+                r.final_mean_landmark_error, r.final_position_error, r.runtime.median_ms, r.runtime.p95_ms);
+    const std::string a = r.algorithm.substr(0, r.algorithm.find('/')), b = r.algorithm.substr(a.size() + 1);
+    std::printf("(ratio: %s's score divided by %s's over the %d iterations both processed; below 1, %s's is lower)\n",
+                a.c_str(), b.c_str(), r.iterations, a.c_str());
   }
+  std::printf("(landmark err: mean distance of each mapped landmark from the truth at the end; pos err: of the\n"
+              " last pose; in the world's units, metres for recorded data; ms: time per iteration)\n");
   for (const SummaryRow& r : result.rows)
     if (!r.status.is_ok()) std::printf("%s: %s\n", r.algorithm.c_str(), r.status.text().c_str());
 }

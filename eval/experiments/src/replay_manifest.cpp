@@ -1,6 +1,7 @@
 #include "relslam/eval/experiments/replay_manifest.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/io/tum_writer.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -13,16 +14,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The pose at iteration k in a TUM file ("t x y z qx qy qz qw", t = iteration), if it has one.
+// The pose at iteration k in a TUM file (t = iteration), if it has one.
 std::optional<Rigid3> recorded_pose(const fs::path& tum, int k) {
-  std::ifstream in(tum);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream row(line);
-    double t, x, y, z, qx, qy, qz, qw;
-    if (!(row >> t >> x >> y >> z >> qx >> qy >> qz >> qw)) continue;
-    if (static_cast<int>(std::lround(t)) == k) return Rigid3::from(Eigen::Quaterniond(qw, qx, qy, qz), {x, y, z});
-  }
+  if (!fs::exists(tum)) return std::nullopt;
+  for (const TumPose& row : read_tum(tum))
+    if (static_cast<int>(std::lround(row.time)) == k) return row.pose;
   return std::nullopt;
 }
 
@@ -39,7 +35,7 @@ ReplayManifest read_replay_manifest(const fs::path& run_dir) {
     throw InputError(file.string(), 0, "", std::string("not a relslam manifest: ") + e.what());
   }
   if (!manifest.contains("scenario") || manifest.contains("rawlog") || manifest.contains("victoria_park"))
-    throw InputError(file.string(), 0, "", "render replays simulated runs (relslam run SCENARIO); this one is not");
+    throw InputError(file.string(), 0, "", "render replays simulated runs (relslam run SCENARIO); this one is not: draw it from its files with --overview");
   LoadedScenario loaded = parse_scenario_with_overrides(manifest["scenario"].dump(), file.string(), {});
   return {run_dir, file, std::move(manifest), std::move(loaded)};
 }

@@ -1,6 +1,7 @@
 #include "relslam/eval/sources/rawlog_source.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/io/mrpt_ground_truth.hpp"
 
 namespace relslam::eval {
@@ -33,13 +34,31 @@ bool RawlogSource::ids_everywhere() const {
   return true;
 }
 
+void RawlogSource::record_into(const std::filesystem::path& dir) {
+  if (truth_.known) {
+    std::map<int, int> id_of_row;
+    for (const auto& [id, row] : row_of_id_) id_of_row[row] = id;
+    CsvWriter landmarks(dir / "ground_truth_landmarks.csv", {"id", "x", "y", "z", "dynamic", "log_id"});
+    for (std::size_t row = 0; row < truth_.positions.size(); ++row) {
+      const Eigen::Vector3d& p = truth_.positions[row];
+      landmarks.row(row, p.x(), p.y(), p.z(), false, id_of_row[static_cast<int>(row)]);
+    }
+    landmarks.close();
+  }
+  if (files_.truth_path) truth_path_file_ = std::make_unique<TumWriter>(dir / "ground_truth_path.tum");
+}
+
 void RawlogSource::stream(const Consumer& consume) {
   for (const RawlogFrame& frame : log_.frames) {
-    const ObservationFrame observation = observation_frame(frame);
+    ObservationFrame observation = observation_frame(frame);
+    // MRPT reads a timestamp of 0 as "none".
+    if (frame.timestamp_s > 0) observation.time_s = frame.timestamp_s;
     TruthFrame t;
     t.iteration = frame.index;
     t.pose_known = files_.truth_path.has_value();
     if (t.pose_known) t.world_T_robot = robot_axes_from_mrpt(first_inverse_ * path_[frame.index]);
+    if (truth_path_file_)
+      truth_path_file_->write(observation.time_s.value_or(static_cast<double>(frame.index)), t.world_T_robot);
     for (const RawlogMeasurement& m : frame.measurements) {
       const auto it = row_of_id_.find(m.landmark_id);
       // Scoring ids are truth rows when there are truth landmarks, else the rawlog's own ids.
@@ -47,6 +66,7 @@ void RawlogSource::stream(const Consumer& consume) {
     }
     consume(observation, t);
   }
+  if (truth_path_file_) truth_path_file_->close();
 }
 
 nlohmann::json RawlogSource::describe() const {

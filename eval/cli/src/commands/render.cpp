@@ -6,6 +6,8 @@
 #include "relslam/eval/io/map_render.hpp"
 #include "relslam/eval/io/planar_render.hpp"
 #include "relslam/eval/io/progress.hpp"
+#include "relslam/eval/io/run_folder.hpp"
+#include "relslam/eval/io/run_overview.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
@@ -52,16 +54,6 @@ RenderFrame frame_for(const RenderArgs& args, const Scene& scene, const RenderOp
   if (args.fit == "map") return fit_everything(scene, options);
   if (args.fit == "robot") return fit_robot(scene, options);
   throw InputError("", 0, "--fit", "map or robot, got " + args.fit);
-}
-
-void write_image(const std::string& file, const cv::Mat& image) {
-  bool ok = false;
-  try {
-    ok = cv::imwrite(file, image);
-  } catch (const cv::Exception& e) {
-    throw InputError(file, 0, "--out", std::string("cannot write an image here: ") + e.what());
-  }
-  if (!ok) throw InputError(file, 0, "--out", "cannot write an image here (a known image extension such as .png?)");
 }
 
 template <class Replay>
@@ -136,8 +128,13 @@ void add_render(CLI::App& app, RenderArgs& args) {
       "  relslam render runs/f8 --iteration 1200 --fit robot --labels on --out close.png   # Fig 129 style\n"
       "  relslam render runs/dyn --algorithm ekf6d --iteration 900 --out ekf.png          # Figs 153-156\n"
       "  relslam render runs/f8 --video runs/f8/run.mp4 --every 20\n"
-      "  relslam render runs/hall --iteration 300 --out hall.png            # a planar run, Fig 67 style");
-  cmd->add_option("run", args.run_dir, "Run folder (written by relslam run from a scenario)")->required();
+      "  relslam render runs/hall --iteration 300 --out hall.png            # a planar run, Fig 67 style\n"
+      "With --overview (and by default for a run on recorded data, which cannot be replayed) the picture\n"
+      "is drawn from the folder's files alone: every algorithm's trajectory and final map (landmarks.csv,\n"
+      "planes.csv) over the true path, landmarks or walls where the folder has them; any run folder, a\n"
+      "sweep's cells too:\n"
+      "  relslam render runs/kf-demo --out runs/kf-demo/overview.png");
+  cmd->add_option("run", args.run_dir, "Run folder (relslam run, victoria-park, a sweep's cell)")->required();
   cmd->add_option("--iteration,-k", args.iteration,
                   "Iteration to draw (default: the last; with --video: the last frame)");
   cmd->add_option("--out,-o", args.out, "Image to write (.png)");
@@ -160,13 +157,42 @@ void add_render(CLI::App& app, RenderArgs& args) {
   cmd->add_option("--labels", args.labels,
                   "Point and group labels: auto (when few points or groups are in view), on, off")
       ->capture_default_str();
+  cmd->add_flag("--overview", args.overview,
+                "Every algorithm's path and final map over the truth, from the run's files (no replay); the "
+                "default for runs that were not simulated (rawlogs, Victoria Park)");
   cmd->add_flag("--quiet,-q", args.quiet, "Print nothing but errors");
 }
+
+namespace {
+
+// A run on recorded data has no world to replay: its picture comes from its files.
+bool replayable(const std::filesystem::path& run) {
+  const nlohmann::json manifest = read_manifest(run);
+  return manifest.is_object() && manifest.contains("scenario") && !manifest.contains("rawlog") &&
+         !manifest.contains("victoria_park");
+}
+
+int render_overview_of(const RenderArgs& args, const RenderOptions& options) {
+  if (args.out.empty()) throw InputError("", 0, "--out", "give --out IMAGE (the overview is one picture)");
+  if (args.iteration >= 0 || !args.video.empty() || !args.algorithm.empty())
+    throw InputError("", 0, "--overview",
+                     "draws the whole run from its files; --iteration, --video and --algorithm need a simulated run "
+                     "to replay");
+  write_image(args.out, render_overview(read_run_overview(args.run_dir), options));
+  if (!args.quiet) std::printf("wrote %s: every algorithm of %s\n", args.out.c_str(), args.run_dir.c_str());
+  return 0;
+}
+
+}  // namespace
 
 int run_render(const RenderArgs& args) {
   if (args.out.empty() && args.video.empty())
     throw InputError("", 0, "--out", "give --out IMAGE, --video MP4, or both");
   const RenderOptions options = render_options(args);
+  const bool by_default = args.iteration < 0 && args.video.empty() && args.algorithm.empty() &&
+                          std::filesystem::is_directory(args.run_dir) && !replayable(args.run_dir) &&
+                          std::filesystem::exists(std::filesystem::path(args.run_dir) / "manifest.json");
+  if (args.overview || by_default) return render_overview_of(args, options);
   ReplayManifest manifest = read_replay_manifest(args.run_dir);
   // The one place the run's kind matters: each replay rebuilds its own kind of scene, and the
   // drawing overloads (map_render.hpp, planar_render.hpp) follow the scene's type.

@@ -21,6 +21,10 @@ struct ObservationFrame {
   // (wheel odometry) measured it, when it has any. The thesis's algorithms map without it; the
   // EKF baselines use it, and Relative Point may bridge frames it cannot register with it.
   std::optional<Rigid3> odometry;
+  // When the frame was observed, seconds on the recording's clock (a rawlog's timestamps), so
+  // trajectories line up with the recording's own ground truth; none for simulated frames,
+  // whose time is their iteration. Algorithms map without it.
+  std::optional<double> time_s;
 };
 
 }  // namespace relslam

@@ -79,4 +79,8 @@ RenderFrame fit_robot(const RenderScene& scene, const RenderOptions& options);
 // The picture (BGR, options.width x options.height).
 cv::Mat render_map(const RenderScene& scene, const RenderFrame& frame, const RenderOptions& options);
 
+// Writes a picture in the format its extension names (.png, .jpg, ...). Throws InputError at
+// --out when it cannot.
+void write_image(const std::string& file, const cv::Mat& image);
+
 }  // namespace relslam::eval

@@ -17,4 +17,13 @@ class TumWriter {
   TextFile file_;
 };
 
+// One row of a TUM file: "t x y z qx qy qz qw".
+struct TumPose {
+  double time = 0;
+  Rigid3 pose;
+};
+// Every row of a TUM file ('#' lines are comments). Throws InputError (file:line) when it cannot
+// be read or a row is not 8 finite numbers.
+std::vector<TumPose> read_tum(const std::filesystem::path& path);
+
 }  // namespace relslam::eval

@@ -3,10 +3,12 @@
 // files MRPT's simul-landmarks writes). The world frame is the robot frame at the first frame.
 
 #include "relslam/eval/io/rawlog.hpp"
+#include "relslam/eval/io/tum_writer.hpp"
 #include "relslam/eval/sources/frame_source.hpp"
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -33,6 +35,12 @@ class RawlogSource final : public FrameSource {
   // Whether every measurement carries a landmark id (known association is possible).
   bool ids_everywhere() const;
 
+  // Writes the truth given into `dir` as a simulated run has it, for any tool to compare with:
+  // ground_truth_landmarks.csv now (id = the truth row the landmark scores use, log_id = the
+  // rawlog's id), ground_truth_path.tum as the frames stream (our axes and world frame, the
+  // log's timestamps in seconds, or the frame index where the log has none).
+  void record_into(const std::filesystem::path& dir);
+
  private:
   RawlogFiles files_;
   Rawlog log_;
@@ -40,6 +48,7 @@ class RawlogSource final : public FrameSource {
   Rigid3 first_inverse_;
   LandmarkTruth truth_;
   std::map<int, int> row_of_id_;  // the landmark ids the rawlog uses -> truth index
+  std::unique_ptr<TumWriter> truth_path_file_;  // with record_into and a truth path
 };
 
 }  // namespace relslam::eval

@@ -1,6 +1,7 @@
 #pragma once
 // `relslam render`: a picture (or a video) of a simulated run at any iteration, like thesis
-// Figures 127–129 and 153–162, or of a planar run like Fig. 67 (spec relative_plane_em.md §6.0).
+// Figures 127–129 and 153–162, or of a planar run like Fig. 67; or, for any run folder, every
+// algorithm's path and map over the truth drawn from its files (--overview).
 
 #include <CLI/CLI.hpp>
 
@@ -23,6 +24,7 @@ struct RenderArgs {
   std::vector<double> center;   // u,v: overrides fit
   double span = 0;              // world units across; with center
   std::string labels = "auto";  // auto, on, off
+  bool overview = false;        // every algorithm from the run's files, no replay
   bool quiet = false;
 };
 
