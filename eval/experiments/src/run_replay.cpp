@@ -1,5 +1,7 @@
 #include "relslam/eval/experiments/run_replay.hpp"
 
+#include "relslam/eval/io/progress.hpp"
+
 #include "relslam/eval/algorithms/map_frame_gauge.hpp"
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/input_error.hpp"
@@ -105,13 +107,18 @@ RunReplay::~RunReplay() = default;
 
 int RunReplay::iterations() const { return state_->simulator.iterations(); }
 
-RenderScene RunReplay::scene_at(int k) {
+RenderScene RunReplay::scene_at(int k, bool progress) {
   State& s = *state_;
   if (k < s.next - 1 || k >= iterations())
     throw InputError("", 0, "--iteration",
                      "must be in 0.." + std::to_string(iterations() - 1) + (k < s.next - 1 ? " and not go back" : "") +
                          ", got " + std::to_string(k));
-  while (s.next <= k) s.feed(s.simulator.frame(s.next++));
+  Progress bar("replay " + s.algorithm, k + 1, progress);
+  while (s.next <= k) {
+    s.feed(s.simulator.frame(s.next++));
+    bar.update(s.next);
+  }
+  bar.finish();
 
   RenderScene scene;
   const sim::World& world = s.simulator.world();

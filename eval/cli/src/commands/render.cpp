@@ -88,6 +88,10 @@ int render_video(const RenderArgs& args, Replay& replay, const RenderOptions& op
   return 0;
 }
 
+// The scene at k, with a progress line where the replay can show one.
+RenderScene scene_with_progress(RunReplay& replay, int k, bool progress) { return replay.scene_at(k, progress); }
+PlanarScene scene_with_progress(PlanarReplay& replay, int k, bool) { return replay.scene_at(k); }
+
 template <class Replay>
 int render_replay(const RenderArgs& args, Replay&& replay, const RenderOptions& options) {
   check_view(replay, options);
@@ -100,7 +104,7 @@ int render_replay(const RenderArgs& args, Replay&& replay, const RenderOptions& 
     render_video(args, replay, options, last);
     if (args.out.empty()) return 0;
   }
-  const auto scene = replay.scene_at(last);
+  const auto scene = scene_with_progress(replay, last, !args.quiet);
   write_image(args.out, render_map(scene, frame_for(args, scene, options), options));
   warn_if_replay_differs(replay, last, args.quiet);
   if (!args.quiet) std::printf("wrote %s: %s, iteration %d\n", args.out.c_str(), replay.algorithm().c_str(), last);

@@ -26,8 +26,9 @@ class RunReplay {
   int iterations() const;
   const std::string& algorithm() const;
   // Runs the algorithm up to and including iteration k (never backwards: InputError) and
-  // describes that moment.
-  RenderScene scene_at(int k);
+  // describes that moment. With `progress`, a progress line on stderr while it catches up (an
+  // EKF replay of thousands of iterations takes minutes).
+  RenderScene scene_at(int k, bool progress = false);
   // The true world and the true path up to iteration `last`, without running the algorithm:
   // what a video's fixed view is fitted to.
   RenderScene world_outline(int last) const;
