@@ -100,10 +100,11 @@ def metric_vs_axis(sweep, metric, axis, ratios=False):
     """One metric against one swept axis: rows algorithm, series (the other axes' values, '' when
     only one axis is swept), label (the axis value as written), x (its position: the value, or
     its index for a category), mean and ci95 (half-width of the 95 % interval; NaN when only one
-    seed finished). Sorted so each (algorithm, series) is one line from left to right."""
+    seed finished). Sorted so each (algorithm, series) is one line from left to right.
+    The quotient rows (relative_point/ekf6d) are left out, or with ratios=True are the only rows:
+    a ratio and a score share no scale."""
     agg = sweep.aggregate
-    if not ratios:
-        agg = agg[~agg["algorithm"].map(is_ratio)]
+    agg = agg[agg["algorithm"].map(is_ratio) == ratios]
     order = axis_order(sweep, axis)
     labels = agg[axis].astype(str)
     numeric = is_numeric_axis(order)
@@ -117,6 +118,16 @@ def metric_vs_axis(sweep, metric, axis, ratios=False):
         "mean": agg[f"{metric}_mean"].astype(float),
         "ci95": agg[f"{metric}_ci95"].astype(float),
     })
-    algorithms = list(dict.fromkeys(table["algorithm"]))
-    table["rank"] = table["algorithm"].map(algorithms.index)
-    return table.sort_values(["rank", "series", "x"]).drop(columns="rank").reset_index(drop=True)
+    # Algorithms and the other axes' values keep aggregate.csv's order (the sweep's plan order).
+    rank = {column: {v: i for i, v in enumerate(dict.fromkeys(table[column]))} for column in ("algorithm", "series")}
+    keys = ["_algorithm", "_series", "x"]
+    table = table.assign(_algorithm=table["algorithm"].map(rank["algorithm"]), _series=table["series"].map(rank["series"]))
+    return table.sort_values(keys).drop(columns=keys[:2]).reset_index(drop=True)
+
+
+def dodge(table, width=0.08):
+    """x shifted a little per line on a categorical axis, so the intervals of lines sharing a
+    category do not hide each other; a numeric axis keeps its true values."""
+    lines = list(dict.fromkeys(zip(table["algorithm"], table["series"])))
+    offset = {line: (i - (len(lines) - 1) / 2) * width for i, line in enumerate(lines)}
+    return table["x"] + [offset[line] for line in zip(table["algorithm"], table["series"])]
