@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The Python side of issue 35: the relslam_data package (python/) and the two plot commands
-# (scripts/plot_run.py, scripts/plot_sweep.py) on a tiny simulated run, a tiny planar run and a
+# (scripts/plot_run.py, scripts/plot_sweep.py; and scripts/plot/run.py, simulation.py, which read
+# through it) on a tiny simulated run, a tiny planar run and a
 # tiny sweep made by the relslam binary: every promised PNG is written and non-trivial, the
 # package's unit tests pass (the real-folder ones with this binary), the package imports through
 # PYTHONPATH without installing, and a damaged folder fails with exit 2 naming the file, without a
@@ -65,6 +66,15 @@ done
 "$python" scripts/plot_run.py "$work/run" >/dev/null 2>&1
 expect "plot_run.py writes into RUN/plots by default" [ -s "$work/run/plots/errors.png" ]
 
+# scripts/demo.sh's two scripts, which read through the package too.
+"$python" scripts/plot/run.py --run "$work/run" --out "$work/plots-demo" >"$work/plot-demo.log" 2>&1
+expect "scripts/plot/run.py exits 0 (see $work/plot-demo.log)" [ $? -eq 0 ]
+"$python" scripts/plot/simulation.py --run "$work/run" --out "$work/plots-demo" >>"$work/plot-demo.log" 2>&1
+expect "scripts/plot/simulation.py exits 0 (see $work/plot-demo.log)" [ $? -eq 0 ]
+for name in landmark_error position_error runtime map_size sim_top_view sim_height sim_visible; do
+  check_png "$work/plots-demo/$name.png"
+done
+
 # ---- the package: unit tests, import without installing ---------------------------------------
 RELSLAM_BINARY=$relslam "$python" -m unittest discover -s "$src/python/tests" >"$work/unittest.log" 2>&1
 expect "python unit tests pass (see $work/unittest.log)" [ $? -eq 0 ]
@@ -81,6 +91,10 @@ out=$("$python" scripts/plot_run.py "$work/cut-run" --out "$work/cut-plots" 2>&1
 expect "cut iterations.csv: exit 2" [ $? -eq 2 ]
 expect "cut iterations.csv: named ($out)" grep -q "cut-run/ekf6d/iterations.csv: cut short" <<<"$out"
 expect "cut iterations.csv: no traceback" not grep -q "Traceback" <<<"$out"
+out=$("$python" scripts/plot/run.py --run "$work/cut-run" --out "$work/cut-plots" 2>&1)
+status=$?
+expect "scripts/plot/run.py on the cut file: exit 1" [ $status -eq 1 ]
+expect "scripts/plot/run.py names the cut file ($out)" grep -q "cut-run/ekf6d/iterations.csv: cut short" <<<"$out"
 cp -r "$work/sweep" "$work/bad-sweep"
 rm "$work/bad-sweep/aggregate.csv"
 out=$("$python" scripts/plot_sweep.py "$work/bad-sweep" --out "$work/bad-plots" 2>&1)
