@@ -50,21 +50,24 @@ check_png() {  # check_png FILE: a PNG of at least 300x200 pixels and 10 kB (a d
 }
 
 # ---- plot_run.py and plot_sweep.py -----------------------------------------------------------
-for run in run planar; do
-  "$python" scripts/plot_run.py "$work/$run" --out "$work/plots-$run" >"$work/plot-$run.log" 2>&1
-  expect "plot_run.py $run exits 0 (see $work/plot-$run.log)" [ $? -eq 0 ]
+"$python" scripts/plot_run.py "$work/run" --out "$work/plots-run" >"$work/plot-run.log" 2>&1
+expect "plot_run.py exits 0 (see $work/plot-run.log)" [ $? -eq 0 ]
+"$python" scripts/plot_run.py "$work/planar" >"$work/plot-planar.log" 2>&1  # no --out: into RUN/plots
+expect "plot_run.py on the planar run exits 0 (see $work/plot-planar.log)" [ $? -eq 0 ]
+for plots in "$work/plots-run" "$work/planar/plots"; do
   for name in errors runtime map_size top_view; do
-    check_png "$work/plots-$run/$name.png"
+    check_png "$plots/$name.png"
   done
 done
-"$python" scripts/plot_sweep.py "$work/sweep" --out "$work/plots-sweep" --ratios >"$work/plot-sweep.log" 2>&1
+metrics=(final_mean_landmark_error ate_rmse runtime_median_ms)
+"$python" scripts/plot_sweep.py "$work/sweep" --out "$work/plots-sweep" --metric "${metrics[@]}" --ratios \
+  >"$work/plot-sweep.log" 2>&1
 expect "plot_sweep.py exits 0 (see $work/plot-sweep.log)" [ $? -eq 0 ]
-for metric in final_mean_landmark_error ate_rmse runtime_median_ms; do
+for metric in "${metrics[@]}"; do
   check_png "$work/plots-sweep/$metric.png"
   check_png "$work/plots-sweep/${metric}_ratio.png"
 done
-"$python" scripts/plot_run.py "$work/run" >/dev/null 2>&1
-expect "plot_run.py writes into RUN/plots by default" [ -s "$work/run/plots/errors.png" ]
+expect "plot_sweep.py writes only the metrics asked for" [ "$(find "$work/plots-sweep" -name '*.png' | wc -l)" -eq 6 ]
 
 # scripts/demo.sh's two scripts, which read through the package too.
 "$python" scripts/plot/run.py --run "$work/run" --out "$work/plots-demo" >"$work/plot-demo.log" 2>&1
