@@ -45,8 +45,8 @@ def styles(table):
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     algorithms = list(dict.fromkeys(table["algorithm"]))
     series = list(dict.fromkeys(table["series"]))
-    return {(a, s): {"color": colours[algorithms.index(a) % len(colours)], "marker": MARKERS[series.index(s) % len(MARKERS)],
-                     "ls": DASHES[series.index(s) % len(DASHES)]}
+    return {(a, s): {"color": colours[algorithms.index(a) % len(colours)],
+                     "marker": MARKERS[series.index(s) % len(MARKERS)], "ls": DASHES[series.index(s) % len(DASHES)]}
             for a, s in zip(table["algorithm"], table["series"])}
 
 
@@ -91,8 +91,8 @@ def plot_metric(sweep, metric, ratios=False):
     label = metric_label(metric)
     axes[0, 0].set_ylabel(f"{label.split(' (')[0]} (ratio)" if ratios else label)
     seeds = sweep.runs["seed"].nunique()
-    what = "relative_point/ekf6d" if ratios else "mean"
-    fig.suptitle(f"{sweep.name}: {label.split(' (')[0]} ({what} over {seeds} seed(s), bars: 95 % interval)")
+    what = "ratio relative_point/ekf6d, mean" if ratios else "mean"
+    fig.suptitle(f"{sweep.name}: {label.split(' (')[0]}\n{what} over {seeds} seed(s), bars: 95 % interval", fontsize=11)
     return fig
 
 

@@ -45,6 +45,7 @@ class TopView:
 
     @property
     def empty(self):
+        """Nothing to draw: no path and no truth (a run of a data set without ground truth)."""
         return not self.paths and self.truth_points is None and self.walls is None
 
 
@@ -119,10 +120,8 @@ def metric_vs_axis(sweep, metric, axis, ratios=False):
         "ci95": agg[f"{metric}_ci95"].astype(float),
     })
     # Algorithms and the other axes' values keep aggregate.csv's order (the sweep's plan order).
-    rank = {column: {v: i for i, v in enumerate(dict.fromkeys(table[column]))} for column in ("algorithm", "series")}
-    keys = ["_algorithm", "_series", "x"]
-    table = table.assign(_algorithm=table["algorithm"].map(rank["algorithm"]), _series=table["series"].map(rank["series"]))
-    return table.sort_values(keys).drop(columns=keys[:2]).reset_index(drop=True)
+    ranks = {f"_{c}": table[c].map({v: i for i, v in enumerate(dict.fromkeys(table[c]))}) for c in ("algorithm", "series")}
+    return table.assign(**ranks).sort_values([*ranks, "x"]).drop(columns=list(ranks)).reset_index(drop=True)
 
 
 def dodge(table, width=0.08):

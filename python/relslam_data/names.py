@@ -65,6 +65,7 @@ def metric_label(name):
 
 
 def _suffix_unit(name):
+    """A metric's unit by its name's ending, so new columns get a sensible label without an entry."""
     return next((unit for suffix, unit in SUFFIX_UNITS.items() if name.endswith(suffix)), None)
 
 

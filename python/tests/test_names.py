@@ -1,7 +1,7 @@
 """Legend and axis names: readable, with units, and never failing on a name they do not know."""
 import unittest
 
-import fixtures  # noqa: F401 (puts the package beside the tests on the path)
+import fixtures  # noqa: F401  (puts the package beside the tests on the path)
 from relslam_data.names import algorithm_label, axis_label, metric_label
 
 
