@@ -57,6 +57,17 @@ class PlotScriptsTest(unittest.TestCase):
         paths = self.plot_run.plot_run(run, self.folder / "out")
         self.assertPngs(paths, ["errors", "runtime", "map_size", "top_view"])
 
+    def test_run_without_truth_has_no_error_figure(self):
+        """A data-set run (Victoria Park) has empty error columns and no truth files."""
+        run = fixtures.point_run(self.folder / "run")
+        for name in ("ground_truth_path.tum", "ground_truth_landmarks.csv"):
+            (run / name).unlink()
+        for algorithm in ("relative_point", "ekf6d"):
+            fixtures.write(run, {f"{algorithm}/iterations.csv": "iteration,landmark_error,runtime_ms,landmarks_in_map\n"
+                                                               "0,,0.1,1\n1,,0.2,2\n"})
+        paths = self.plot_run.plot_run(run, self.folder / "out")
+        self.assertPngs(paths, ["runtime", "map_size", "top_view"])
+
     def test_sweep_with_ratios(self):
         sweep = fixtures.sweep(self.folder / "sweep")
         paths = self.plot_sweep.plot_sweep(sweep, self.folder / "out", ratios=True)
