@@ -99,6 +99,8 @@ def load_run(folder):
     folder = Path(folder)
     if not folder.is_dir():
         raise DataError(folder, "not a folder (expected a run folder written by relslam run)")
+    if (folder / "sweep.csv").is_file() and not (folder / "summary.csv").is_file():
+        raise DataError(folder / "summary.csv", "file not found: this is a sweep folder (load_sweep reads it)")
     manifest = read_json(folder / "manifest.json")
     summary = read_csv(folder / "summary.csv", required=SUMMARY_REQUIRED)
     run = Run(folder=folder, manifest=manifest, summary=summary)

@@ -64,6 +64,8 @@ def load_sweep(folder):
     folder = Path(folder)
     if not folder.is_dir():
         raise DataError(folder, "not a folder (expected a sweep folder written by relslam sweep)")
+    if (folder / "summary.csv").is_file() and not (folder / "sweep.csv").is_file():
+        raise DataError(folder / "sweep.csv", "file not found: this is a run folder (load_run reads it)")
     manifest = read_json(folder / "manifest.json")
     plan_path = folder / "plan.json"
     plan = read_json(plan_path) if plan_path.is_file() else None

@@ -58,6 +58,11 @@ class LoadRunTest(unittest.TestCase):
         (self.run / "summary.csv").unlink()
         self.assertDamaged("summary.csv", "file not found")
 
+    def test_sweep_folder_is_named_as_such(self):
+        (self.run / "summary.csv").unlink()
+        fixtures.write(self.run, {"sweep.csv": "seed,folder,algorithm,status\n"})
+        self.assertDamaged("summary.csv", "this is a sweep folder")
+
     def test_missing_manifest(self):
         (self.run / "manifest.json").unlink()
         self.assertDamaged("manifest.json", "file not found")

@@ -63,6 +63,12 @@ class LoadSweepTest(unittest.TestCase):
         path.write_text(path.read_text().replace("variant,seed", "variety,seed", 1))
         self.assertDamaged("aggregate.csv", "axis column(s) variant not in sweep.csv")
 
+    def test_run_folder_is_named_as_such(self):
+        fixtures.point_run(self.folder / "run")
+        with self.assertRaises(DataError) as caught:
+            load_sweep(self.folder / "run")
+        self.assertIn("sweep.csv: file not found: this is a run folder", str(caught.exception))
+
     def test_invalid_plan(self):
         (self.folder / "plan.json").write_text("{\n")
         self.assertDamaged("plan.json", "not valid JSON")
