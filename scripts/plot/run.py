@@ -5,21 +5,34 @@ one line per algorithm (every algorithm listed in summary.csv).
 Usage: scripts/plot/run.py --run runs/demo [--out runs/demo/plots]
 """
 import argparse
-import csv
 import os
+import sys
 
 import matplotlib.pyplot as plt
 
 import relslam_plot as rp
 
+# The run folder is read by the relslam_data package (python/), which checks every file.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from relslam_data import DataError, load_run  # noqa: E402
+from relslam_data.names import algorithm_label  # noqa: E402
+
 COLUMNS = ["iteration", "landmark_error", "mean_landmark_error", "position_error", "ex", "ey", "ez", "runtime_ms",
            "landmarks_in_map"]
 
 
-def algorithms(run):
-    with open(os.path.join(run, "summary.csv"), newline="") as f:
-        # The relative_point/ekf6d row holds ratios, not a run of its own.
-        return [row["algorithm"] for row in csv.DictReader(f) if row["status"] != "ratio"]
+def iterations(run):
+    """{legend name: iterations.csv} of every algorithm (not summary.csv's ratio row); stops with a
+    message naming the file when one is missing, damaged or lacks a column these figures draw."""
+    try:
+        loaded = load_run(run)
+    except DataError as e:
+        sys.exit(f"plot: {e}")
+    for algorithm in loaded.algorithms.values():
+        missing = [c for c in COLUMNS if c not in algorithm.iterations.columns]
+        if missing:
+            sys.exit(f"plot: {algorithm.folder / 'iterations.csv'}: missing column(s) {', '.join(missing)}")
+    return loaded.name, {algorithm_label(a): alg.iterations for a, alg in loaded.algorithms.items()}
 
 
 def main():
@@ -28,8 +41,7 @@ def main():
     parser.add_argument("--out", help="output folder (default: RUN/plots)")
     args = parser.parse_args()
     out = args.out or os.path.join(args.run, "plots")
-    name = rp.read_manifest(args.run)["scenario"]["name"]
-    data = {a: rp.read_columns(os.path.join(args.run, a, "iterations.csv"), COLUMNS) for a in algorithms(args.run)}
+    name, data = iterations(args.run)
     written = []
 
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(10, 6), sharex=True)

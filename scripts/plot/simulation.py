@@ -7,10 +7,30 @@ World frame as in the thesis: y is up, so the top view shows x against z.
 """
 import argparse
 import os
+import sys
 
 import matplotlib.pyplot as plt
 
 import relslam_plot as rp
+
+# The files are read by the relslam_data package (python/), which checks every one.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from relslam_data import DataError, read_csv, read_json  # noqa: E402
+
+PATH_COLUMNS = ["iteration", "arc_length", "x", "y", "z", "visible", "visible_dynamic"]
+
+
+def read(run):
+    """The scenario's name, the true landmarks and the per-iteration path of a simulate folder;
+    stops with a message naming the file when one is missing or damaged."""
+    try:
+        name = read_json(os.path.join(run, "manifest.json"))["scenario"]["name"]
+        landmarks = read_csv(os.path.join(run, "ground_truth_landmarks.csv"), required=["x", "y", "z", "dynamic"],
+                             numeric=["x", "y", "z", "dynamic"])
+        path = read_csv(os.path.join(run, "sim_iterations.csv"), required=PATH_COLUMNS, numeric=PATH_COLUMNS)
+    except DataError as e:
+        sys.exit(f"plot: {e}")
+    return name, landmarks, path
 
 
 def main():
@@ -19,20 +39,15 @@ def main():
     parser.add_argument("--out", help="output folder (default: RUN/plots)")
     args = parser.parse_args()
     out = args.out or os.path.join(args.run, "plots")
-    name = rp.read_manifest(args.run)["scenario"]["name"]
-
-    landmarks = rp.read_columns(os.path.join(args.run, "ground_truth_landmarks.csv"), ["x", "y", "z", "dynamic"])
-    path = rp.read_columns(os.path.join(args.run, "sim_iterations.csv"),
-                           ["iteration", "arc_length", "x", "y", "z", "visible", "visible_dynamic"])
+    name, landmarks, path = read(args.run)
     written = []
 
     fig, ax = plt.subplots(figsize=(10, 5))
-    static = [i for i, d in enumerate(landmarks["dynamic"]) if d == 0]
-    moving = [i for i, d in enumerate(landmarks["dynamic"]) if d == 1]
-    ax.scatter([landmarks["x"][i] for i in static], [landmarks["z"][i] for i in static], s=2, c="0.6", label="landmarks")
-    if moving:
-        ax.scatter([landmarks["x"][i] for i in moving], [landmarks["z"][i] for i in moving], s=12, c="tab:red",
-                   label="dynamic landmarks (at iteration 0)")
+    static = landmarks[landmarks["dynamic"] == 0]
+    moving = landmarks[landmarks["dynamic"] == 1]
+    ax.scatter(static["x"], static["z"], s=2, c="0.6", label="landmarks")
+    if len(moving):
+        ax.scatter(moving["x"], moving["z"], s=12, c="tab:red", label="dynamic landmarks (at iteration 0)")
     ax.plot(path["x"], path["z"], "b-", lw=1, label="robot path")
     ax.plot([0], [0], "ko", label="start (world origin)")
     ax.set_xlabel("x (units)")
@@ -54,7 +69,7 @@ def main():
 
     fig, ax = plt.subplots(figsize=(10, 3))
     ax.plot(path["iteration"], path["visible"], "k-", lw=0.8, label="visible points")
-    if any(path["visible_dynamic"]):
+    if path["visible_dynamic"].any():
         ax.plot(path["iteration"], path["visible_dynamic"], "r-", lw=0.8, label="of which dynamic")
     ax.set_xlabel("iteration")
     ax.set_ylabel("points per observation")
