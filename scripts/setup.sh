@@ -1,7 +1,18 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages relslam needs, only those that are missing.
 # Uses sudo only when not running as root. Safe to run again: it does nothing when all is there.
+#   scripts/setup.sh          what the build and the test suite need
+#   scripts/setup.sh --fuzz   and the libFuzzer toolchain of scripts/fuzz.sh (tests/fuzz/README.md)
 set -euo pipefail
+
+fuzz=0
+for arg in "$@"; do
+  case "$arg" in
+    --fuzz) fuzz=1 ;;
+    -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
+    *) echo "setup: unknown argument $arg" >&2; exit 2 ;;
+  esac
+done
 
 packages=(
   build-essential cmake git pkg-config
@@ -12,6 +23,11 @@ packages=(
   python3 python3-matplotlib python3-pandas python3-numpy
   parallel
 )
+if [ $fuzz -eq 1 ]; then
+  # Debian's clang 14 builds the fuzz targets with libstdc++ 12; libFuzzer and the sanitizer
+  # runtimes are in libclang-rt-14-dev, llvm-symbolizer (stack traces with lines) in llvm-14.
+  packages+=(clang-14 libclang-rt-14-dev llvm-14)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,5 +1,6 @@
 #include "relslam/eval/io/csv_writer.hpp"
 
+#include "relslam/eval/io/csv_reader.hpp"
 #include "relslam/eval/io/tum_writer.hpp"
 #include "test_support.hpp"
 
@@ -48,6 +49,26 @@ TEST(CsvWriter, TextWithCommasIsQuoted) {
   csv.row("a,b \"c\"");
   csv.close();
   EXPECT_EQ(test::read_lines(dir / "t.csv")[1], "\"a,b \"\"c\"\"\"");
+}
+
+// Found by tests/fuzz/fuzz_csv: a quoted CR at the end of a row was taken for a CRLF line end.
+TEST(CsvWriter, TextEndingInCarriageReturnReadsBack) {
+  test::ScratchDir dir;
+  CsvWriter csv(dir / "t.csv", {"a", "b"});
+  csv.row("x\r", "y\r");
+  csv.close();
+  const CsvContents table = read_csv_table(dir / "t.csv");
+  EXPECT_EQ(table.header, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(table.rows, (std::vector<std::vector<std::string>>{{"x\r", "y\r"}}));
+}
+
+TEST(CsvReader, CrlfLineEndsAreNotPartOfTheFields) {
+  test::ScratchDir dir;
+  test::write_file(dir / "t.csv", "a,b\r\n1,\"2\"\r\n3,4\r");
+  const CsvContents table = read_csv_table(dir / "t.csv");
+  EXPECT_EQ(table.header, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(table.rows, (std::vector<std::vector<std::string>>{{"1", "2"}, {"3", "4"}}));
+  EXPECT_EQ(table.lines, (std::vector<int>{2, 3}));
 }
 
 TEST(CsvWriter, WrongFieldCountIsABug) {

@@ -58,8 +58,10 @@ CsvContents read_csv_table(const std::filesystem::path& file) {
     } else if (c == ',') {
       record.push_back(field);
       field.clear();
+    } else if (c == '\r' && (i + 1 == text.size() || text[i + 1] == '\n')) {
+      // CRLF line ends (and a last line's CR) are line ends, outside quotes only: a quoted CR
+      // is the field's, as CsvWriter writes it.
     } else if (c == '\n') {
-      if (!field.empty() && field.back() == '\r') field.pop_back();
       end_record();
       record_line = ++line;
     } else {

@@ -239,7 +239,7 @@ void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const Re
     const bool better = !same_chain || replaces_saved(total_length, total_samples, snapshot_->total_length,
                                                       snapshot_->total_samples, options.same_length);
     if (!better) return;
-    Snapshot& s = snapshot_.emplace();
+    RltXPointSnapshot& s = snapshot_.emplace();
     s.chain = chain_;
     s.edges = edges_;
     s.total_length = total_length;

@@ -24,7 +24,9 @@ void RltPlaneStorage::record(const PlaneFrame& frame) {
 
 void RltPlaneStorage::checkpoint_if_due(int iteration, const RltXPointsState& state, int period) {
   if (!checkpoints_.empty() && iteration - checkpoints_.back().iteration < period) return;
-  Checkpoint& kept = checkpoints_.emplace_back(iteration, state);
+  // Braces, not emplace_back(iteration, state): clang before 16 has no C++20 parenthesised
+  // aggregate initialisation.
+  Checkpoint& kept = checkpoints_.emplace_back(Checkpoint{iteration, state});
   for (RltXPoint& x : kept.state.xpoints_) x.release_scratch();  // only memory: compute() refills it
 }
 

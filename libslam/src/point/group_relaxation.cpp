@@ -80,8 +80,9 @@ std::vector<PointId> points_over(const MapRelaxation& relaxation, double gap) {
     if (tie.weight * tie_gap(relaxation.problem, tie) > gap) out.push_back(relaxation.tie_points[t]);
   }
   std::ranges::sort(out);
-  const auto [first, last] = std::ranges::unique(out);
-  out.erase(first, last);
+  // std::unique, not std::ranges::unique: clang 14 (the fuzz build) cannot compile the
+  // subrange libstdc++ 12's ranges::unique returns.
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

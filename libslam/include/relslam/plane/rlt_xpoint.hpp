@@ -15,6 +15,18 @@
 
 namespace relslam::plane {
 
+// Rule 35's copy of an RltXPoint's best complete result (spec §5.12), for the chain it was
+// computed on. At namespace scope, not nested in RltXPoint: clang cannot default-construct a
+// nested struct with default member initialisers (optional::emplace) while the enclosing class
+// is incomplete, which GCC accepts.
+struct RltXPointSnapshot {
+  std::vector<PlaneId> chain;
+  std::vector<RltXPointRef> refs;  // by chain position
+  std::vector<CompareResult> edges;
+  double total_length = 0;
+  long long total_samples = 0;
+};
+
 // Invariant: every plane of the chain lists this group among its refs exactly once, and the
 // chain holds each plane once. The relative map lives in those refs: the base (first) plane's
 // reference point is the group's origin.
@@ -120,14 +132,7 @@ class RltXPoint {
   std::vector<PairComparison> pair_comparisons_;
 
   // Rule 35's copy of the best complete result (spec §5.12), for the chain it was computed on.
-  struct Snapshot {
-    std::vector<PlaneId> chain;
-    std::vector<RltXPointRef> refs;  // by chain position
-    std::vector<CompareResult> edges;
-    double total_length = 0;
-    long long total_samples = 0;
-  };
-  std::optional<Snapshot> snapshot_;
+  std::optional<RltXPointSnapshot> snapshot_;
   void keep_or_restore_snapshot(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
   // Chain plane k's observations: where they are stored, or only those inside `within`.
   ObservationView observations(const std::vector<RltPlane>& planes, std::size_t k, const RltPlaneInterval* within);
