@@ -223,8 +223,10 @@ TEST(RltMapper, DeadReckoningRejectsARegistrationFarFromItAndCarriesThePose) {
 
 TEST(RltMapper, IterationsMustIncrease) {
   RltMapper mapper;
-  mapper.step({5, {}, {}});
-  EXPECT_THROW(mapper.step({5, {}, {}}), std::logic_error);
+  ObservationFrame frame;
+  frame.iteration = 5;
+  mapper.step(frame);
+  EXPECT_THROW(mapper.step(frame), std::logic_error);
 }
 
 }  // namespace

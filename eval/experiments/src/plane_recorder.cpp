@@ -2,6 +2,7 @@
 
 #include "relslam/eval/metrics/trajectory_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -74,14 +75,14 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   last_map_error_ = plane_map_error(map, votes_, walls_);
   if (last_map_error_.scored > 0) mean_map_errors_.push_back(last_map_error_.mean);
   std::optional<PlanarPoseError> pose_error;
-  if (pose) {
+  if (pose && truth.pose_known) {
     pose_error = planar_pose_error(*pose, truth.world_T_robot);
     last_pose_error_ = pose_error;
     max_position_error_ = std::max(max_position_error_, pose_error->position);
-    trajectory_.write(static_cast<double>(k), rigid_from_planar(*pose));
   }
+  if (pose) trajectory_.write(static_cast<double>(k), rigid_from_planar(*pose));
   estimates_.push_back(pose);
-  truths_.push_back(truth.world_T_robot);
+  truths_.push_back(truth.pose_known ? std::optional<PlanarPose>(truth.world_T_robot) : std::nullopt);
   runtimes_ms_.push_back(runtime_ms);
 
   fields_ = {static_cast<long long>(k),
@@ -159,19 +160,27 @@ SummaryRow PlaneRecorder::finish() {
   row.algorithm = name();
   row.status = status_;
   row.iterations = static_cast<int>(estimates_.size());
-  row.final_landmark_error = last_map_error_.sum;
+  // Without true walls (recorded planes) there is no map error, not a zero one.
+  row.final_landmark_error = walls_.empty() ? std::nan("") : last_map_error_.sum;
   row.final_mean_landmark_error = last_map_error_.scored > 0 ? last_map_error_.mean : std::nan("");
   double sum = 0;
   for (double e : mean_map_errors_) sum += e;
   row.mean_landmark_error = mean_map_errors_.empty() ? std::nan("") : sum / mean_map_errors_.size();
   row.final_position_error = last_pose_error_ ? last_pose_error_->position : std::nan("");
   std::vector<Rigid3> estimated, true_poses;
-  for (std::size_t i = 0; i < estimates_.size(); ++i)
-    if (estimates_[i]) {
+  int with_pose = 0;
+  for (std::size_t i = 0; i < estimates_.size(); ++i) {
+    with_pose += estimates_[i].has_value();
+    if (estimates_[i] && truths_[i]) {
       estimated.push_back(rigid_from_planar(*estimates_[i]));
-      true_poses.push_back(rigid_from_planar(truths_[i]));
+      true_poses.push_back(rigid_from_planar(*truths_[i]));
     }
+  }
   row.trajectory = trajectory_error(estimated, true_poses);
+  if (std::none_of(truths_.begin(), truths_.end(), [](const auto& t) { return t.has_value(); })) {
+    const double unknown = std::nan("");  // no true path: nothing to score, not a zero error
+    row.trajectory = {unknown, unknown, unknown, unknown};
+  }
   row.landmarks_on_map = static_cast<int>(map.size());
   for (const auto& [face, n] : planes_per_face) row.duplicates += n - 1;
   row.runtime = runtime_stats(runtimes_ms_);
@@ -181,7 +190,7 @@ SummaryRow PlaneRecorder::finish() {
   scores.final_heading_error_deg = last_pose_error_ ? last_pose_error_->heading_rad * kDeg : std::nan("");
   scores.max_position_error = max_position_error_;
   scores.pose_valid_fraction =
-      estimates_.empty() ? 0.0 : static_cast<double>(estimated.size()) / static_cast<double>(estimates_.size());
+      estimates_.empty() ? 0.0 : static_cast<double>(with_pose) / static_cast<double>(estimates_.size());
   scores.walls_mapped = static_cast<int>(walls_mapped.size());
   walls_seen_.erase(-1);
   scores.walls_seen = static_cast<int>(walls_seen_.size());

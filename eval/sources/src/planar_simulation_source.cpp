@@ -1,6 +1,7 @@
 #include "relslam/eval/sources/planar_simulation_source.hpp"
 
 #include "relslam/eval/io/planar_map_file.hpp"
+#include "relslam/eval/sources/plane_frame_files.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -118,9 +119,10 @@ std::vector<int> resolve_point_frames(const LoadedScenario& loaded, int frames, 
 struct PlanarSimulationSource::Recorder {
   explicit Recorder(const fs::path& dir)
       : path(dir / "ground_truth_path.tum"),
-        observations(dir / "plane_observations.csv", {"iteration", "index", "true_wall", "kp1_x", "kp1_z", "kp2_x",
-                                                      "kp2_z", "kp1_true_end", "kp2_true_end"}) {}
+        poses(dir / "ground_truth_poses.csv", kPlanarPoseColumns),
+        observations(dir / "plane_observations.csv", kPlaneObservationColumns) {}
   TumWriter path;
+  CsvWriter poses;  // the planar pose itself: exact, where a TUM row's quaternion rounds the heading
   CsvWriter observations;
 };
 
@@ -172,12 +174,14 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
       summary_.distance_travelled +=
           (frame.truth.world_T_robot.translation - simulator_.path().world_T_robot(k - 1).translation).norm();
     if (recorder_) {
-      recorder_->path.write(k, rigid_from_planar(frame.truth.world_T_robot));
+      const PlanarPose& pose = frame.truth.world_T_robot;
+      recorder_->path.write(k, rigid_from_planar(pose));
+      recorder_->poses.row(k, pose.translation.x(), pose.translation.y(), pose.heading);
       for (int i = 0; i < seen; ++i) {
         const PlaneObject& p = frame.observation.planes[static_cast<std::size_t>(i)];
         const PlaneTruth& t = frame.truth.planes[static_cast<std::size_t>(i)];
         recorder_->observations.row(k, i, t.wall_id, p.a.x(), p.a.y(), p.b.x(), p.b.y(), t.a_is_wall_end,
-                                    t.b_is_wall_end);
+                                    t.b_is_wall_end, p.y_lo, p.y_hi);
       }
     }
     consume(frame.observation, frame.truth);
@@ -185,6 +189,7 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
   summary_.visible_mean = frames_ > 0 ? static_cast<double>(summary_.observations) / frames_ : 0.0;
   if (recorder_) {
     recorder_->path.close();
+    recorder_->poses.close();
     recorder_->observations.close();
   }
   if (extraction_) extraction_->finish();

@@ -4,7 +4,9 @@
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
+#include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/io/run_folder.hpp"
+#include "relslam/eval/sources/plane_file_source.hpp"
 
 #include <cstdio>
 
@@ -22,20 +24,59 @@ void add_run(CLI::App& app, RunArgs& args) {
   cmd->add_option("--out,-o", args.out, "Run folder to create (refused if it exists and is not empty)")->required();
   cmd->add_option("--set", args.set, "Override a scenario key, e.g. --set sim.density=50 (repeatable)");
   cmd->add_option("--rawlog", args.rawlog, "Read the observations from this MRPT rawlog instead of simulating");
-  cmd->add_option("--truth-path", args.truth_path, "With --rawlog: robot path, rows x y z yaw pitch roll (MRPT)");
+  cmd->add_option("--planes", args.planes,
+                  "Read plane observations from this CSV (the columns of a planar run's plane_observations.csv: "
+                  "iteration, index, kp1_x, kp1_z, kp2_x, kp2_z; optional true_wall, kp1_true_end, kp2_true_end, "
+                  "y_lo, y_hi) instead of simulating");
+  cmd->add_option("--truth-path", args.truth_path,
+                  "With --rawlog: robot path, rows x y z yaw pitch roll (MRPT); with --planes: "
+                  "ground_truth_poses.csv (iteration, x, z, heading_rad) or a TUM file");
   cmd->add_option("--truth-landmarks", args.truth_landmarks, "With --rawlog: landmarks, rows x y z ... id (MRPT)");
+  cmd->add_option("--truth-walls", args.truth_walls,
+                  "With --planes: the true walls (ground_truth_walls.csv: id, a_x, a_z, b_x, b_z, height)");
   cmd->add_flag("--force", args.force, "Replace an earlier run in the --out folder");
   cmd->add_flag("--quiet,-q", args.quiet, "Print nothing but errors");
 }
 
+namespace {
+
+// The observations the run reads instead of simulating: checks the flags that go together.
+void check_inputs(const RunArgs& args) {
+  if (!args.rawlog.empty() && !args.planes.empty())
+    throw InputError("", 0, "--planes", "give --rawlog or --planes, not both");
+  if (args.scenario.empty() && args.rawlog.empty() && args.planes.empty())
+    throw InputError("", 0, "scenario", "give a scenario file, or --rawlog / --planes to run on recorded observations");
+  if (args.rawlog.empty() && args.planes.empty() && !args.truth_path.empty())
+    throw InputError("", 0, "--truth-path", "ground-truth files go with --rawlog or --planes");
+  if (args.rawlog.empty() && !args.truth_landmarks.empty())
+    throw InputError("", 0, "--truth-landmarks", "goes with --rawlog");
+  if (args.planes.empty() && !args.truth_walls.empty()) throw InputError("", 0, "--truth-walls", "goes with --planes");
+}
+
+// Plane frames from files through the scenario's plane algorithms.
+ExperimentResult run_on_planes(const LoadedScenario& loaded, const RunArgs& args) {
+  if (loaded.scenario.kind != ScenarioKind::Planar)
+    throw loaded.error("kind", "--planes feeds the planar half: the scenario must be of kind \"planar\"");
+  PlaneFiles files{args.planes, std::nullopt, std::nullopt};
+  if (!args.truth_path.empty()) files.truth_path = args.truth_path;
+  if (!args.truth_walls.empty()) files.truth_walls = args.truth_walls;
+  PlaneFileSource source(files);
+  PlanarExperiment experiment(loaded, source, args.out);
+  return experiment.run(!args.quiet);
+}
+
+}  // namespace
+
 int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
-  if (args.scenario.empty() && args.rawlog.empty())
-    throw InputError("", 0, "scenario", "give a scenario file, or --rawlog to run on recorded observations");
-  if (args.rawlog.empty() && (!args.truth_path.empty() || !args.truth_landmarks.empty()))
-    throw InputError("", 0, "--truth-path", "ground-truth files go with --rawlog");
-  // Without a scenario file, the defaults with both algorithms.
+  check_inputs(args);
+  // Without a scenario file, the defaults with both algorithms (planes: the planar defaults).
   std::vector<std::string> set = args.set;
-  if (args.scenario.empty()) set.insert(set.begin(), "algorithms=relative_point,ekf6d");
+  if (args.scenario.empty()) {
+    const std::vector<std::string> defaults =
+        args.planes.empty() ? std::vector<std::string>{"algorithms=relative_point,ekf6d"}
+                            : std::vector<std::string>{"kind=planar", "algorithms=relative_plane"};
+    set.insert(set.begin(), defaults.begin(), defaults.end());
+  }
   const LoadedScenario loaded =
       args.scenario.empty() ? parse_checked("{}", "(defaults)", set) : load_checked(args.scenario, set);
   // Input before output: what can be checked without reading the observations is checked before
@@ -48,7 +89,9 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
 
   ExperimentResult result;
   try {
-    if (args.rawlog.empty()) {
+    if (!args.planes.empty()) {
+      result = run_on_planes(loaded, args);
+    } else if (args.rawlog.empty()) {
       result = simulate_and_run(loaded, args.out, !args.quiet);
     } else {
       RawlogFiles files{args.rawlog, std::nullopt, std::nullopt};
@@ -77,7 +120,9 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
     return kInterruptedExit;
   }
   if (!args.quiet) {
-    print_results(result, args.rawlog.empty() ? loaded.scenario.name : args.rawlog);
+    print_results(result, !args.rawlog.empty()   ? args.rawlog
+                          : !args.planes.empty() ? args.planes
+                                                 : loaded.scenario.name);
     std::printf("wrote %s in %.1f s\n", args.out.c_str(), result.seconds);
   }
   return 0;

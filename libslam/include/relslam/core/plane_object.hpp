@@ -64,6 +64,7 @@ struct PlaneTruthFrame {
   int iteration = 0;
   PlanarPose world_T_robot;
   std::vector<PlaneTruth> planes;
+  bool pose_known = true;  // false for recorded planes without a true path: no pose is scored
 };
 
 }  // namespace relslam

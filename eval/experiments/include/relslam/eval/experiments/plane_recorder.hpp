@@ -57,7 +57,7 @@ class PlaneRecorder {
   WallVotes votes_;
   std::set<int> walls_seen_;
   std::vector<std::optional<PlanarPose>> estimates_;
-  std::vector<PlanarPose> truths_;
+  std::vector<std::optional<PlanarPose>> truths_;  // none where the source knows no true pose
   std::vector<double> runtimes_ms_;
   std::vector<double> mean_map_errors_;
   PlaneMapError last_map_error_;

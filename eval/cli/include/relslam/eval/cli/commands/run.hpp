@@ -14,6 +14,8 @@ struct RunArgs : ScenarioCommandArgs {
   std::string rawlog;           // observations from this rawlog instead of the simulator
   std::string truth_path;       // optional, with rawlog
   std::string truth_landmarks;  // optional, with rawlog
+  std::string planes;           // plane observations from this file (plane_observations.csv columns)
+  std::string truth_walls;      // optional, with planes
 };
 
 void add_run(CLI::App& app, RunArgs& args);
