@@ -101,6 +101,12 @@ std::optional<Eigen::Vector2d> crossing(const Eigen::Vector2d& p, const Eigen::V
   return p + side_p / (side_p - side_q) * (q - p);
 }
 
+OptionError too_much_work(const std::string& searched, int count) {
+  return OptionError("path", searched + " sees " + std::to_string(count) +
+                                 " walls at once, and searching the rest of the path would exceed the limit of " +
+                                 std::to_string(kMaxSightWork) + " wall tests: shorten the path");
+}
+
 }  // namespace
 
 OperationPlace operation_place(const PathProgram& program, int index) {
@@ -127,19 +133,18 @@ std::optional<int> first_iteration_seeing(const PlanarMap& map, const PlanarPath
   for (const int last : path.operation_ends()) {
     const PlanarWorld near{walls_near(map.world, box_of(path, first, last), scan.reach)};
     scan.work += static_cast<long long>(map.world.walls.size()) + (last - first);
-    if (static_cast<int>(near.walls.size()) >= count)
-      for (int k = first; k <= last; ++k)
-        if (scan.sees(near, path.world_T_robot(k), k)) return k;
-    if (scan.work > kMaxSightWork)
-      throw OptionError("path", "no iteration up to " + std::to_string(last) + " sees " + std::to_string(count) +
-                                    " walls at once, and searching further would exceed the limit of " +
-                                    std::to_string(kMaxSightWork) + " wall tests: shorten the path");
+    for (int k = first; k <= last && static_cast<int>(near.walls.size()) >= count; ++k) {
+      if (scan.sees(near, path.world_T_robot(k), k)) return k;
+      if (scan.work > kMaxSightWork) throw too_much_work("no iteration up to " + std::to_string(k), count);
+    }
+    if (scan.work > kMaxSightWork) throw too_much_work("no iteration up to " + std::to_string(last), count);
     first = last;
   }
   return std::nullopt;
 }
 
 std::optional<WallCrossing> first_wall_crossing(const PlanarMap& map, const PlanarPath& path) {
+  long long work = 0;
   int first = 0;
   const std::vector<int>& ends = path.operation_ends();
   for (std::size_t op = 0; op < ends.size(); ++op) {
@@ -150,6 +155,11 @@ std::optional<WallCrossing> first_wall_crossing(const PlanarMap& map, const Plan
     const std::vector<Wall> near =
         operation.kind == PathOperationKind::Turn ? std::vector<Wall>{}
                                                   : walls_near(map.world, box_of(path, first, last), 0.0);
+    work += static_cast<long long>(map.world.walls.size()) + (last - first) * static_cast<long long>(near.size());
+    if (work > kMaxSightWork)
+      throw OptionError("path", "checking that the path stays clear of the walls up to iteration " +
+                                    std::to_string(last) + " would exceed the limit of " +
+                                    std::to_string(kMaxSightWork) + " wall tests: shorten the path");
     for (int k = first; k < last && !near.empty(); k += stride)
       for (std::size_t w = 0; w < near.size(); ++w)
         if (const auto at = crossing(path.world_T_robot(k).translation,

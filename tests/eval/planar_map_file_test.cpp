@@ -303,6 +303,30 @@ TEST(PlanarMapFile, LongPathNeverNearTwoWallsIsRefusedQuickly) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
 }
 
+// Two walls beside a long path, within the sensor's reach but outside its field of view: every
+// iteration needs a sensor frame, so the search stops at its stated limit instead of running on.
+TEST(PlanarMapFile, LongPathBesideWallsItNeverSeesStopsAtTheWorkLimit) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string text =
+      "{\n"
+      "  \"walls\": [\n"
+      "    {\"a\": [-1e7, 7.5], \"b\": [1e7, 7.5], \"facing\": \"-z\"},\n"
+      "    {\"a\": [-1e7, -7.5], \"b\": [1e7, -7.5], \"facing\": \"+z\"}\n"
+      "  ],\n"
+      "  \"path\": {\n"
+      "    \"start\": {\"x\": 0, \"z\": 0, \"heading_deg\": 0}, \"speed\": 0.1,\n"
+      "    \"steps\": [\"MOVE 999000\"]\n"
+      "  }\n"
+      "}\n";
+  const std::string e = error_of(text);
+  EXPECT_EQ(e.rfind("m.json:6: path: no iteration up to ", 0), 0u) << e;
+  EXPECT_NE(e.find(" sees 2 walls at once, and searching the rest of the path would exceed the limit of 100000000 "
+                   "wall tests: shorten the path"),
+            std::string::npos)
+      << e;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+}
+
 TEST(PlanarMapFile, BadSensorHintIsRejected) {
   std::string text = map_text();
   text.insert(text.rfind('}'), "  ,\"sensor\": {\"mode\": \"always\"}\n");

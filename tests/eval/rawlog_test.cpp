@@ -417,7 +417,7 @@ TEST(RawlogSense, SensorFieldsOutOfTheirRangesAreRefusedWithTheField) {
                 ":1: maxSensorDistance: must be above minSensorDistance (0.5), or 0 with it for no range given, got "
                 "0.25");
   EXPECT_NE(error_with_observation(dir, [](Obs& o) { o.sensedData[0].range = 3e38f; })
-                .find("s.rawlog:1: sensedData[0]: range 2.99"),
+                .find("s.rawlog:1: sensedData[0]: range 3.0000000"),
             std::string::npos);
   EXPECT_NE(error_with_observation(dir, [](Obs& o) { o.sensedData[0].range = 3e38f; })
                 .find("beyond the observation's maxSensorDistance 20 (at most 22"),

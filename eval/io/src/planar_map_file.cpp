@@ -97,19 +97,22 @@ class MapReader {
   // with the map, not with the path's length (planar_simulator.hpp).
   void check_along_path(const sim::PlanarMap& map) const {
     const sim::PlanarPath path(map.path);
-    if (const std::optional<sim::WallCrossing> c = sim::first_wall_crossing(map, path)) {
-      const sim::OperationPlace place = sim::operation_place(map.path, c->operation);
-      fail("path." + place.field,
-           "runs through walls[" + std::to_string(c->wall) + "] at (" + format_number(c->at.x()) + ", " +
-               format_number(c->at.y()) + ")" + (place.loop > 0 ? ", loop " + std::to_string(place.loop) : "") +
-               ", after iteration " + std::to_string(c->before) +
-               ": the robot must stay inside the walls (a wall may be touched, not crossed)");
-    }
+    std::optional<sim::WallCrossing> crossing;
     std::optional<int> seeing;
     try {
-      seeing = sim::first_iteration_seeing(map, path, 2);
-    } catch (const OptionError& e) {
+      crossing = sim::first_wall_crossing(map, path);
+      if (!crossing) seeing = sim::first_iteration_seeing(map, path, 2);
+    } catch (const OptionError& e) {  // the path is too long to check
       fail(e.field(), e.problem());
+    }
+    if (crossing) {
+      const sim::OperationPlace place = sim::operation_place(map.path, crossing->operation);
+      fail("path." + place.field,
+           "runs through walls[" + std::to_string(crossing->wall) + "] at (" + format_number(crossing->at.x()) + ", " +
+               format_number(crossing->at.y()) + ")" +
+               (place.loop > 0 ? ", loop " + std::to_string(place.loop) : "") + ", after iteration " +
+               std::to_string(crossing->before) +
+               ": the robot must stay inside the walls (a wall may be touched, not crossed)");
     }
     if (!seeing)
       fail("path", "never sees two walls at once with the map's sensor (mode " +

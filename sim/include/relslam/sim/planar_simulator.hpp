@@ -47,10 +47,10 @@ class PlanarSimulator {
   std::optional<PointSensor> point_sensor_;
 };
 
-// The most work the search below may do, in tests of one wall against one pose (a noise-free
-// sensor frame counts kSightFrameWork per wall it looks at): a few seconds at most. A map whose
-// path passes 10 million iterations near walls it never sees runs out of it.
-inline constexpr long long kMaxSightWork = 200'000'000;
+// The most work each check below may do, in tests of one wall against one pose or step (a
+// noise-free sensor frame counts kSightFrameWork per wall it looks at): two seconds or so. A
+// map whose path passes millions of iterations near walls it never sees runs out of it.
+inline constexpr long long kMaxSightWork = 100'000'000;
 inline constexpr long long kSightFrameWork = 16;
 
 // The first iteration at which the map's sensor, without noise, reports at least `count`
