@@ -2,7 +2,9 @@
 // once, and that the path does not run through a wall. Both must cost time in proportion to the
 // map, not to the path: a 12 KB map asked for a 10-million-step path and took 107 s to refuse.
 
-#include "relslam/sim/planar_simulator.hpp"
+#include "relslam/sim/planar_sight.hpp"
+
+#include "relslam/sim/plane_sensor.hpp"
 
 #include <algorithm>
 #include <cmath>

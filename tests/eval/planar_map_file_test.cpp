@@ -1,6 +1,7 @@
 #include "relslam/eval/io/planar_map_file.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/sim/planar_sight.hpp"
 #include "relslam/sim/planar_simulator.hpp"
 #include "test_support.hpp"
 

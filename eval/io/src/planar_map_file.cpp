@@ -3,7 +3,7 @@
 #include "relslam/core/option_issue.hpp"
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/config/json_document.hpp"
-#include "relslam/sim/planar_simulator.hpp"
+#include "relslam/sim/planar_sight.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -106,8 +106,9 @@ void check_sensor_sense(const RangeBearingSensor& s, const std::string& file, in
   };
   if (!(s.field_of_view_yaw_rad > 0 && s.field_of_view_yaw_rad <= 2 * std::numbers::pi))
     fail("fieldOfView_yaw", "must be in (0, 2 pi]", s.field_of_view_yaw_rad);
-  if (!(s.field_of_view_pitch_rad > 0 && s.field_of_view_pitch_rad <= 2 * std::numbers::pi))
-    fail("fieldOfView_pitch", "must be in (0, 2 pi]", s.field_of_view_pitch_rad);
+  // 0 is a planar sensor (a 2D laser: our Victoria Park conversion writes it).
+  if (!(s.field_of_view_pitch_rad >= 0 && s.field_of_view_pitch_rad <= 2 * std::numbers::pi))
+    fail("fieldOfView_pitch", "must be in [0, 2 pi]", s.field_of_view_pitch_rad);
   if (s.min_range < 0) fail("minSensorDistance", "must be >= 0", s.min_range);
   if (s.max_range > kMaxSensorRange_m)
     fail("maxSensorDistance", "must be <= " + format_number(kMaxSensorRange_m) + " m", s.max_range);

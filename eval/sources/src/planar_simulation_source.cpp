@@ -1,6 +1,7 @@
 #include "relslam/eval/sources/planar_simulation_source.hpp"
 
 #include "relslam/eval/io/planar_map_file.hpp"
+#include "relslam/sim/planar_sight.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -60,7 +60,8 @@ inline constexpr std::size_t kMaxRawlogExpansion = 64;
 // What a bearing-range observation says about its sensor must make sense, not only be finite
 // (a negative field of view, a maximum range below the minimum or readings of 3e38 ran the EKF
 // for minutes; a sensor 1e300 away from the robot gave NaN):
-//   fieldOfView_yaw and fieldOfView_pitch in (0, 2 pi]; 0 <= minSensorDistance;
+//   fieldOfView_yaw in (0, 2 pi], fieldOfView_pitch in [0, 2 pi] (0: a planar sensor);
+//   0 <= minSensorDistance;
 //   maxSensorDistance <= kMaxSensorRange_m and above minSensorDistance, unless both are 0
 //   (MRPT's default: no range given); readings in [0, (1 + kRangeTolerance) maxSensorDistance]
 //   when a maximum is given (MRPT's simulator adds noise after it culls by range); yaw and
