@@ -154,9 +154,9 @@ std::optional<WallCrossing> first_wall_crossing(const PlanarMap& map, const Plan
     const PathOperation& operation = *operation_place(map.path, static_cast<int>(op)).operation;
     // A MOVE's poses lie on one segment; an ARC's steps are tested against the walls near it.
     const int stride = operation.kind == PathOperationKind::Move ? last - first : 1;
-    const std::vector<Wall> near =
-        operation.kind == PathOperationKind::Turn ? std::vector<Wall>{}
-                                                  : walls_near(map.world, box_of(path, first, last), 0.0);
+    const std::vector<Wall> near = operation.kind == PathOperationKind::Turn
+                                       ? std::vector<Wall>{}
+                                       : walls_near(map.world, box_of(path, first, last), 0.0);
     work += static_cast<long long>(map.world.walls.size()) + (last - first) * static_cast<long long>(near.size());
     if (work > kMaxSightWork)
       throw OptionError("path", "checking that the path stays clear of the walls up to iteration " +

@@ -66,8 +66,8 @@ TEST(ReaderLimits, ScenarioAboveTheJsonSizeLimitIsRefusedByItsSize) {
 TEST(ReaderLimits, TinySimScaleIsRefusedAtItsKey) {
   test::ScratchDir dir;
   test::write_file(dir / "t.json", "{\"sim\": {\"iterations\": 20,\n \"scale\": 1e-5}}");
-  const test::CliResult r = test::run_relslam({"simulate", (dir / "t.json").string(), "--out",
-                                               (dir / "out").string(), "-q"});
+  const test::CliResult r =
+      test::run_relslam({"simulate", (dir / "t.json").string(), "--out", (dir / "out").string(), "-q"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("t.json:2: sim.scale: must be >= 0.01"), std::string::npos) << r.err;
   test::write_file(dir / "u.json", "{\"sim\": {\"iterations\": 20, \"iterations_per_loop\": 10,\n \"scale\": 0.05}}");
@@ -109,9 +109,9 @@ TEST(ReaderLimits, RawlogWithANegativeFieldOfViewIsRefused) {
   const test::CliResult good = test::run_relslam({"rawlog", write_rawlog(dir, sensor).string()});
   EXPECT_EQ(good.exit_code, 0) << good.err;
   sensor.field_of_view_yaw_rad = -1;
-  expect_located_error({"run", "--rawlog", write_rawlog(dir, sensor).string(), "--out", "out", "-q", "--set",
-                        "algorithms=[\"ekf6d\"]"},
-                       "w.rawlog:2: fieldOfView_yaw: must be in (0, 2 pi], got -1");
+  expect_located_error(
+      {"run", "--rawlog", write_rawlog(dir, sensor).string(), "--out", "out", "-q", "--set", "algorithms=[\"ekf6d\"]"},
+      "w.rawlog:2: fieldOfView_yaw: must be in (0, 2 pi], got -1");
   sensor = good_sensor();
   sensor.max_range = 0.05;
   expect_located_error({"rawlog", write_rawlog(dir, sensor).string()},
@@ -165,8 +165,8 @@ TEST_F(Repro3, VictoriaParkGps1e308IsRefusedAtItsLine) {
 // ---- planar maps -----------------------------------------------------------------------------
 
 std::vector<std::string> simulate_room_with(const std::string& map) {
-  return {"simulate", test::source_path("scenarios/p-room.json").string(), "--set", "planar.map=" + map, "--out",
-          "out", "-q"};
+  return {"simulate", test::source_path("scenarios/p-room.json").string(), "--set", "planar.map=" + map, "--out", "out",
+          "-q"};
 }
 
 // A path through a wall ran with exit 0 and most poses wrong.

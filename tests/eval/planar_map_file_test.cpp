@@ -256,15 +256,15 @@ TEST(PlanarMapFile, PathThatNeverSeesTwoWallsIsRejected) {
 TEST(PlanarMapFile, PathThroughAWallNamesTheStepAndTheWall) {
   const std::string wall0 = R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})",
                     wall1 = R"({"a": [6, 1], "b": [6, 2], "facing": "-x"})";
-  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["MOVE 1", "MOVE 9"])")).rfind(
-                "m.json:8: path.steps[1]: runs through walls[0] at (5, 0), loop 1, after iteration ", 0),
+  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["MOVE 1", "MOVE 9"])"))
+                .rfind("m.json:8: path.steps[1]: runs through walls[0] at (5, 0), loop 1, after iteration ", 0),
             0u)
       << error_of(map_text(wall0, wall1, R"(["MOVE 1", "MOVE 9"])"));
   EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["MOVE 5"])")), "no error");  // stops on the wall
   EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["TURN 90", "MOVE 1", "TURN -90", "MOVE 5"])")),
             "no error");  // ends on the line of wall 0, past its end
-  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["ARC 12.6 -45"])")).rfind(
-                "m.json:8: path.steps[0]: runs through walls[0] at (", 0),
+  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["ARC 12.6 -45"])"))
+                .rfind("m.json:8: path.steps[0]: runs through walls[0] at (", 0),
             0u)
       << error_of(map_text(wall0, wall1, R"(["ARC 12.6 -45"])"));
 }

@@ -423,10 +423,10 @@ TEST(RawlogSense, SensorFieldsOutOfTheirRangesAreRefusedWithTheField) {
                 .find("beyond the observation's maxSensorDistance 20 (at most 22"),
             std::string::npos);
   EXPECT_EQ(error_with_observation(dir, [](Obs& o) { o.sensedData[0].range = 21.5f; }), "(no error)");
-  EXPECT_EQ(error_with_observation(
-                dir, [](Obs& o) { o.sensorLocationOnRobot = mrpt::poses::CPose3D(1e300, 0, 0, 0, 0, 0); }),
-            (dir / "s.rawlog").string() +
-                ":1: sensorLocationOnRobot: each coordinate must be within +-1000 m, got (1e+300, 0, 0)");
+  EXPECT_EQ(
+      error_with_observation(dir, [](Obs& o) { o.sensorLocationOnRobot = mrpt::poses::CPose3D(1e300, 0, 0, 0, 0, 0); }),
+      (dir / "s.rawlog").string() +
+          ":1: sensorLocationOnRobot: each coordinate must be within +-1000 m, got (1e+300, 0, 0)");
   // MRPT's defaults (no range given) stay readable.
   EXPECT_EQ(error_with_observation(dir,
                                    [](Obs& o) {
@@ -451,8 +451,9 @@ TEST(RawlogSense, OdometryIncrementsOutOfRangeAreRefused) {
     }
   };
   write(1e308, -1e308);  // each finite; their difference is not
-  EXPECT_NE(error_reading(dir / "odo.rawlog").find("odo.rawlog:1: CObservationOdometry.odometry: each coordinate must "
-                                                   "be within +-1e+09 m, got (1e+308, 0, 0)"),
+  EXPECT_NE(error_reading(dir / "odo.rawlog")
+                .find("odo.rawlog:1: CObservationOdometry.odometry: each coordinate must "
+                      "be within +-1e+09 m, got (1e+308, 0, 0)"),
             std::string::npos)
       << error_reading(dir / "odo.rawlog");
   write(0, 2e4);

@@ -107,12 +107,11 @@ class MapReader {
     }
     if (crossing) {
       const sim::OperationPlace place = sim::operation_place(map.path, crossing->operation);
-      fail("path." + place.field,
-           "runs through walls[" + std::to_string(crossing->wall) + "] at (" + format_number(crossing->at.x()) + ", " +
-               format_number(crossing->at.y()) + ")" +
-               (place.loop > 0 ? ", loop " + std::to_string(place.loop) : "") + ", after iteration " +
-               std::to_string(crossing->before) +
-               ": the robot must stay inside the walls (a wall may be touched, not crossed)");
+      fail("path." + place.field, "runs through walls[" + std::to_string(crossing->wall) + "] at (" +
+                                      format_number(crossing->at.x()) + ", " + format_number(crossing->at.y()) + ")" +
+                                      (place.loop > 0 ? ", loop " + std::to_string(place.loop) : "") +
+                                      ", after iteration " + std::to_string(crossing->before) +
+                                      ": the robot must stay inside the walls (a wall may be touched, not crossed)");
     }
     if (!seeing)
       fail("path", "never sees two walls at once with the map's sensor (mode " +

@@ -240,8 +240,9 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t 
     if (decoded > budget)
       throw InputError(name, record, "",
                        "the file decodes to more than " + std::to_string(budget) +
-                           " bytes, the most a rawlog may: the larger of " + std::to_string(kMinRawlogBudgetBytes >> 20) +
-                           " MiB and " + std::to_string(kMaxRawlogExpansion) + " times its size (a gzip bomb?)");
+                           " bytes, the most a rawlog may: the larger of " +
+                           std::to_string(kMinRawlogBudgetBytes >> 20) + " MiB and " +
+                           std::to_string(kMaxRawlogExpansion) + " times its size (a gzip bomb?)");
     mrpt::io::CMemoryStream memory;
     memory.assignMemoryNotOwn(bytes.data(), bytes.size());
     auto archive = mrpt::serialization::archiveFrom(memory);
