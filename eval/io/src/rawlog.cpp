@@ -212,6 +212,23 @@ std::size_t decoded_budget(std::uintmax_t stored_bytes) {
   return std::max<std::size_t>(kMinRawlogBudgetBytes, kMaxRawlogExpansion * static_cast<std::size_t>(stored_bytes));
 }
 
+// The next record's bytes, checked by mrpt_record_check.hpp; false at a clean end between
+// records. Each RecordProblem becomes an InputError naming the file and the record.
+bool next_record(const ByteReader& read, std::vector<unsigned char>& bytes, const std::string& name, int record) {
+  try {
+    if (read_checked_record(read, bytes)) return true;
+    if (record == 1) throw InputError(name, 0, "", "empty file: not an MRPT rawlog");
+    return false;
+  } catch (const RecordProblem& p) {
+    if (p.truncated())
+      throw InputError(name, record, p.field(),
+                       "truncated: the file ends inside record " + std::to_string(record) + " (" + p.what() + ")");
+    if (record == 1 && p.field().empty())
+      throw InputError(name, record, "", std::string("not an MRPT rawlog (") + p.what() + ")");
+    throw InputError(name, record, p.field(), p.what());
+  }
+}
+
 // Every record goes through our own bounds first (mrpt_record_check.hpp); MRPT then decodes
 // exactly the bytes that passed, from memory. `budget` bounds the decoded bytes of all records.
 Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t budget) {
@@ -223,19 +240,7 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t 
   std::optional<mrpt::poses::CPose2D> last_odometry_reading;  // observation-only files
   std::size_t decoded = 0;
   for (int record = 1;; ++record) {
-    try {
-      if (!read_checked_record(read, bytes)) {
-        if (record == 1) throw InputError(name, 0, "", "empty file: not an MRPT rawlog");
-        break;  // clean end between records
-      }
-    } catch (const RecordProblem& p) {
-      if (p.truncated())
-        throw InputError(name, record, p.field(),
-                         "truncated: the file ends inside record " + std::to_string(record) + " (" + p.what() + ")");
-      if (record == 1 && p.field().empty())
-        throw InputError(name, record, "", std::string("not an MRPT rawlog (") + p.what() + ")");
-      throw InputError(name, record, p.field(), p.what());
-    }
+    if (!next_record(read, bytes, name, record)) break;
     decoded += bytes.size();
     if (decoded > budget)
       throw InputError(name, record, "",
