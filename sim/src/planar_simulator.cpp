@@ -22,13 +22,4 @@ const PointSensor& PlanarSimulator::point_sensor() const {
 
 PointSimFrame PlanarSimulator::point_frame(int k) const { return point_sensor().observe(path_.world_T_robot(k), k); }
 
-std::optional<int> first_iteration_seeing(const PlanarMap& map, int count) {
-  PlanarMap exact = map;
-  exact.sensor.noise = PlaneNoiseOptions::none();
-  const PlanarSimulator simulator(exact, 0);
-  for (int k = 0; k < simulator.iterations(); ++k)
-    if (static_cast<int>(simulator.frame(k).observation.planes.size()) >= count) return k;
-  return std::nullopt;
-}
-
 }  // namespace relslam::sim

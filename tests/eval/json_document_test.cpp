@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <string>
+
 namespace relslam::eval {
 namespace {
 
@@ -69,6 +73,32 @@ TEST(JsonDocument, MissingFileIsAnInputError) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "/nonexistent/relslam.json: file not found");
   }
+}
+
+// A flat array of ten million numbers (20 MB) took 1.5 GB to refuse; text above the limit is
+// refused by its size, before any parser allocates for it.
+TEST(JsonDocument, TextAboveTheSizeLimitIsRefusedBeforeParsing) {
+  std::string text = "{\"description\": [";
+  while (text.size() <= kMaxJsonBytes) text += "0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,";
+  text += "0]}";
+  try {
+    parse_json(text, "flat.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "flat.json");
+    EXPECT_NE(std::string(e.what()).find("at most " + std::to_string(kMaxJsonBytes) + " bytes"), std::string::npos)
+        << e.what();
+  }
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "relslam_json_size_limit.json";
+  std::ofstream(file, std::ios::binary) << text;
+  try {
+    read_json_file(file);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), file.string());
+    EXPECT_NE(std::string(e.what()).find(std::to_string(text.size()) + " bytes"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(file);
 }
 
 }  // namespace

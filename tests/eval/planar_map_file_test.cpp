@@ -1,12 +1,14 @@
 #include "relslam/eval/io/planar_map_file.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/sim/planar_sight.hpp"
 #include "relslam/sim/planar_simulator.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace relslam::eval {
@@ -247,6 +249,83 @@ TEST(PlanarMapFile, PathThatNeverSeesTwoWallsIsRejected) {
                               R"({"a": [-6, 1], "b": [-6, 2], "facing": "+x"})")),
             "m.json:6: path: never sees two walls at once with the map's sensor (mode frustum); the algorithm relates "
             "walls only through the ones it sees together");
+}
+
+// A path through a wall (or out of the room) ran with most poses wrong; it is refused with the
+// step, its loop and the wall. Running along a wall or touching it is clearance, not crossing.
+TEST(PlanarMapFile, PathThroughAWallNamesTheStepAndTheWall) {
+  const std::string wall0 = R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})",
+                    wall1 = R"({"a": [6, 1], "b": [6, 2], "facing": "-x"})";
+  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["MOVE 1", "MOVE 9"])"))
+                .rfind("m.json:8: path.steps[1]: runs through walls[0] at (5, 0), loop 1, after iteration ", 0),
+            0u)
+      << error_of(map_text(wall0, wall1, R"(["MOVE 1", "MOVE 9"])"));
+  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["MOVE 5"])")), "no error");  // stops on the wall
+  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["TURN 90", "MOVE 1", "TURN -90", "MOVE 5"])")),
+            "no error");  // ends on the line of wall 0, past its end
+  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["ARC 12.6 -45"])"))
+                .rfind("m.json:8: path.steps[0]: runs through walls[0] at (", 0),
+            0u)
+      << error_of(map_text(wall0, wall1, R"(["ARC 12.6 -45"])"));
+}
+
+TEST(PlanarMapFile, EveryShippedPathStaysClearOfItsWalls) {
+  for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenarios/maps"))) {
+    const sim::PlanarMap map = read_planar_map(entry.path());
+    EXPECT_FALSE(sim::first_wall_crossing(map, sim::PlanarPath(map.path))) << entry.path();
+  }
+}
+
+TEST(PlanarMapFile, MoreWallsThanTheLimitAreRefusedByTheirCount) {
+  std::string walls;
+  for (std::size_t i = 0; i <= kMaxPlanarWalls; ++i)
+    walls += std::string(i ? ",\n" : "") + R"({"a": [5, )" + std::to_string(i) + R"(], "b": [5, )" +
+             std::to_string(i + 1) + R"(], "facing": "-x"})";
+  EXPECT_EQ(error_of("{\"walls\": [\n" + walls + "],\n \"path\": {}}"),
+            "m.json:1: walls: has 10001; a map may have at most 10000 walls");
+}
+
+// A 10-million-step path that never comes near two walls took 107 s to refuse; walls out of the
+// sensor's reach of a whole operation are set aside, so the time follows the map, not the path.
+TEST(PlanarMapFile, LongPathNeverNearTwoWallsIsRefusedQuickly) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string text =
+      "{\n"
+      "  \"walls\": [\n"
+      "    {\"a\": [1e6, 4], \"b\": [1000006, 4], \"facing\": \"-z\"},\n"
+      "    {\"a\": [1, -3], \"b\": [1, 3], \"facing\": \"-x\"}\n"
+      "  ],\n"
+      "  \"path\": {\n"
+      "    \"start\": {\"x\": 0, \"z\": 0, \"heading_deg\": 180}, \"speed\": 1,\n"
+      "    \"steps\": [\"MOVE 9999990\"]\n"
+      "  }\n"
+      "}\n";
+  EXPECT_NE(error_of(text).find("m.json:6: path: never sees two walls at once"), std::string::npos) << error_of(text);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+}
+
+// Two walls beside a long path, within the sensor's reach but outside its field of view: every
+// iteration needs a sensor frame, so the search stops at its stated limit instead of running on.
+TEST(PlanarMapFile, LongPathBesideWallsItNeverSeesStopsAtTheWorkLimit) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string text =
+      "{\n"
+      "  \"walls\": [\n"
+      "    {\"a\": [-1e7, 7.5], \"b\": [1e7, 7.5], \"facing\": \"-z\"},\n"
+      "    {\"a\": [-1e7, -7.5], \"b\": [1e7, -7.5], \"facing\": \"+z\"}\n"
+      "  ],\n"
+      "  \"path\": {\n"
+      "    \"start\": {\"x\": 0, \"z\": 0, \"heading_deg\": 0}, \"speed\": 0.1,\n"
+      "    \"steps\": [\"MOVE 999000\"]\n"
+      "  }\n"
+      "}\n";
+  const std::string e = error_of(text);
+  EXPECT_EQ(e.rfind("m.json:6: path: no iteration up to ", 0), 0u) << e;
+  EXPECT_NE(e.find(" sees 2 walls at once, and searching the rest of the path would exceed the limit of 100000000 "
+                   "wall tests: shorten the path"),
+            std::string::npos)
+      << e;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
 }
 
 TEST(PlanarMapFile, BadSensorHintIsRejected) {

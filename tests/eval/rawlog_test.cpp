@@ -383,3 +383,102 @@ TEST(RawlogBounds, MrptDemoLogsPassTheBounds) {
 
 }  // namespace
 }  // namespace relslam::eval
+
+// Sensor fields are checked for sense, not only finiteness (issue 34): a negative field of view,
+// a maximum range below the minimum or readings of 3e38 ran the EKF for minutes, a sensor 1e300
+// away from the robot gave NaN, and two finite odometry readings differed by infinity.
+namespace relslam::eval {
+namespace {
+
+// An observation-only rawlog of one bearing-range observation, `change` applied to it first.
+template <class Change>
+std::string error_with_observation(const test::ScratchDir& dir, Change change) {
+  {
+    mrpt::io::CFileOutputStream out((dir / "s.rawlog").string());
+    auto archive = mrpt::serialization::archiveFrom(out);
+    mrpt::obs::CObservationBearingRange obs;
+    obs.minSensorDistance = 0.5f;
+    obs.maxSensorDistance = 20.0f;
+    obs.sensedData.push_back({10.0f, 0.1f, 0.0f, -1, {}});
+    change(obs);
+    archive << obs;
+  }
+  return error_reading(dir / "s.rawlog");
+}
+
+TEST(RawlogSense, SensorFieldsOutOfTheirRangesAreRefusedWithTheField) {
+  test::ScratchDir dir;
+  using Obs = mrpt::obs::CObservationBearingRange;
+  EXPECT_EQ(error_with_observation(dir, [](Obs&) {}), "(no error)");
+  EXPECT_EQ(error_with_observation(dir, [](Obs& o) { o.fieldOfView_yaw = -1.0f; }),
+            (dir / "s.rawlog").string() + ":1: fieldOfView_yaw: must be in (0, 2 pi], got -1");
+  EXPECT_EQ(error_with_observation(dir, [](Obs& o) { o.maxSensorDistance = 0.25f; }),
+            (dir / "s.rawlog").string() +
+                ":1: maxSensorDistance: must be above minSensorDistance (0.5), or 0 with it for no range given, got "
+                "0.25");
+  EXPECT_NE(error_with_observation(dir, [](Obs& o) { o.sensedData[0].range = 3e38f; })
+                .find("s.rawlog:1: sensedData[0]: range 3.0000000"),
+            std::string::npos);
+  EXPECT_NE(error_with_observation(dir, [](Obs& o) { o.sensedData[0].range = 3e38f; })
+                .find("beyond the observation's maxSensorDistance 20 (at most 22"),
+            std::string::npos);
+  EXPECT_EQ(error_with_observation(dir, [](Obs& o) { o.sensedData[0].range = 21.5f; }), "(no error)");
+  EXPECT_EQ(
+      error_with_observation(dir, [](Obs& o) { o.sensorLocationOnRobot = mrpt::poses::CPose3D(1e300, 0, 0, 0, 0, 0); }),
+      (dir / "s.rawlog").string() +
+          ":1: sensorLocationOnRobot: each coordinate must be within +-1000 m, got (1e+300, 0, 0)");
+  // MRPT's defaults (no range given) stay readable.
+  EXPECT_EQ(error_with_observation(dir,
+                                   [](Obs& o) {
+                                     o.minSensorDistance = 0;
+                                     o.maxSensorDistance = 0;
+                                   }),
+            "(no error)");
+}
+
+TEST(RawlogSense, OdometryIncrementsOutOfRangeAreRefused) {
+  test::ScratchDir dir;
+  const auto write = [&](double x0, double x1) {
+    mrpt::io::CFileOutputStream out((dir / "odo.rawlog").string());
+    auto archive = mrpt::serialization::archiveFrom(out);
+    for (const double x : {x0, x1}) {
+      mrpt::obs::CObservationOdometry odo;
+      odo.odometry = mrpt::poses::CPose2D(x, 0, 0);
+      archive << odo;
+      mrpt::obs::CObservationBearingRange obs;
+      obs.sensedData.push_back({5.0f, 0.0f, 0.0f, -1, {}});
+      archive << obs;
+    }
+  };
+  write(1e308, -1e308);  // each finite; their difference is not
+  EXPECT_NE(error_reading(dir / "odo.rawlog")
+                .find("odo.rawlog:1: CObservationOdometry.odometry: each coordinate must "
+                      "be within +-1e+09 m, got (1e+308, 0, 0)"),
+            std::string::npos)
+      << error_reading(dir / "odo.rawlog");
+  write(0, 2e4);
+  EXPECT_NE(error_reading(dir / "odo.rawlog")
+                .find("odo.rawlog:3: CObservationOdometry.odometry (since the last reading): each coordinate must be "
+                      "within +-10000 m, got (20000, 0, 0)"),
+            std::string::npos)
+      << error_reading(dir / "odo.rawlog");
+}
+
+// A gzip file of repeated readings compresses a thousandfold: its decoded size is bounded by a
+// multiple of the file's size (a 995 KB file of eight records took 1.15 GB).
+TEST(RawlogSense, GzipFileDecodingFarBeyondItsSizeIsRefused) {
+  test::ScratchDir dir;
+  ObservationFrame frame;
+  frame.points.assign(900'000, Eigen::Vector3d(1.0, 0.5, 10.0));  // 14.4 MB a record
+  {
+    RawlogWriter writer(dir / "bomb.rawlog.gz", sensor(), true);
+    for (int k = 0; k < 5; ++k) writer.write(frame, {}, kSimulationEpoch_s + k);
+    writer.close();
+  }
+  ASSERT_LT(std::filesystem::file_size(dir / "bomb.rawlog.gz"), kMinRawlogBudgetBytes / kMaxRawlogExpansion);
+  const std::string e = error_reading(dir / "bomb.rawlog.gz");
+  EXPECT_NE(e.find("bomb.rawlog.gz:10: the file decodes to more than 67108864 bytes"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace relslam::eval

@@ -161,6 +161,31 @@ TEST(VictoriaPark, NonFiniteAndAbsurdTimesNameFileAndLine) {
   EXPECT_EQ(error_reading(dir.path()), (dir / "measurements.dat").string() + ":1: time: must be within +-1e9 s");
 }
 
+// A GPS coordinate of 1e308 read as a number and emptied every ATE column; values far outside
+// what a car, its laser and its GPS give are refused where they stand.
+TEST(VictoriaPark, ValuesOutOfASaneRangeNameFileLineAndColumn) {
+  test::ScratchDir dir;
+  write_small_log(dir.path(), "0.852 20.0 1.5 0.3\n");
+  test::write_file(dir / "gps.dat", "0.000 -2.023 -1.923\n0.200 1e308 -1.9\n");
+  EXPECT_EQ(error_reading(dir.path()), (dir / "gps.dat").string() + ":2: x: must be within +-1e+06, got 1e+308");
+  write_small_log(dir.path(), "0.852 20.0 1.5 0.3\n");
+  test::write_file(dir / "inputs.dat", "0.973 1e20 -0.0035\n");
+  EXPECT_EQ(error_reading(dir.path()), (dir / "inputs.dat").string() + ":1: speed: must be within +-100, got 1e+20");
+  test::write_file(dir / "inputs.dat", "0.973 1.0 -7\n");
+  EXPECT_EQ(error_reading(dir.path()), (dir / "inputs.dat").string() + ":1: steering: must be within +-1.6, got -7");
+  write_small_log(dir.path(), "0.852 2e3 1.5 0.3\n");
+  EXPECT_EQ(error_reading(dir.path()),
+            (dir / "measurements.dat").string() + ":1: range: must be within +-1000, got 2000");
+}
+
+TEST(VictoriaPark, AFolderInPlaceOfAFileIsNamed) {
+  test::ScratchDir dir;
+  write_small_log(dir.path(), "0.852 20.0 1.5 0.3\n");
+  std::filesystem::remove(dir / "gps.dat");
+  std::filesystem::create_directory(dir / "gps.dat");
+  EXPECT_EQ(error_reading(dir.path()), (dir / "gps.dat").string() + ": is a directory, not a data file");
+}
+
 TEST(VictoriaPark, TextAndFileReadersAgree) {
   test::ScratchDir dir;
   write_small_log(dir.path(), "0.852 20.0 1.5 0.3\n1.066 5.0 2.0 0.2\n");

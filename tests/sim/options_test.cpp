@@ -79,6 +79,22 @@ TEST(SimOptions, RunSizeIsBoundedOnceTheTopLevelFieldsAreValid) {
   EXPECT_EQ(check(o)[0].field, "scale");
 }
 
+// A loop rounded to zero iterations gave a step length of 0/0 and NaN truth poses (issue 34).
+TEST(SimOptions, ScaleBelowItsMinimumOrUnderAnIterationPerLoopIsRefused) {
+  SimOptions o;
+  o.scale = 1e-5;
+  ASSERT_FALSE(check(o).empty());
+  EXPECT_EQ(check(o)[0].field + ": " + check(o)[0].problem, "scale: must be >= 0.01, got 1e-05");
+  o.scale = 0.05;
+  o.iterations_per_loop = 10;
+  ASSERT_FALSE(check(o).empty());
+  EXPECT_EQ(check(o)[0].field + ": " + check(o)[0].problem,
+            "scale: gives less than one iteration per loop: scale × iterations_per_loop must be at least 1");
+  o.iterations_per_loop = 20;
+  EXPECT_TRUE(check(o).empty());
+  EXPECT_GT(step_length(o), 0.0);
+}
+
 // Each field has a scenario key: describe() visits as many fields as the struct has members
 // (a nested struct once; its own fields are counted by its own line).
 TEST(SimOptions, EveryFieldIsDescribed) {

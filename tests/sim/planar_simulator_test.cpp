@@ -1,4 +1,5 @@
 #include "relslam/sim/planar_simulator.hpp"
+#include "relslam/sim/planar_sight.hpp"
 
 #include <gtest/gtest.h>
 

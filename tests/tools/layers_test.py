@@ -23,6 +23,7 @@ SIM = {
     "path": 2, "plane_sensor": 2,
     "world": 3, "column_grid": 3, "planar_map": 3, "point_sensor": 3,
     "simulator": 4, "planar_simulator": 4,
+    "planar_sight": 5,
 }
 # eval: relslam/eval/<layer>/... or, for internal headers, "<layer>/x.hpp" under eval/src.
 EVAL = ["config", "io", "metrics", "sources", "algorithms", "experiments", "cli"]

@@ -2,6 +2,7 @@
 
 #include "relslam/eval/config/input_error.hpp"
 
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -143,6 +144,11 @@ std::string strip_prefix(const std::string& message) {
   return colon == std::string::npos ? message : message.substr(colon + 2);
 }
 
+std::string too_large(std::uintmax_t bytes) {
+  return "is " + std::to_string(bytes) + " bytes; a JSON input may be at most " + std::to_string(kMaxJsonBytes) +
+         " bytes (" + std::to_string(kMaxJsonBytes >> 20) + " MiB)";
+}
+
 }  // namespace
 
 void check_json_nesting(const std::string& text, const std::string& file, const std::string& field) {
@@ -174,6 +180,7 @@ void check_json_nesting(const std::string& text, const std::string& file, const 
 JsonDocument parse_json(const std::string& text, const std::string& file) {
   JsonDocument doc;
   doc.file = file;
+  if (text.size() > kMaxJsonBytes) throw InputError(file, 0, "", too_large(text.size()));
   check_json_nesting(text, file, "");
   // The line pass first: it alone can name the key of a number too large for a double.
   int line = 1;
@@ -204,6 +211,9 @@ JsonDocument parse_json(const std::string& text, const std::string& file) {
 JsonDocument read_json_file(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) throw InputError(path.string(), 0, "", "file not found");
   if (std::filesystem::is_directory(path)) throw InputError(path.string(), 0, "", "is a directory, not a JSON file");
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if (!error && bytes > kMaxJsonBytes) throw InputError(path.string(), 0, "", too_large(bytes));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), 0, "", "cannot open file");
   std::ostringstream buffer;

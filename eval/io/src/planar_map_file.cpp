@@ -1,13 +1,15 @@
 #include "relslam/eval/io/planar_map_file.hpp"
 
+#include "relslam/core/option_issue.hpp"
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/config/json_document.hpp"
-#include "relslam/sim/planar_simulator.hpp"
+#include "relslam/sim/planar_sight.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <initializer_list>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string_view>
 
@@ -70,6 +72,9 @@ class MapReader {
     const json& walls = member(root, "", "walls");
     if (!walls.is_array()) fail("walls", "expected a list of walls, got " + walls.dump());
     if (walls.size() < 2) fail("walls", "has " + std::to_string(walls.size()) + "; a map needs at least two walls");
+    if (walls.size() > kMaxPlanarWalls)
+      fail("walls", "has " + std::to_string(walls.size()) + "; a map may have at most " +
+                        std::to_string(kMaxPlanarWalls) + " walls");
     std::vector<Eigen::Vector2d> facings;
     for (std::size_t i = 0; i < walls.size(); ++i) map.world.walls.push_back(read_wall(walls[i], i, height, facings));
     // Ends, heights and windows are checked before `facing` orders the ends: a zero-length or
@@ -83,14 +88,37 @@ class MapReader {
     if (root.contains("sensor")) read_sensor(root["sensor"], map.sensor);
     report(sim::check(map.sensor), "sensor.");
 
-    if (!sim::first_iteration_seeing(map, 2))
-      fail("path", "never sees two walls at once with the map's sensor (mode " +
-                       std::string(sim::to_string(map.sensor.mode)) +
-                       "); the algorithm relates walls only through the ones it sees together");
+    check_along_path(map);
     return map;
   }
 
  private:
+  // The path must stay clear of the walls and see two of them at once; both in time that grows
+  // with the map, not with the path's length (planar_simulator.hpp).
+  void check_along_path(const sim::PlanarMap& map) const {
+    const sim::PlanarPath path(map.path);
+    std::optional<sim::WallCrossing> crossing;
+    std::optional<int> seeing;
+    try {
+      crossing = sim::first_wall_crossing(map, path);
+      if (!crossing) seeing = sim::first_iteration_seeing(map, path, 2);
+    } catch (const OptionError& e) {  // the path is too long to check
+      fail(e.field(), e.problem());
+    }
+    if (crossing) {
+      const sim::OperationPlace place = sim::operation_place(map.path, crossing->operation);
+      fail("path." + place.field, "runs through walls[" + std::to_string(crossing->wall) + "] at (" +
+                                      format_number(crossing->at.x()) + ", " + format_number(crossing->at.y()) + ")" +
+                                      (place.loop > 0 ? ", loop " + std::to_string(place.loop) : "") +
+                                      ", after iteration " + std::to_string(crossing->before) +
+                                      ": the robot must stay inside the walls (a wall may be touched, not crossed)");
+    }
+    if (!seeing)
+      fail("path", "never sees two walls at once with the map's sensor (mode " +
+                       std::string(sim::to_string(map.sensor.mode)) +
+                       "); the algorithm relates walls only through the ones it sees together");
+  }
+
   [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
     throw InputError(doc_.file, line_near(field), field, problem);
   }

@@ -1,5 +1,6 @@
 #include "relslam/eval/io/rawlog.hpp"
 
+#include "relslam/core/option_issue.hpp"
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/io/mrpt_observation.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
@@ -23,7 +24,10 @@
 #include <mrpt/serialization/CArchive.h>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <numbers>
 #include <string_view>
 #include <utility>
 
@@ -67,11 +71,18 @@ CActionCollection odometry_actions(const ObservationFrame& frame) {
   return actions;
 }
 
-// A pose from the file must be finite and its rotation a rotation: MRPT stores the matrix
-// itself, so a flipped bit gives a shear that would bend every point silently.
-void require_finite(const Rigid3& pose, const std::string& file, int record, const std::string& field) {
+// A pose from the file must be finite, each coordinate within +-max_offset, and its rotation a
+// rotation: MRPT stores the matrix itself, so a flipped bit gives a shear that would bend every
+// point silently.
+void require_sane(const Rigid3& pose, double max_offset, const std::string& file, int record,
+                  const std::string& field) {
   if (!pose.rotation.allFinite() || !pose.translation.allFinite())
     throw InputError(file, record, field, "pose must be finite");
+  if (pose.translation.cwiseAbs().maxCoeff() > max_offset)
+    throw InputError(file, record, field,
+                     "each coordinate must be within +-" + format_number(max_offset) + " m, got (" +
+                         format_number(pose.translation.x()) + ", " + format_number(pose.translation.y()) + ", " +
+                         format_number(pose.translation.z()) + ")");
   const double error = (pose.rotation.transpose() * pose.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (error > 1e-3 || pose.rotation.determinant() < 0)
     throw InputError(file, record, field,
@@ -84,12 +95,38 @@ std::optional<Rigid3> odometry_of(const CActionCollection& actions, const std::s
     odometry = rigid_of(a3->poseChange.mean);
   else if (auto a2 = actions.getActionByClass<mrpt::obs::CActionRobotMovement2D>())
     odometry = rigid_of(mrpt::poses::CPose3D(a2->poseChange->getMeanVal()));
-  if (odometry) require_finite(*odometry, file, record, "odometry");
+  if (odometry) require_sane(*odometry, kMaxOdometryStep_m, file, record, "odometry");
   return odometry;
 }
 
+// What the sensor values must satisfy besides finiteness (rawlog.hpp states the ranges).
+void check_sensor_sense(const RangeBearingSensor& s, const std::string& file, int record) {
+  const auto fail = [&](const char* field, const std::string& problem, double value) {
+    throw InputError(file, record, field, problem + ", got " + format_number(value));
+  };
+  if (!(s.field_of_view_yaw_rad > 0 && s.field_of_view_yaw_rad <= 2 * std::numbers::pi))
+    fail("fieldOfView_yaw", "must be in (0, 2 pi]", s.field_of_view_yaw_rad);
+  // 0 is a planar sensor (a 2D laser: our Victoria Park conversion writes it).
+  if (!(s.field_of_view_pitch_rad >= 0 && s.field_of_view_pitch_rad <= 2 * std::numbers::pi))
+    fail("fieldOfView_pitch", "must be in [0, 2 pi]", s.field_of_view_pitch_rad);
+  if (s.min_range < 0) fail("minSensorDistance", "must be >= 0", s.min_range);
+  if (s.max_range > kMaxSensorRange_m)
+    fail("maxSensorDistance", "must be <= " + format_number(kMaxSensorRange_m) + " m", s.max_range);
+  if (s.max_range != 0 && s.max_range <= s.min_range)
+    fail("maxSensorDistance",
+         "must be above minSensorDistance (" + format_number(s.min_range) + "), or 0 with it for no range given",
+         s.max_range);
+  if (s.max_range == 0 && s.min_range != 0)
+    fail("maxSensorDistance", "must be above minSensorDistance (" + format_number(s.min_range) + ")", s.max_range);
+  const std::pair<const char*, double> deviations[] = {
+      {"sensor_std_range", s.std_range}, {"sensor_std_yaw", s.std_yaw_rad}, {"sensor_std_pitch", s.std_pitch_rad}};
+  for (const auto& [field, value] : deviations)
+    if (value < 0) fail(field, "must be >= 0", value);
+}
+
 // A NaN or infinite value would poison every estimate downstream; reject it here, naming the
-// record and the field, instead of producing silently wrong numbers.
+// record and the field, instead of producing silently wrong numbers. Every observation is
+// checked, though only the first one's sensor is kept.
 RangeBearingSensor sensor_of(const CObservationBearingRange& obs, const std::string& file, int record) {
   RangeBearingSensor s;
   s.min_range = obs.minSensorDistance;
@@ -108,7 +145,27 @@ RangeBearingSensor sensor_of(const CObservationBearingRange& obs, const std::str
                                                    {"sensor_std_pitch", s.std_pitch_rad}};
   for (const auto& [field, value] : values)
     if (!std::isfinite(value)) throw InputError(file, record, field, "must be finite, got " + std::to_string(value));
+  check_sensor_sense(s, file, record);
   return s;
+}
+
+// A reading within the observation's range (with kRangeTolerance for noise) and angles within
+// a turn; `field` names it.
+void check_reading(const CObservationBearingRange::TMeasurement& m, const CObservationBearingRange& obs,
+                   const std::string& file, int record, const std::string& field) {
+  if (!std::isfinite(m.range) || !std::isfinite(m.yaw) || !std::isfinite(m.pitch))
+    throw InputError(file, record, field,
+                     "range/yaw/pitch must be finite, got " + std::to_string(m.range) + "/" + std::to_string(m.yaw) +
+                         "/" + std::to_string(m.pitch));
+  if (m.range < 0) throw InputError(file, record, field, "negative range " + std::to_string(m.range));
+  const double limit = (1.0 + kRangeTolerance) * obs.maxSensorDistance;
+  if (obs.maxSensorDistance > 0 && m.range > limit)
+    throw InputError(file, record, field,
+                     "range " + format_number(m.range) + " beyond the observation's maxSensorDistance " +
+                         format_number(obs.maxSensorDistance) + " (at most " + format_number(limit) + ")");
+  if (std::abs(m.yaw) > 2 * std::numbers::pi || std::abs(m.pitch) > 2 * std::numbers::pi)
+    throw InputError(file, record, field,
+                     "yaw/pitch must be within +-2 pi, got " + format_number(m.yaw) + "/" + format_number(m.pitch));
 }
 
 RawlogFrame frame_of(const CObservationBearingRange& obs, int index, const std::string& file, int record) {
@@ -116,16 +173,12 @@ RawlogFrame frame_of(const CObservationBearingRange& obs, int index, const std::
   frame.index = index;
   frame.timestamp_s = mrpt::Clock::toDouble(obs.timestamp);
   frame.robot_T_sensor = rigid_of(obs.sensorLocationOnRobot);
-  require_finite(frame.robot_T_sensor, file, record, "sensorLocationOnRobot");
+  require_sane(frame.robot_T_sensor, kMaxSensorOffset_m, file, record, "sensorLocationOnRobot");
+  sensor_of(obs, file, record);
   frame.measurements.reserve(obs.sensedData.size());
   for (std::size_t i = 0; i < obs.sensedData.size(); ++i) {
     const auto& m = obs.sensedData[i];
-    const std::string field = "sensedData[" + std::to_string(i) + "]";
-    if (!std::isfinite(m.range) || !std::isfinite(m.yaw) || !std::isfinite(m.pitch))
-      throw InputError(file, record, field,
-                       "range/yaw/pitch must be finite, got " + std::to_string(m.range) + "/" + std::to_string(m.yaw) +
-                           "/" + std::to_string(m.pitch));
-    if (m.range < 0) throw InputError(file, record, field, "negative range " + std::to_string(m.range));
+    check_reading(m, obs, file, record, "sensedData[" + std::to_string(i) + "]");
     frame.measurements.push_back({m.range, m.yaw, m.pitch, m.landmarkID});
   }
   return frame;
@@ -140,29 +193,61 @@ std::string mrpt_message(const std::string& what) {
   return first == std::string::npos ? what.substr(0, what.find('\n')) : line.substr(first);
 }
 
+// A CObservationOdometry reading, and the increment since the previous one that becomes the
+// next frame's odometry; both within the bounds rawlog.hpp states.
+std::optional<Rigid3> odometry_increment(const mrpt::obs::CObservationOdometry& odo,
+                                         const std::optional<mrpt::poses::CPose2D>& last, const std::string& file,
+                                         int record) {
+  require_sane(rigid_of(mrpt::poses::CPose3D(odo.odometry)), kMaxOdometryReading_m, file, record,
+               "CObservationOdometry.odometry");
+  if (!last) return std::nullopt;
+  const Rigid3 increment = rigid_of(mrpt::poses::CPose3D(odo.odometry - *last));
+  require_sane(increment, kMaxOdometryStep_m, file, record, "CObservationOdometry.odometry (since the last reading)");
+  return increment;
+}
+
+// The decoded bytes the whole input may hold: its size on disk times kMaxRawlogExpansion, and
+// at least kMinRawlogBudgetBytes.
+std::size_t decoded_budget(std::uintmax_t stored_bytes) {
+  return std::max<std::size_t>(kMinRawlogBudgetBytes, kMaxRawlogExpansion * static_cast<std::size_t>(stored_bytes));
+}
+
+// The next record's bytes, checked by mrpt_record_check.hpp; false at a clean end between
+// records. Each RecordProblem becomes an InputError naming the file and the record.
+bool next_record(const ByteReader& read, std::vector<unsigned char>& bytes, const std::string& name, int record) {
+  try {
+    if (read_checked_record(read, bytes)) return true;
+    if (record == 1) throw InputError(name, 0, "", "empty file: not an MRPT rawlog");
+    return false;
+  } catch (const RecordProblem& p) {
+    if (p.truncated())
+      throw InputError(name, record, p.field(),
+                       "truncated: the file ends inside record " + std::to_string(record) + " (" + p.what() + ")");
+    if (record == 1 && p.field().empty())
+      throw InputError(name, record, "", std::string("not an MRPT rawlog (") + p.what() + ")");
+    throw InputError(name, record, p.field(), p.what());
+  }
+}
+
 // Every record goes through our own bounds first (mrpt_record_check.hpp); MRPT then decodes
-// exactly the bytes that passed, from memory.
-Rawlog read_records(mrpt::io::CStream& in, const std::string& name) {
+// exactly the bytes that passed, from memory. `budget` bounds the decoded bytes of all records.
+Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t budget) {
   const ByteReader read = [&in](void* buffer, std::size_t n) { return in.Read(buffer, n); };
   std::vector<unsigned char> bytes;
   Rawlog log;
   bool any_action = false, any_frame = false;
   std::optional<Rigid3> pending_odometry;                     // action waiting for its frame
   std::optional<mrpt::poses::CPose2D> last_odometry_reading;  // observation-only files
+  std::size_t decoded = 0;
   for (int record = 1;; ++record) {
-    try {
-      if (!read_checked_record(read, bytes)) {
-        if (record == 1) throw InputError(name, 0, "", "empty file: not an MRPT rawlog");
-        break;  // clean end between records
-      }
-    } catch (const RecordProblem& p) {
-      if (p.truncated())
-        throw InputError(name, record, p.field(),
-                         "truncated: the file ends inside record " + std::to_string(record) + " (" + p.what() + ")");
-      if (record == 1 && p.field().empty())
-        throw InputError(name, record, "", std::string("not an MRPT rawlog (") + p.what() + ")");
-      throw InputError(name, record, p.field(), p.what());
-    }
+    if (!next_record(read, bytes, name, record)) break;
+    decoded += bytes.size();
+    if (decoded > budget)
+      throw InputError(name, record, "",
+                       "the file decodes to more than " + std::to_string(budget) +
+                           " bytes, the most a rawlog may: the larger of " +
+                           std::to_string(kMinRawlogBudgetBytes >> 20) + " MiB and " +
+                           std::to_string(kMaxRawlogExpansion) + " times its size (a gzip bomb?)");
     mrpt::io::CMemoryStream memory;
     memory.assignMemoryNotOwn(bytes.data(), bytes.size());
     auto archive = mrpt::serialization::archiveFrom(memory);
@@ -201,10 +286,8 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name) {
       log.frames.push_back(std::move(frame));
     } else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(object)) {
       log.format = Rawlog::Format::ObservationsOnly;
-      require_finite(rigid_of(mrpt::poses::CPose3D(odo->odometry)), name, record, "CObservationOdometry.odometry");
       // Absolute odometry readings: the increment since the previous reading is the motion.
-      if (last_odometry_reading)
-        pending_odometry = rigid_of(mrpt::poses::CPose3D(odo->odometry - *last_odometry_reading));
+      if (auto increment = odometry_increment(*odo, last_odometry_reading, name, record)) pending_odometry = increment;
       last_odometry_reading = odo->odometry;
     } else {
       // read_checked_record admits no other class at the top level.
@@ -228,13 +311,15 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path)) throw InputError(name, 0, "", "is a directory, not a rawlog");
   mrpt::io::CFileGZInputStream in;
   if (!in.open(name)) throw InputError(name, 0, "", "cannot open file");
-  return read_records(in, name);
+  std::error_code error;
+  const std::uintmax_t stored = std::filesystem::file_size(path, error);
+  return read_records(in, name, decoded_budget(error ? 0 : stored));
 }
 
 Rawlog read_rawlog_bytes(std::string_view bytes, const std::string& name) {
   mrpt::io::CMemoryStream in;
   in.assignMemoryNotOwn(bytes.data(), bytes.size());
-  return read_records(in, name);
+  return read_records(in, name, decoded_budget(bytes.size()));
 }
 
 ObservationFrame observation_frame(const RawlogFrame& frame) {

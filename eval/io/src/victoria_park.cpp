@@ -1,6 +1,7 @@
 #include "relslam/eval/io/victoria_park.hpp"
 
 #include "numeric_rows.hpp"
+#include "relslam/core/option_issue.hpp"
 #include "relslam/eval/config/input_error.hpp"
 
 #include <cmath>
@@ -36,6 +37,15 @@ std::vector<NumericRow> timed_rows(std::string_view text, const std::string& fil
   return rows;
 }
 
+// Column `column` of `row` within +-limit (a corrupt value would overflow the estimates).
+double within(const NumericRow& row, std::size_t column, double limit, const std::string& file, const char* field) {
+  const double value = row.values[column];
+  if (std::abs(value) > limit)
+    throw InputError(file, row.line, field,
+                     "must be within +-" + format_number(limit) + ", got " + format_number(value));
+  return value;
+}
+
 }  // namespace
 
 Eigen::Vector2d laser_point(const TreeDetection& tree) {
@@ -51,6 +61,7 @@ VictoriaParkLog read_victoria_park(const std::filesystem::path& dir) {
                                       {"gps.dat", &text.gps}}) {
     const std::filesystem::path file = dir / name;
     if (!std::filesystem::exists(file)) throw InputError(file.string(), 0, "", "file not found");
+    if (std::filesystem::is_directory(file)) throw InputError(file.string(), 0, "", "is a directory, not a data file");
     std::ifstream in(file, std::ios::binary);
     content->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
@@ -78,7 +89,8 @@ VictoriaParkLog parse_victoria_park(const VictoriaParkText& text, const std::fil
   const std::string measurements = (dir / "measurements.dat").string();
   for (const NumericRow& row : parse_numeric_rows(text.measurements, measurements, 4, "time range bearing diameter")) {
     const double time = time_of(row, measurements);
-    const TreeDetection tree{row.values[1], row.values[2], row.values[3]};
+    const TreeDetection tree{within(row, 1, kMaxVictoriaParkRange_m, measurements, "range"), row.values[2],
+                             within(row, 3, kMaxVictoriaParkRange_m, measurements, "diameter")};
     if (tree.range <= 0 || tree.bearing < 0 || tree.bearing > std::numbers::pi || tree.diameter < 0)
       throw InputError(measurements, row.line, "", "range must be > 0, bearing in [0, pi], diameter >= 0");
     auto it = scan_at.find(millis(time));
@@ -95,10 +107,15 @@ VictoriaParkLog parse_victoria_park(const VictoriaParkText& text, const std::fil
     ++log.detections;
   }
 
-  for (const NumericRow& row : timed_rows(text.inputs, (dir / "inputs.dat").string(), 3, "time speed steering"))
-    log.inputs.push_back({row.values[0], row.values[1], row.values[2]});
-  for (const NumericRow& row : timed_rows(text.gps, (dir / "gps.dat").string(), 3, "time x y"))
-    log.gps.push_back({row.values[0], {row.values[1], row.values[2]}});
+  const std::string inputs = (dir / "inputs.dat").string();
+  for (const NumericRow& row : timed_rows(text.inputs, inputs, 3, "time speed steering"))
+    log.inputs.push_back({row.values[0], within(row, 1, kMaxVictoriaParkSpeed_mps, inputs, "speed"),
+                          within(row, 2, kMaxVictoriaParkSteering_rad, inputs, "steering")});
+  const std::string gps = (dir / "gps.dat").string();
+  for (const NumericRow& row : timed_rows(text.gps, gps, 3, "time x y"))
+    log.gps.push_back({row.values[0],
+                       {within(row, 1, kMaxVictoriaParkCoordinate_m, gps, "x"),
+                        within(row, 2, kMaxVictoriaParkCoordinate_m, gps, "y")}});
   return log;
 }
 

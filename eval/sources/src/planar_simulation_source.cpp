@@ -2,6 +2,7 @@
 
 #include "relslam/eval/io/planar_map_file.hpp"
 #include "relslam/eval/sources/plane_frame_files.hpp"
+#include "relslam/sim/planar_sight.hpp"
 
 #include <algorithm>
 #include <limits>

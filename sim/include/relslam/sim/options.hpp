@@ -95,6 +95,10 @@ struct SimOptions {
 // (S-40 has 152,000 iterations; ρ = 550 has 6,298 points).
 inline constexpr long long kMaxIterations = 100'000'000;
 inline constexpr long long kMaxLandmarks = 20'000'000;
+// Smallest sim.scale: a loop of 11.45 units in 38 iterations, far below the frustum's reach and
+// every thesis run (1 and 2). Smaller scales have no use, and below 1/(2·iterations_per_loop) a
+// loop rounds to zero iterations, whose step length is 0/0 (NaN truth poses).
+inline constexpr double kMinScale = 0.01;
 
 // The scenario keys of SimOptions (sim.*): help and checks per field.
 void describe(OptionsOf<SimOptions> auto& o, auto& f) {
@@ -103,8 +107,10 @@ void describe(OptionsOf<SimOptions> auto& o, auto& f) {
   f.field("loops", o.loops, "times round the figure eight; 1 loop = 3800 iterations", at_least(1));
   f.field("iterations", o.iterations, "run length in iterations; overrides sim.loops", at_least(1),
           at_most(kMaxIterations));
-  f.field("scale", o.scale, "multiplies path lengths; 2 = the double-size eight (Fig 136)", above(0.0),
-          at_most(1000.0));
+  f.field("scale", o.scale, "multiplies path lengths; 2 = the double-size eight (Fig 136)", at_least(kMinScale),
+          at_most(1000.0),
+          holds(o.scale * o.iterations_per_loop >= 1.0,
+                "gives less than one iteration per loop: scale × iterations_per_loop must be at least 1"));
   f.field("density", o.density, "points per 100 units of path (thesis 6.6.2)", at_least(0.0));
   f.field("noise_sigma", o.noise_sigma, "std. deviation of white Gaussian noise per axis, units", at_least(0.0),
           at_most(kMaxLength));

@@ -46,9 +46,4 @@ class PlanarSimulator {
   std::optional<PointSensor> point_sensor_;
 };
 
-// The first iteration at which the map's sensor, without noise, reports at least `count`
-// planes; none if the path never sees that many at once. A map whose path never sees two walls
-// together gives the algorithm nothing to relate (Rule 7; spec A26).
-std::optional<int> first_iteration_seeing(const PlanarMap& map, int count);
-
 }  // namespace relslam::sim

@@ -48,9 +48,39 @@ struct Rawlog {
   std::vector<RawlogFrame> frames;
 };
 
+// The reader's limits besides the per-record bounds of its framing check (16 MiB a record,
+// every count checked before it is allocated):
+//
+// The whole file decodes to at most the larger of kMinRawlogBudgetBytes and kMaxRawlogExpansion
+// times its size on disk. Every frame is kept in memory, so this bounds memory by the file's
+// size: landmark readings (floats) compress about 2:1, while a gzip bomb of zeros compresses
+// 1000:1 (a 995 KB file of eight records took 1.15 GB). A plain file never reaches it.
+inline constexpr std::size_t kMinRawlogBudgetBytes = std::size_t{64} << 20;
+inline constexpr std::size_t kMaxRawlogExpansion = 64;
+// What a bearing-range observation says about its sensor must make sense, not only be finite
+// (a negative field of view, a maximum range below the minimum or readings of 3e38 ran the EKF
+// for minutes; a sensor 1e300 away from the robot gave NaN):
+//   fieldOfView_yaw in (0, 2 pi], fieldOfView_pitch in [0, 2 pi] (0: a planar sensor);
+//   0 <= minSensorDistance;
+//   maxSensorDistance <= kMaxSensorRange_m and above minSensorDistance, unless both are 0
+//   (MRPT's default: no range given); readings in [0, (1 + kRangeTolerance) maxSensorDistance]
+//   when a maximum is given (MRPT's simulator adds noise after it culls by range); yaw and
+//   pitch in [-2 pi, 2 pi]; sensor noise deviations >= 0; each coordinate of the sensor's pose
+//   on the robot within +-kMaxSensorOffset_m.
+inline constexpr double kMaxSensorRange_m = 1e6;
+inline constexpr double kRangeTolerance = 0.1;
+inline constexpr double kMaxSensorOffset_m = 1e3;
+// Odometry: each coordinate of an increment (an action, or the difference of two consecutive
+// CObservationOdometry readings) within +-kMaxOdometryStep_m, of a reading within
+// +-kMaxOdometryReading_m, so that composing them cannot overflow (two finite readings of
+// opposite sign 1e308 differ by infinity).
+inline constexpr double kMaxOdometryStep_m = 1e4;
+inline constexpr double kMaxOdometryReading_m = 1e9;
+
 // Reads plain or gzip files of either MRPT format. Throws InputError (file, record number,
 // field, problem) for a missing, foreign, truncated or empty file, a class we do not accept,
-// a count beyond what a record may hold, or a non-finite value. Accepted at the top level:
+// a count beyond what a record may hold, a file decoding to more than its budget above, a
+// non-finite value or one outside the ranges above. Accepted at the top level:
 // CActionCollection (of CActionRobotMovement2D/3D), CSensoryFrame (of CObservationBearingRange
 // and CObservationOdometry), CObservationBearingRange, CObservationOdometry; README.md lists
 // the versions.

@@ -54,8 +54,17 @@ struct VictoriaParkLog {
 // k-th laser line (sensor 3) of Sensors_manager.txt, its detections the rows of
 // measurements.dat at exactly its time; scans of measurements.dat after the last listed one
 // follow in time order. Throws InputError naming the file and line of anything malformed, a
-// detection at a time no scan has, or a missing file.
+// detection at a time no scan has, a value outside the sane ranges below, or a missing file
+// or one that is a folder.
 VictoriaParkLog read_victoria_park(const std::filesystem::path& dir);
+
+// Sane ranges of the values, far outside the data set's own (GPS within 250 m of its origin,
+// detections within 76 m, speeds up to 7 m/s, steering up to 0.6 rad) and far inside what
+// overflows: a GPS coordinate of 1e308 made every ATE column empty.
+inline constexpr double kMaxVictoriaParkCoordinate_m = 1e6;  // |x|, |y| of gps.dat
+inline constexpr double kMaxVictoriaParkRange_m = 1e3;       // range and diameter in measurements.dat
+inline constexpr double kMaxVictoriaParkSpeed_mps = 100;     // |speed| in inputs.dat
+inline constexpr double kMaxVictoriaParkSteering_rad = 1.6;  // |steering| in inputs.dat: under 90 degrees
 
 // The four files' text, for reading them from memory (the fuzz target).
 struct VictoriaParkText {
