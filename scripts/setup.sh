@@ -11,6 +11,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-pandas python3-numpy
   parallel
+  mkdocs mkdocs-material
 )
 
 missing=()
