@@ -37,7 +37,10 @@ for path in sorted(glob.glob('scenarios/*.json')):
         d = json.load(f)
     desc = d.get('description') or ''
     # Descriptions may cite internal work items; the docs cite the thesis only.
-    desc = re.sub(r'[;,]?\s*spec §[0-9.]+', '', desc)
+    desc = re.sub(r'\s*\(spec [^()]*\)', '', desc)
+    desc = re.sub(r'as spec [0-9.]+ checks', 'as checked', desc)
+    desc = re.sub(r'[;,]?\s*spec §?[0-9.]+', '', desc)
+    desc = desc.replace("the spec's", 'the planned')
     desc = re.sub(r',?\s*issue \d+', '', desc)
     desc = desc.replace('(, ', '(').replace('()', '').replace('|', '\\|').replace('\n', ' ')
     rows.append(f"| `{os.path.basename(path)}` | {d.get('kind', 'simulation')} | {desc} |")
