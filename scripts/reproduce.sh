@@ -4,7 +4,7 @@
 # writes the report: each figure next to its thesis
 # number and caption (report/index.html) and the thesis's numbers next to ours (report/claims.md).
 #   scripts/reproduce.sh [--quick] [--out DIR] [--report DIR] [--binary PATH] [--jobs N]
-#     --quick    shortened runs (fewer iterations and loops; under 15 minutes on two cores)
+#     --quick    shortened runs (fewer iterations and loops; about 16 minutes on two shared cores, measured 16 min 26 s)
 #     --out      run folders (default runs/reproduce, or runs/reproduce-quick with --quick)
 #     --report   report folder (default report)
 #     --binary   use this relslam and skip installing and building (as the long CTest does)

@@ -84,23 +84,20 @@ struct Em2Options {
   double left_fraction = 0.02;
   // Growth rounds per plane at most: expand, gather, refit, density check; growth ends earlier
   // once a round leaves the plane's points unchanged [T "end the iterative process after a few
-  // iterations", 3.5.3 step 5]. Deviation (spec §4.6: 6) [C]: a round widens the plane's box by
-  // at most e_exp, and a plane grows over its seed's grid query, up to C + 2·O = 6 across, so it
-  // may need (C + 2·O) / e_exp = 20 rounds to settle. At 6 most planes stop mid-growth (2 of 3
-  // on Map D, 19 of 20 on Map E at σ_pt 0.05); the rest of their wall is left to other seeds,
-  // some of which fit a thin plane 8–12° off the wall that the merge keeps apart (noise planes:
-  // precision on p-em-room-noise, seeds 1–5, 0.9991–0.9997 at 6 against 0.9996–1 at 20, both
-  // with absorb_passes).
+  // iterations", 3.5.3 step 5]. Deviation (first set at 6) [C]: a round widens the plane's box
+  // by at most e_exp, and a plane grows over its seed's grid query, up to C + 2·O = 6 across, so
+  // it may need (C + 2·O) / e_exp = 20 rounds to settle; with fewer, planes stop mid-growth and
+  // the rest of their wall is left to other seeds (measured in
+  // docs/experiments/plane-extraction.md). Default 20.
   int grow_rounds = 20;
   // Leftovers: once the loop ends, unassigned points that a plane accepts join the nearest such
   // plane, pass after pass while any join, at most this many passes (0: off) [C]. A plane grows
   // only within its seed's grid query, and the loop stops with up to left_fraction of the
   // points unassigned, so the rest of a wall piece can be left out of every plane: the far end
-  // of a piece longer than the query (Map E iteration 510 at 20 growth rounds: 28 points, the
-  // last 0.52 of wall 3's 3.8 in view) or the end of a short wall that the growth rounds did not
-  // reach (Map D iteration 2225 at 6 rounds: the bottom 0.55 of a 0.7-long wall). Each pass reaches
-  // e_exp further; the points are the loop's leftovers only, so a plane never takes a point
-  // from another.
+  // of a piece longer than the query, or the end of a short wall that the growth rounds did not
+  // reach (examples in docs/experiments/plane-extraction.md). Each pass reaches e_exp further;
+  // the points are the loop's leftovers only, so a plane never takes a point from another.
+  // Default 10.
   int absorb_passes = 10;
   // The overlapping grid ("overlapping quadtree", thesis 3.2.2, 6.2.4) over (x, z): cell size C
   // and overlap O. A plane grows only within its seed point's cell, so it reaches at most

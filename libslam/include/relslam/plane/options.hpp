@@ -88,23 +88,17 @@ struct RuleSwitches {
   // Rule 30 (ReorderPlanes, spec §5.7.3): a group's comparison chain is re-ordered so it pairs
   // the planes sharing the longest intervals with valid key points. Off: the chain stays in the
   // order the planes joined, and a collinear shrink + grow pair (Fig 97) can leave a plane
-  // unplaced. [T: on; C: off for now] Measured, noise-free Map D with the small frustum: the
-  // same errors either way (the mixed anchor at 831, and from 838 plane 17 ties with both of its
-  // partners, so no chain places it); on E23 (points + EM2) the longer edges it picks carry wrong
-  // key points (final mean map error 0.24 → 1.96). Off until part 3's interval checks (Rules
-  // 31–34) guard the edges it chooses.
+  // unplaced. [T: on; C: off for now] Off by default: on our maps it has not helped yet (the
+  // measurements are in docs/algorithms/relative-plane.md and docs/experiments/).
   bool reorder_planes = false;
   // Rule 30's search also runs, whatever reorder_planes says, for a group the map has not placed
   // while an edge of its chain cannot place both its planes (invalid, ambiguous or without a key
   // point), at most every reorder.broken_gap iterations; the broken chain is replaced by any
   // chain whose edges all can [C]. A chain is built in the order the planes joined, so a group
   // made as a plane leaves the view can have that plane as its base and its one edge ambiguous
-  // (Rule 15: both planes cut by the frustum): then no linking plane places the group (E24,
-  // p-em-office-noise, seeds 1–3 lost at iteration 172). Unlike the periodic search it leaves
-  // placed groups and usable chains alone (for placed groups too it mapped p-office's noisy
-  // small frustum with 2–3 duplicates instead of 1). Off by default, on in E23/E24's
-  // scenarios: E24 maps in 3 of seeds 1–5 with it (1 without), but p-office's noisy small
-  // frustum, seed 4, gets 10 duplicates (1 without; seeds 1–3 and 5 unchanged) [C].
+  // (Rule 15: both planes cut by the frustum): then no linking plane places the group. Unlike
+  // the periodic search it leaves placed groups and usable chains alone. Off by default, on in
+  // E23/E24's scenarios [C] (measured in docs/experiments/plane-extraction.md).
   bool reorder_broken_chains = false;
   // Rule 4's first-reading resize (thesis 4.3.6, Fig 90; spec §5.8 step 1): X0 is anchored on
   // its planes' first observations, grown first to the plane's size in X0 from its key point
@@ -130,10 +124,8 @@ struct RuleSwitches {
   // child plane's largest size, then the longest interval, with the parent's size and key point
   // of that time for Rule 28) and uses it when the current one is smaller or cannot place the
   // plane — also once the circular array has overwritten the iterations the pair shared. Off:
-  // only Rule 35's whole-group copy saves a group (E19). Part 2 only. [T: on] Measured (seed 1):
-  // final mean map error E19 0.055 → 0.048, E15 1.35 → 1.08, E23 0.24 → 0.12, E24 11 → 36 of 36
-  // walls, E25 1.07 → 1.04; worse on E26 (10 → 9 of 10 walls, 1.06 → 1.27), and key-point claims
-  // are right less often (E15 89 → 85 %): a reserve's key point is that of its own interval.
+  // only Rule 35's whole-group copy saves a group (E19). Part 2 only. [T: on] (measured in
+  // docs/algorithms/relative-plane.md).
   bool save_reserve = true;
   // Rule 37 (CheckForLoopClosing and MendMergeAfterLoopClosing, spec §5.5.5): during a motion
   // model a group also holds a plane in view through its duplicate (the same wall as another
@@ -141,9 +133,7 @@ struct RuleSwitches {
   // (Rule 29 through duplicates); then each plane in view with a duplicate gets a one-way link to
   // each group the duplicate is in, and Rule 22 counts it for them, as if the two were merged,
   // while no group compares it. Off: a wall seen again as a new plane charts only its own groups
-  // (the wrong current group of Fig 101). [T: on] Measured: E20 (Map E, seeds 1–5) charts X0
-  // again after the fourth corner (290–450 iterations charted otherwise); poses and map are the
-  // same bit for bit either way.
+  // (the wrong current group of Fig 101). [T: on]
   bool pseudo_merge = true;
   // Rules 31–34 (thesis 4.3.7.2, walkthrough 4.5; spec §5.11): a plane whose comparison in a
   // group still covers fewer than rollback.min_interval iterations rollback.confirm_after
@@ -151,9 +141,8 @@ struct RuleSwitches {
   // then: not on the map), and the algorithm rolls back to the iteration it joined and replays
   // the stored inputs with the hint (Figs 94–96: a plane seen as another leaves, compared over a
   // few iterations, barely mapped). Off: every plane stays in the groups it joined. [T: on;
-  // C: off] On changes the measured runs of Maps D and E with noise, without a clear gain yet
-  // (README, E17: roll-backs, map and pose errors with it off and on); off, like reorder_planes,
-  // so what was measured without it stays reproducible.
+  // C: off] Off by default, like reorder_planes: on our maps it changes the runs without a clear
+  // gain yet (E17 in docs/experiments/relative-plane.md).
   bool interval_check = false;
 };
 
@@ -202,15 +191,14 @@ struct RollBackOptions {
   // Rules 31/32: a membership is confirmed once the comparison placing the plane (its chain edge
   // from the previous plane) covers this many iterations [R, I_min] ...
   int min_interval = 20;
-  // ... counted as `measure` says [C: shared, Rule 31's wording; measured (README, E17) both give
-  // the same maps of Maps D and E, shared with fewer roll-backs: 4 against 6 on Map D, large frustum].
+  // ... counted as `measure` says [C: shared, Rule 31's wording].
   IntervalMeasure measure = IntervalMeasure::Shared;
   // ... and judged this many iterations after the plane joined: earlier its interval may still
   // grow [R, T_confirm].
   int confirm_after = 60;
   // Rule 33: a copy of the whole state is kept every this many iterations; a roll-back restores
   // the newest copy before its target and replays from there, so a shorter period replays less
-  // and copies more [C; README E17 gives the time and memory it costs].
+  // and copies more [C; the time and memory it costs: E17 in docs/experiments/relative-plane.md].
   int checkpoint_period = 50;
   // The oldest reachable iteration, iterations back: the PlaneRecord buffer of thesis 4.4.3.17,
   // as deep as RltPlane's circular array [R, storage_capacity]; a roll-back further back is
@@ -263,9 +251,7 @@ struct RelativePlaneOptions {
   // at a fixed offset — one plane had no real end in view (seen cut at both ends as the small
   // frustum's far corner sweeps it in during a turn, Fig 105's case) — and is invalid, so neither
   // it nor its size is kept (Rule 36). The bound is the noise's: noise-free runs set 1e-6 (with
-  // same_length 1e-9); with noise no fixed value parts the two (measured: 0.04 keeps Map D's
-  // noise-free turns exact but costs the noisy runs walls, 0.08 misses the turn's 0.07) [T: 0,
-  // every comparison counts].
+  // same_length 1e-9); with noise no fixed value parts the two [T: 0, every comparison counts].
   double rigid_sigma = 0;
   // Iterations a pair is compared over (Figs 74/75) [T: Pair].
   IntervalMode interval_mode = IntervalMode::Pair;

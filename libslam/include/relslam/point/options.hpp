@@ -31,7 +31,7 @@ struct GroupLevelOptions {
   int accuracy_reduction = 10;
   int prev_min = 20;  // fewer previously mapped candidates: c is not a good point, no group
   int prev_max = 20;  // the best (most observed) previously mapped candidates kept
-  // Deviation (beyond the thesis, issue 16), with the adaptive preset only: PrevGroupMin as
+  // Deviation (beyond the thesis), with the adaptive preset only: PrevGroupMin as
   // this share of the points in view (mean over [c0, c0+A]), at least 3, at most prev_min. The
   // thesis's 20 (final) and 6 (temporary) were tuned where about 100 points are in view [C].
   double prev_share = 0.2;
@@ -107,7 +107,7 @@ void describe(OptionsOf<Level3Options> auto& l, auto& f) {
   f.field("binning", l.binning, "level 3: RltBinning removes dynamic members");
 }
 
-// Deviation (beyond the thesis, issue 19): when the group-to-world transforms are solved for
+// Deviation (beyond the thesis): when the group-to-world transforms are solved for
 // all at once, so a closed loop corrects the chain of groups (group_relaxation.hpp).
 enum class GlobalRelaxation : unsigned char {
   Off,            // the thesis: each group registered once to its anchors, never corrected
@@ -117,7 +117,7 @@ enum class GlobalRelaxation : unsigned char {
 std::string_view to_string(GlobalRelaxation relaxation);  // "off", "on_loop_closure", "periodic"
 
 // The thesis tuned its constants to one world: about 100 points in view, noise sigma 0.1
-// (thesis 6.6.1). Beyond it (issue 16) the adaptive preset derives group creation from what the
+// (thesis 6.6.1). Beyond it the adaptive preset derives group creation from what the
 // sensor shows; the scenario layer also scales the matching bounds with the noise (noise_bounds.hpp).
 enum class Preset : unsigned char {
   Thesis,    // the thesis's constants as they stand, and a run fails when the map frame cannot be rooted
@@ -207,19 +207,15 @@ struct PointSlamOptions {
   // frame cannot be registered (fewer than 3 known points in view), carry the pose forward by
   // it instead of holding it. This bridges the Victoria Park scans with fewer than 3 trees.
   bool use_odometry = false;
-  // Deviation (beyond the thesis, issue 19; with use_odometry): the pose dead reckoning predicts
-  // (the latest pose moved by the frame's odometry) checks and stands in for weak registrations.
-  // Its rotation replaces the turn-rate extrapolation as the predicted rotation (what
+  // Deviation (beyond the thesis; with use_odometry): the pose dead reckoning predicts (the
+  // latest pose moved by the frame's odometry) checks and stands in for weak registrations. Its
+  // rotation replaces the turn-rate extrapolation as the predicted rotation (what
   // provisional_rotation_weight leans on); a registration that turns more than
   // odometry_max_turn_deg or lands more than odometry_max_shift units from it is a mismatch (a
   // scan's dead reckoning is off by centimetres and a fraction of a degree, a mismatch of trees by
   // metres); and a frame with fewer than three points to register takes it rather than a pose
-  // from one or two points. At Victoria Park the three-tree registrations in sparse stretches
-  // (two to five trees) flipped the pose upside down or jumped by metres, and the pose from one
-  // or two trees carried the error on: whole log, adaptive, --bridge, no relaxation, ATE 139 m
-  // against GPS before, 2.0 m with 10 degrees and 1.5 m, the best of a grid whose runs ended at
-  // 1.9-58 m; with the global bound at 2.5 m instead of 5 (victoria-park-bridged.json) the same
-  // grid ended at 1.8-2.7 m but one run (README, issue 19) [C].
+  // from one or two points. Defaults 10 degrees and 1.5 units [C]; measured at Victoria Park in
+  // docs/algorithms/relaxation.md.
   double odometry_max_turn_deg = 10.0;
   double odometry_max_shift = 1.5;
   // Deviation (beyond the thesis): a temporary group that lacks prev_min mapped points in view
@@ -228,91 +224,65 @@ struct PointSlamOptions {
   // (pose_from_unmapped's pose chain) until mapped. The map then starts, or goes on, where the
   // thesis's algorithm stalls: new points could never be grouped again. Off by default.
   bool provisional_root = false;
-  // Deviation (adaptive preset only, issue 16): two mapped points fix a registration up to a
-  // rotation about their line; that rotation is taken from the latest pose registered to the
+  // Deviation (adaptive preset only; beyond the thesis): two mapped points fix a registration up
+  // to a rotation about their line; that rotation is taken from the latest pose registered to the
   // map (the rotation closest to it, register_two_points in rlt_icp.hpp). It gives the current
   // pose when exactly two mapped points are in view (pose_source two_points, ahead of
   // pose_from_unmapped), and places a group with two anchors (PrevGroupMin's floor is then 2).
   // With one mapped point in view and no registration to provisional positions, the pose keeps
   // that pose's rotation and takes its position from the point (pose_source one_point) instead
-  // of being held. At density 5 (about 4 points in view) the map otherwise stalls for good once
-  // fewer than three mapped points stay in view. Ignored by the thesis preset. Off by default:
-  // with average_provisional (below) the pose no longer needs it, and its two-anchor groups tilt
-  // a density-10 map at sigma >= 0.2 (seed 2: about 3 degrees of roll from the first 100
-  // iterations, ATE 4.3 against 2.9 without; the issue-16 sweep's density-10 cells at sigma 0.2
-  // and 0.3 went from 1.63 and 1.39 to 1.81 and 1.59), while at density 5 it helps only at
-  // sigma >= 0.2, where neither setting meets the goal (README, issue 16).
+  // of being held. Ignored by the thesis preset. Off by default [C]: with average_provisional the
+  // pose no longer needs it, and its two-anchor groups tilt sparse maps at high noise (measured
+  // in docs/experiments/adaptive.md).
   bool two_point_registration = false;
   // Steepest line, degrees above the robot's floor (its x-z plane: +y is up, observation.hpp),
   // that two-point registration accepts [C]: the prior's yaw error reaches the result scaled by
   // the sine of the line's elevation (0.71 at 45 degrees).
   double two_point_max_elevation_deg = 45.0;
-  // Deviation (adaptive preset only, issue 16, needs pose_from_unmapped): a point's provisional
-  // position is the mean of where each pose since it was first placed put it, not where the
-  // latest pose puts it. Registering to the latest placements chains the pose frame to frame, a
-  // random walk that grows with every iteration off the map; registering to the means chains it
-  // only as the points in view change. Two provisional pairs in view (or one mapped and one
-  // provisional) then register the pose as two mapped points do, the rotation about their line
-  // from the latest pose (pose_source two_unmapped), and one such pair keeps the latest pose's
-  // rotation and takes its position from that point (one_unmapped), instead of holding the pose
-  // while the robot moves and turns: at density 5 a held or unturned pose lost the heading by
-  // about 30 degrees and every later iteration inherited it (seed 2: ATE 60). Ignored by the
-  // thesis preset.
+  // Deviation (adaptive preset only, needs pose_from_unmapped; beyond the thesis): a point's
+  // provisional position is the mean of where each pose since it was first placed put it, not
+  // where the latest pose puts it. Registering to the latest placements chains the pose frame to
+  // frame, a random walk that grows with every iteration off the map; registering to the means
+  // chains it only as the points in view change. Two provisional pairs in view (or one mapped
+  // and one provisional) then register the pose as two mapped points do, the rotation about
+  // their line from the latest pose (pose_source two_unmapped), and one such pair keeps the
+  // latest pose's rotation and takes its position from that point (one_unmapped), instead of
+  // holding the pose while the robot moves and turns. Ignored by the thesis preset. On by
+  // default [C].
   bool average_provisional = true;
-  // Deviation (adaptive preset only, issue 16): with one point in view (pose_source one_point,
-  // one_unmapped) the rotation is not observed; the robot keeps turning at the rate measured
-  // over the last turn_rate_window iterations of poses whose registration fixed the rotation
-  // (turn_rate.hpp) instead of keeping the latest rotation. 0: the latest rotation. The figure
-  // eight's arcs turn about 0.23 degrees per iteration, and at density 5 one point stays alone
-  // in view for up to ~100 iterations: the heading fell behind by the whole turn (seed 2: 23
-  // degrees, then the position error grew with the distance travelled). A registration's
-  // rotation noise (~0.3 degrees per iteration at density 5, sigma 0.2) is divided by the
-  // window in the rate [C].
+  // Deviation (adaptive preset only; beyond the thesis): with one point in view (pose_source
+  // one_point, one_unmapped) the rotation is not observed; the robot keeps turning at the rate
+  // measured over the last turn_rate_window iterations of poses whose registration fixed the
+  // rotation (turn_rate.hpp) instead of keeping the latest rotation. A registration's rotation
+  // noise is divided by the window in the rate. 0: the latest rotation. Default 30 [C].
   int turn_rate_window = 30;
-  // Deviation (adaptive preset only, issue 16): a registration to three or more points whose
-  // rotation differs from the predicted one (the latest turned on at the measured rate) by more
-  // than this many degrees is taken for a mismatch and the pose is registered as with one point
-  // (the predicted rotation, the position from the pairs' centroid). A robot turns a fraction of
-  // a degree per iteration; at density 5 four points in two tight clusters (two landmarks 1.4
-  // apart) after a swap in matching registered the pose turned by about 170 degrees, every
-  // other iteration for 500 iterations (seed 1, sigma 0.2 and 0.3: ATE ratio to the EKF 3.03 and
-  // 2.17 -> 1.62 and 1.28, before provisional_rotation_weight). Correct registrations there
-  // differ from the prediction by up to ~25 degrees at sigma 0.3 (a map already bent), and with
-  // 15-30 the gate let the reference creep or rejected them: 60 (45 works too) [C]. 0: off.
+  // Deviation (adaptive preset only; beyond the thesis): a registration to three or more points
+  // whose rotation differs from the predicted one (the latest turned on at the measured rate) by
+  // more than this many degrees is taken for a mismatch (two swapped pairs in matching) and the
+  // pose is registered as with one point (the predicted rotation, the position from the pairs'
+  // centroid). A robot turns a fraction of a degree per iteration, but correct registrations on
+  // a bent map may differ from the prediction by tens of degrees. Default 60 [C]. 0: off.
   double max_turn_deg = 60.0;
-  // Deviation (adaptive preset only, issue 16, with average_provisional): a pose registered to
-  // provisional positions (pose_source unmapped, two_unmapped) takes this share of the way from
-  // the predicted rotation (the latest turned on at the measured rate) to its registered one,
-  // and its position from the pairs' centroid. Two to four provisional points register the
-  // rotation with a whole observation's noise, each pose places the points new in view, and the
-  // next poses register to those: the noise adds up along the chain, a random walk of pitch
-  // that the robot driving forward turned into height error (density 5, sigma 0.2, seed 5: 6
-  // units of height at iteration 1400, 3 landmarks on the map; ATE 3.02 -> 1.40, EKF 1.00).
-  // Weighing the prediction averages the registrations over the last few iterations (a
-  // complementary filter). Measured on the issue-16 sweep's cells, density 5 at sigma 0.2 / 0.3
-  // and density 10 at sigma 0.2: 0.2 gave 1.52 / 1.78 / 1.51, 0.3 1.40 / 1.67 / 1.49, 0.5 1.34
-  // / 1.65 / 1.49; weighing unmapped poses only (0.3) 1.39 / 1.85 / 1.48 [C]. Poses registered
-  // to the map keep their rotation (weighing them too: density 10, sigma 0.2 1.71). 1: the
-  // registered rotation.
+  // Deviation (adaptive preset only, with average_provisional; beyond the thesis): a pose
+  // registered to provisional positions (pose_source unmapped, two_unmapped) takes this share of
+  // the way from the predicted rotation (the latest turned on at the measured rate) to its
+  // registered one, and its position from the pairs' centroid: a complementary filter that keeps
+  // the noise of the few provisional points from adding up along the chain of poses. Poses
+  // registered to the map keep their rotation. Default 0.5 [C]. 1: the registered rotation.
   double provisional_rotation_weight = 0.5;
-  // Deviation (adaptive preset only, issue 16): the root group's rotation in the map frame is
-  // read off the rotations it has in the robot frame over its first root_rotation_window
-  // iterations from the map frame on (each its members' averaged positions registered to that
-  // iteration's observations), by a straight-line fit evaluated at the map frame
-  // (rotation_fit.hpp), instead of off the map frame's observations alone; the translation still
-  // puts the members' centroid on their first observations. The thesis registers the root to
-  // the first iteration's observations (6.3.3): one observation's noise, which every later pose
-  // and group inherits. At density 5 the map frame rests on three points, at sigma 0.3 two of
-  // them 4.4 units apart at range 96 (seed 4): about 11 degrees of roll in the map from
-  // iteration 100 to 1000, ATE 13.1 (EKF 8.13); fitted, about 1 degree and 5.75. The robot turns
-  // at a steady rate over a few dozen iterations, so the fitted rotation keeps the frame's and
-  // averages the noise. Windows 15 / 30 / 60 gave the issue-16 sweep's cells density 5 at sigma
-  // 0.3 1.43 / 1.20 / 1.24 and density 10 at sigma 0.2 1.36 / 1.01 / 1.05 (before 1.65, 1.49) [C].
-  // 0: the first iteration's observations.
+  // Deviation (adaptive preset only; beyond the thesis): the root group's rotation in the map
+  // frame is read off the rotations it has in the robot frame over its first
+  // root_rotation_window iterations from the map frame on (each its members' averaged positions
+  // registered to that iteration's observations), by a straight-line fit evaluated at the map
+  // frame (rotation_fit.hpp), instead of off the map frame's observations alone; the translation
+  // still puts the members' centroid on their first observations. The thesis registers the root
+  // to the first iteration's observations (6.3.3): one observation's noise, which every later
+  // pose and group inherits. Default 30 [C]. 0: the first iteration's observations.
   int root_rotation_window = 30;
 
-  // Deviation (beyond the thesis, issue 19): a joint solve of all group-to-world transforms
-  // (group_relaxation.hpp). Off: the thesis's algorithm, bit for bit.
+  // Deviation (beyond the thesis, which leaves loop closure open, 6.9): a joint solve of all
+  // group-to-world transforms (group_relaxation.hpp). Off (default): the thesis's algorithm, bit
+  // for bit.
   GlobalRelaxation global_relaxation = GlobalRelaxation::Off;
   // Iterations between solves with `periodic`, and the least between two with `on_loop_closure`
   // [C]: a figure eight's loop is ~3800 iterations, so a few solves per loop keep the chain
@@ -327,17 +297,16 @@ struct PointSlamOptions {
   // most; beyond the scale a tie's pull stops growing (at most scale/2), so one wrong match
   // cannot drag the map far.
   double relaxation_loss_scale = 0.3;
-  // A scheduled solve runs only where the groups disagree [C 0: every scheduled solve runs]: some
-  // point has a tie whose weighted gap is over this and had none after the previous solve. The
-  // weighted gap is how far apart the tie's two groups put the point times the tie's weight, so
-  // it is the gap of one observation each whatever the averaging (about sigma * sqrt(3) for a
-  // correct tie); a wrong match the loss holds off triggers only once. Measured on S-40 cut to
-  // five loops: 1 skips 24 of 36 solves, the final map error unchanged (0.064 against 0.063).
+  // A scheduled solve runs only where the groups disagree: some point has a tie whose weighted
+  // gap is over this and had none after the previous solve. The weighted gap is how far apart
+  // the tie's two groups put the point times the tie's weight, so it is the gap of one
+  // observation each whatever the averaging (about sigma * sqrt(3) for a correct tie); a wrong
+  // match the loss holds off triggers only once. Default 0: every scheduled solve runs [C].
   double relaxation_trigger_gap = 0;
 
   // Observations kept per RltPoint (ring buffer) and iterations kept by RltPointCharting;
   // both must cover the final level's look_back + look_ahead, and level 3's visible runs
-  // (2048 then, spec A26) [C].
+  // (2048 then) [C].
   int ring_capacity = 1024;
   int charting_capacity = 512;
 };
