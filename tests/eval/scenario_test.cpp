@@ -231,16 +231,5 @@ TEST(ScenarioKeys, EveryOptionFieldIsDescribed) {
   EXPECT_EQ(test::described_count<OutputOptions>(), test::member_count<OutputOptions>());
 }
 
-TEST(ScenarioKeys, ReadmeTableIsGeneratedFromTheRegistry) {
-  const std::string readme = test::read_file(test::source_path("README.md"));
-  const std::string begin = "<!-- scenario-keys:begin (relslam keys --markdown) -->\n",
-                    end = "<!-- scenario-keys:end -->";
-  const auto a = readme.find(begin), b = readme.find(end);
-  ASSERT_NE(a, std::string::npos) << "README.md lacks the scenario-keys block";
-  ASSERT_NE(b, std::string::npos);
-  EXPECT_EQ(readme.substr(a + begin.size(), b - a - begin.size()), scenario_keys_markdown())
-      << "README.md's key table is stale: replace it with the output of `relslam keys --markdown`";
-}
-
 }  // namespace
 }  // namespace relslam::eval
