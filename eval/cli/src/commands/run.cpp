@@ -4,6 +4,7 @@
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
+#include "relslam/eval/experiments/rawlog_defaults.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 
 #include <cstdio>
@@ -28,14 +29,28 @@ void add_run(CLI::App& app, RunArgs& args) {
   cmd->add_flag("--quiet,-q", args.quiet, "Print nothing but errors");
 }
 
+namespace {
+
+RawlogFiles rawlog_files(const RunArgs& args) {
+  RawlogFiles files{args.rawlog, std::nullopt, std::nullopt};
+  if (!args.truth_path.empty()) files.truth_path = args.truth_path;
+  if (!args.truth_landmarks.empty()) files.truth_landmarks = args.truth_landmarks;
+  return files;
+}
+
+}  // namespace
+
 int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
   if (args.scenario.empty() && args.rawlog.empty())
     throw InputError("", 0, "scenario", "give a scenario file, or --rawlog to run on recorded observations");
   if (args.rawlog.empty() && (!args.truth_path.empty() || !args.truth_landmarks.empty()))
     throw InputError("", 0, "--truth-path", "ground-truth files go with --rawlog");
-  // Without a scenario file, the defaults with both algorithms.
+  // Without a scenario file, the defaults with Relative Point and the EKF that fits the log
+  // (the planar one for a planar rawlog, rawlog_defaults.hpp).
   std::vector<std::string> set = args.set;
-  if (args.scenario.empty()) set.insert(set.begin(), "algorithms=relative_point,ekf6d");
+  if (args.scenario.empty())
+    set.insert(set.begin(), "algorithms=" + (args.rawlog.empty() ? std::string("relative_point,ekf6d")
+                                                                 : default_rawlog_algorithms(rawlog_files(args))));
   const LoadedScenario loaded =
       args.scenario.empty() ? parse_checked("{}", "(defaults)", set) : load_checked(args.scenario, set);
   // Input before output: what can be checked without reading the observations is checked before
@@ -51,10 +66,7 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
     if (args.rawlog.empty()) {
       result = simulate_and_run(loaded, args.out, !args.quiet);
     } else {
-      RawlogFiles files{args.rawlog, std::nullopt, std::nullopt};
-      if (!args.truth_path.empty()) files.truth_path = args.truth_path;
-      if (!args.truth_landmarks.empty()) files.truth_landmarks = args.truth_landmarks;
-      result = run_on_rawlog(loaded, files, args.out, !args.quiet);
+      result = run_on_rawlog(loaded, rawlog_files(args), args.out, !args.quiet);
     }
   } catch (const std::exception& e) {
     record_failure(args.out, loaded.scenario, invocation, e);
