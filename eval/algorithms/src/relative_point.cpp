@@ -3,9 +3,9 @@
 // (mapped or not) as a landmarks.csv row.
 #include "relative_point.hpp"
 
-#include "relslam/point/rlt_mapper.hpp"
 #include "relslam/eval/algorithms/lost_pose.hpp"
 #include "relslam/eval/algorithms/map_frame_gauge.hpp"
+#include "relslam/point/rlt_mapper.hpp"
 #include "relslam/relax/ceres_relaxation.hpp"
 
 namespace relslam::eval {

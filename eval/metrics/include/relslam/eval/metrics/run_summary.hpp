@@ -24,9 +24,9 @@ RuntimeStats runtime_stats(std::vector<double> times_ms);
 // How an algorithm's run ended: summary.csv's status column.
 struct RunStatus {
   enum class Kind {
-    NotRun,   // never stepped
-    Ok,       // processed every frame
-    Failed,   // an exception, a non-finite estimate, or the algorithm gave up
+    NotRun,       // never stepped
+    Ok,           // processed every frame
+    Failed,       // an exception, a non-finite estimate, or the algorithm gave up
     Stopped,      // over its time budget: the rest of the stream was not processed
     Ratio,        // not a run: the row of ratios between two runs
     Interrupted,  // SIGINT or SIGTERM ended the stream early: the row covers the frames before it
