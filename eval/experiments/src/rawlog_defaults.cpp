@@ -23,7 +23,8 @@ void cap_bound(LoadedScenario& adapted, const std::string& key, double& bound, d
 }  // namespace
 
 std::string default_rawlog_algorithms(const RawlogFiles& files) {
-  return RawlogSource(files).shape().planar ? "relative_point,ekf2d" : "relative_point,ekf6d";
+  // The log alone: the truth files are read, and checked, when the run starts.
+  return shape_of(read_rawlog(files.rawlog)).planar ? "relative_point,ekf2d" : "relative_point,ekf6d";
 }
 
 LoadedScenario with_rawlog_shape(const LoadedScenario& loaded, const RawlogSource& source, nlohmann::json& record) {

@@ -14,7 +14,7 @@
 namespace relslam::eval {
 
 // The `algorithms` of a rawlog run without a scenario: "relative_point,ekf2d" for a planar log,
-// "relative_point,ekf6d" otherwise. Reads the log (InputError as the source's).
+// "relative_point,ekf6d" otherwise. Reads the rawlog (InputError as read_rawlog's), not the truth.
 std::string default_rawlog_algorithms(const RawlogFiles& files);
 
 // A planar log's settings for the keys the scenario does not give, each recorded in `record`
