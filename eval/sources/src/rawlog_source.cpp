@@ -55,7 +55,6 @@ RawlogShape shape_of(const Rawlog& log) {
   RawlogShape shape;
   shape.frames = static_cast<int>(log.frames.size());
   for (const RawlogFrame& f : log.frames) shape.frames_with_odometry += f.odometry.has_value();
-  shape.point_spacing = point_spacing(log);
   const double sensor_z = log.frames.front().robot_T_sensor.translation.z();
   for (const RawlogFrame& f : log.frames)
     if (std::string why = off_plane(f, sensor_z); !why.empty()) {
@@ -63,6 +62,7 @@ RawlogShape shape_of(const Rawlog& log) {
       return shape;
     }
   shape.planar = true;
+  shape.point_spacing = point_spacing(log);  // O(points^2) per frame: only what the planar defaults use
   shape.why = "every measurement has pitch 0, the sensor is level at one height" +
               std::string(shape.frames_with_odometry > 0 ? " and the odometry stays in the floor plane" : "");
   return shape;

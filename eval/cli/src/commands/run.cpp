@@ -17,8 +17,11 @@ void add_run(CLI::App& app, RunArgs& args) {
       "Feed every frame of one observation stream to each algorithm the scenario lists (key `algorithms`),\n"
       "scoring them against the truth as they go. The stream is the scenario's simulation, or with --rawlog\n"
       "an MRPT rawlog (any range-bearing landmark data set), optionally scored against ground truth in\n"
-      "MRPT's text formats. Writes one folder per algorithm (iterations.csv, landmarks.csv, trajectory.tum),\n"
-      "summary.csv (with the relative_point/ekf6d ratios when both ran) and manifest.json.");
+      "MRPT's text formats. Without a scenario: relative_point and ekf6d, or for a planar (2D) rawlog\n"
+      "relative_point and ekf2d, Relative Point bridged by the log's odometry as at Victoria Park. Writes one\n"
+      "folder per algorithm (iterations.csv, landmarks.csv, trajectory.tum), summary.csv (with the\n"
+      "relative_point/ekf6d or /ekf2d ratios when both ran; a status 'lost: ...' when an algorithm's pose came\n"
+      "from unmapped points or the like in most iterations) and manifest.json.");
   cmd->add_option("scenario", args.scenario, "Scenario file, e.g. scenarios/s-ekf-f8.json (optional with --rawlog)");
   cmd->add_option("--out,-o", args.out, "Run folder to create (refused if it exists and is not empty)")->required();
   cmd->add_option("--set", args.set, "Override a scenario key, e.g. --set sim.density=50 (repeatable)");

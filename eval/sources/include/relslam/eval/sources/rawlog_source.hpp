@@ -29,8 +29,9 @@ struct RawlogShape {
   std::string why;  // planar: what shows it; otherwise the first record that is not in the plane
   int frames = 0;
   int frames_with_odometry = 0;
-  // The median distance from a point to its nearest neighbour in the same frame (0 when no
-  // frame has two points): how far apart the landmarks are that one must not be taken for another.
+  // Planar logs: the median distance from a point to its nearest neighbour in the same frame
+  // (0 when no frame has two points): how far apart the landmarks are that one must not be
+  // taken for another.
   double point_spacing = 0;
 };
 RawlogShape shape_of(const Rawlog& log);
