@@ -48,12 +48,10 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
     throw InputError("", 0, "scenario", "give a scenario file, or --rawlog to run on recorded observations");
   if (args.rawlog.empty() && (!args.truth_path.empty() || !args.truth_landmarks.empty()))
     throw InputError("", 0, "--truth-path", "ground-truth files go with --rawlog");
-  // Without a scenario file, the defaults with Relative Point and the EKF that fits the log
-  // (the planar one for a planar rawlog, rawlog_defaults.hpp).
+  // Without a scenario file (so with --rawlog), the defaults with Relative Point and the EKF
+  // that fits the log: the planar one for a planar log (rawlog_defaults.hpp).
   std::vector<std::string> set = args.set;
-  if (args.scenario.empty())
-    set.insert(set.begin(), "algorithms=" + (args.rawlog.empty() ? std::string("relative_point,ekf6d")
-                                                                 : default_rawlog_algorithms(rawlog_files(args))));
+  if (args.scenario.empty()) set.insert(set.begin(), "algorithms=" + default_rawlog_algorithms(rawlog_files(args)));
   const LoadedScenario loaded =
       args.scenario.empty() ? parse_checked("{}", "(defaults)", set) : load_checked(args.scenario, set);
   // Input before output: what can be checked without reading the observations is checked before
