@@ -3,8 +3,9 @@
 // (mapped or not) as a landmarks.csv row.
 #include "relative_point.hpp"
 
-#include "relslam/point/rlt_mapper.hpp"
+#include "relslam/eval/algorithms/lost_pose.hpp"
 #include "relslam/eval/algorithms/map_frame_gauge.hpp"
+#include "relslam/point/rlt_mapper.hpp"
 #include "relslam/relax/ceres_relaxation.hpp"
 
 namespace relslam::eval {
@@ -35,6 +36,23 @@ const char* pose_source(point::PoseSource s) {
     case point::PoseSource::TwoUnmappedPoints: return "two_unmapped";
     case point::PoseSource::OneUnmappedPoint: return "one_unmapped";
     case point::PoseSource::Held: return "held";
+    case point::PoseSource::Odometry: return "odometry";
+  }
+  return "?";
+}
+
+// Where a pose not registered to the map came from, for the lost status (lost_pose.hpp); "" for
+// the map frame and registrations to mapped points (two with the latest rotation included).
+std::string unregistered_origin(point::PoseSource s) {
+  switch (s) {
+    case point::PoseSource::Start:
+    case point::PoseSource::MappedPoints:
+    case point::PoseSource::TwoPoints: return "";
+    case point::PoseSource::UnmappedPoints: return "unmapped points";
+    case point::PoseSource::TwoUnmappedPoints: return "two unmapped points";
+    case point::PoseSource::OneUnmappedPoint: return "one unmapped point";
+    case point::PoseSource::OnePoint: return "one mapped point";
+    case point::PoseSource::Held: return "the held pose";
     case point::PoseSource::Odometry: return "odometry";
   }
   return "?";
@@ -115,6 +133,7 @@ class RelativePoint final : public Algorithm {
   void step(const ObservationFrame& observation, const TruthFrame& truth) override {
     last_ = mapper_.step(observation);
     gauge_.observe(observation.iteration, mapper_.first_iteration(), truth);
+    lost_.add(unregistered_origin(last_.pose_source));
   }
   std::size_t steps_before_map_frame() const override { return gauge_.steps_before(); }
 
@@ -133,6 +152,7 @@ class RelativePoint final : public Algorithm {
     return ids;
   }
   std::string failure() const override { return mapper_.failure(); }
+  std::string lost() const override { return lost_.reason(); }
 
   std::vector<std::string> iteration_columns() const override { return column_names(kIterationColumns); }
   void iteration_fields(std::vector<CsvField>& out) const override {
@@ -156,6 +176,7 @@ class RelativePoint final : public Algorithm {
   RltMapper mapper_;
   point::StepResult last_;
   MapFrameGauge gauge_;
+  LostPoseCount lost_;
 };
 
 }  // namespace

@@ -147,6 +147,9 @@ SummaryRow AlgorithmRecorder::summary_over(int iterations) const {
   row.status = status_;
   // An algorithm that gave up without throwing goes on stepping; its run is still a failure.
   if (running() && !algorithm_->failure().empty()) row.status = RunStatus::failed(-1, algorithm_->failure());
+  // One whose pose was not its own for most of the run has not mapped it (lost_pose.hpp).
+  else if (running() && !algorithm_->lost().empty())
+    row.status = RunStatus::lost(algorithm_->lost());
   scorer_.fill(row, static_cast<std::size_t>(iterations), algorithm_->steps_before_map_frame());
   row.input_digest = digest_.hex();
   return row;

@@ -6,6 +6,7 @@
 #include "relslam/eval/config/point_bounds.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
+#include "relslam/eval/experiments/rawlog_defaults.hpp"
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/sources/simulation_source.hpp"
@@ -136,7 +137,9 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
                                bool progress) {
   require_algorithms(loaded);
   RawlogSource source(files);
-  const LoadedScenario adapted = with_rawlog_noise(loaded, source.sensor(), files);
+  nlohmann::json planar_defaults = nlohmann::json::object();
+  const LoadedScenario adapted =
+      with_rawlog_shape(with_rawlog_noise(loaded, source.sensor(), files), source, planar_defaults);
   const Scenario& scenario = adapted.scenario;
   if (std::find(scenario.algorithms.begin(), scenario.algorithms.end(), "ekf6d") != scenario.algorithms.end() &&
       scenario.ekf6d.association == EkfAssociation::Known && !source.ids_everywhere())
@@ -145,6 +148,7 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
   Experiment experiment(adapted, source, out);
   ExperimentResult result = experiment.run(progress);
   if (!adapted.scenario.derived.empty()) result.source["derived"] = derived_json(adapted.scenario);
+  if (!planar_defaults.empty()) result.source["planar_defaults"] = planar_defaults;
   return result;
 }
 

@@ -17,13 +17,14 @@ std::string_view to_string(RunStatus::Kind kind) {
     case RunStatus::Kind::Stopped: return "stopped";
     case RunStatus::Kind::Ratio: return "ratio";
     case RunStatus::Kind::Interrupted: return "interrupted";
+    case RunStatus::Kind::Lost: return "lost";
   }
   return "?";
 }
 
 std::string RunStatus::text() const {
   std::string out(to_string(kind));
-  if (kind != Kind::Failed && kind != Kind::Stopped && kind != Kind::Interrupted) return out;
+  if (kind != Kind::Failed && kind != Kind::Stopped && kind != Kind::Interrupted && kind != Kind::Lost) return out;
   if (iteration >= 0) out += " at iteration " + std::to_string(iteration);
   return kind == Kind::Interrupted && reason.empty() ? out : out + ": " + reason;
 }

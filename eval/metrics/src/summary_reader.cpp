@@ -13,7 +13,8 @@ namespace relslam::eval {
 RunStatus parse_run_status(std::string_view text) {
   for (RunStatus::Kind kind : {RunStatus::Kind::NotRun, RunStatus::Kind::Ok, RunStatus::Kind::Ratio})
     if (text == to_string(kind)) return {kind, -1, ""};
-  for (RunStatus::Kind kind : {RunStatus::Kind::Failed, RunStatus::Kind::Stopped, RunStatus::Kind::Interrupted}) {
+  for (RunStatus::Kind kind :
+       {RunStatus::Kind::Failed, RunStatus::Kind::Stopped, RunStatus::Kind::Interrupted, RunStatus::Kind::Lost}) {
     const std::string_view name = to_string(kind);
     if (text.substr(0, name.size()) != name) continue;
     std::string_view rest = text.substr(name.size());

@@ -4,9 +4,73 @@
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/io/mrpt_ground_truth.hpp"
 
-namespace relslam::eval {
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
-RawlogSource::RawlogSource(const RawlogFiles& files) : files_(files), log_(read_rawlog(files.rawlog)) {
+namespace relslam::eval {
+namespace {
+
+// MRPT stores pitch and poses as floats and doubles: a planar log's zeros are exact, and
+// anything a 3D sensor records is degrees, not micro-radians, away from them [C].
+constexpr double kPlaneTolerance = 1e-6;
+
+// Level: the pose keeps MRPT's z axis (no roll or pitch).
+bool level(const Rigid3& pose) { return pose.rotation(2, 2) >= 1.0 - kPlaneTolerance; }
+
+// "" when the frame lies in the plane of height `sensor_z`, else what leaves it.
+std::string off_plane(const RawlogFrame& f, double sensor_z) {
+  const std::string at = "frame " + std::to_string(f.index) + ": ";
+  if (!level(f.robot_T_sensor) || std::abs(f.robot_T_sensor.translation.z() - sensor_z) > kPlaneTolerance)
+    return at + "the sensor is tilted or changes height on the robot";
+  for (std::size_t i = 0; i < f.measurements.size(); ++i)
+    if (std::abs(f.measurements[i].pitch_rad) > kPlaneTolerance)
+      return at + "measurement " + std::to_string(i) + " has pitch " + std::to_string(f.measurements[i].pitch_rad) +
+             " rad";
+  if (f.odometry && (!level(*f.odometry) || std::abs(f.odometry->translation.z()) > kPlaneTolerance))
+    return at + "the odometry leaves the floor plane (3D motion)";
+  return "";
+}
+
+// The median nearest-neighbour distance within frames.
+double point_spacing(const Rawlog& log) {
+  std::vector<double> nearest;
+  for (const RawlogFrame& f : log.frames) {
+    const ObservationFrame o = observation_frame(f);
+    for (std::size_t i = 0; i < o.points.size(); ++i) {
+      double d = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < o.points.size(); ++j)
+        if (j != i) d = std::min(d, (o.points[i] - o.points[j]).norm());
+      if (std::isfinite(d)) nearest.push_back(d);
+    }
+  }
+  if (nearest.empty()) return 0;
+  const auto middle = nearest.begin() + static_cast<std::ptrdiff_t>(nearest.size() / 2);
+  std::nth_element(nearest.begin(), middle, nearest.end());
+  return *middle;
+}
+
+}  // namespace
+
+RawlogShape shape_of(const Rawlog& log) {
+  RawlogShape shape;
+  shape.frames = static_cast<int>(log.frames.size());
+  for (const RawlogFrame& f : log.frames) shape.frames_with_odometry += f.odometry.has_value();
+  const double sensor_z = log.frames.front().robot_T_sensor.translation.z();
+  for (const RawlogFrame& f : log.frames)
+    if (std::string why = off_plane(f, sensor_z); !why.empty()) {
+      shape.why = "not planar: " + why;
+      return shape;
+    }
+  shape.planar = true;
+  shape.point_spacing = point_spacing(log);  // O(points^2) per frame: only what the planar defaults use
+  shape.why = "every measurement has pitch 0, the sensor is level at one height" +
+              std::string(shape.frames_with_odometry > 0 ? " and the odometry stays in the floor plane" : "");
+  return shape;
+}
+
+RawlogSource::RawlogSource(const RawlogFiles& files)
+    : files_(files), log_(read_rawlog(files.rawlog)), shape_(shape_of(log_)) {
   // Truth in our frame: the world is the robot frame at the first frame (its axes ours).
   if (files_.truth_path) {
     path_ = read_mrpt_path(*files_.truth_path);
@@ -74,6 +138,8 @@ nlohmann::json RawlogSource::describe() const {
            {{"file", files_.rawlog.string()},
             {"frames", log_.frames.size()},
             {"sensory_frame_first", log_.sensory_frame_first},
+            {"planar", shape_.planar},
+            {"shape", shape_.why},
             {"truth_path", files_.truth_path ? files_.truth_path->string() : ""},
             {"truth_landmarks", files_.truth_landmarks ? files_.truth_landmarks->string() : ""}}}};
 }

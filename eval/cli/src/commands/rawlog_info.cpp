@@ -2,6 +2,7 @@
 
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/io/rawlog.hpp"
+#include "relslam/eval/sources/rawlog_source.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -40,6 +41,9 @@ int run_rawlog(const RawlogArgs& args) {
   std::printf("  landmark ids: %s\n", known == points ? "all known" : known == 0 ? "all unknown (-1)" : "mixed");
   std::printf("  odometry: %zu of %zu frames\n", odometry, log.frames.size());
   std::printf("  time: %.3f .. %.3f s\n", log.frames.front().timestamp_s, log.frames.back().timestamp_s);
+  // What relslam run makes of it: a planar log runs relative_point + ekf2d (rawlog_defaults.hpp).
+  const RawlogShape shape = shape_of(log);
+  std::printf("  %s: %s\n", shape.planar ? "planar (2D)" : "3D", shape.why.c_str());
 
   if (!args.csv.empty()) {
     CsvWriter csv(args.csv, {"frame", "x", "y", "z", "landmark_id"});

@@ -5,6 +5,7 @@
 #include "relslam/eval/experiments/experiment.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
+#include "relslam/eval/experiments/rawlog_defaults.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/sources/plane_file_source.hpp"
 
@@ -18,8 +19,11 @@ void add_run(CLI::App& app, RunArgs& args) {
       "Feed every frame of one observation stream to each algorithm the scenario lists (key `algorithms`),\n"
       "scoring them against the truth as they go. The stream is the scenario's simulation, or with --rawlog\n"
       "an MRPT rawlog (any range-bearing landmark data set), optionally scored against ground truth in\n"
-      "MRPT's text formats. Writes one folder per algorithm (iterations.csv, landmarks.csv, trajectory.tum),\n"
-      "summary.csv (with the relative_point/ekf6d ratios when both ran) and manifest.json.");
+      "MRPT's text formats. Without a scenario: relative_point and ekf6d, or for a planar (2D) rawlog\n"
+      "relative_point and ekf2d, Relative Point bridged by the log's odometry as at Victoria Park. Writes one\n"
+      "folder per algorithm (iterations.csv, landmarks.csv, trajectory.tum), summary.csv (with the\n"
+      "relative_point/ekf6d or /ekf2d ratios when both ran; a status 'lost: ...' when an algorithm's pose came\n"
+      "from unmapped points or the like in most iterations) and manifest.json.");
   cmd->add_option("scenario", args.scenario, "Scenario file, e.g. scenarios/s-ekf-f8.json (optional with --rawlog)");
   cmd->add_option("--out,-o", args.out, "Run folder to create (refused if it exists and is not empty)")->required();
   cmd->add_option("--set", args.set, "Override a scenario key, e.g. --set sim.density=50 (repeatable)");
@@ -65,15 +69,23 @@ ExperimentResult run_on_planes(const LoadedScenario& loaded, const RunArgs& args
   return experiment.run(!args.quiet);
 }
 
+RawlogFiles rawlog_files(const RunArgs& args) {
+  RawlogFiles files{args.rawlog, std::nullopt, std::nullopt};
+  if (!args.truth_path.empty()) files.truth_path = args.truth_path;
+  if (!args.truth_landmarks.empty()) files.truth_landmarks = args.truth_landmarks;
+  return files;
+}
+
 }  // namespace
 
 int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
   check_inputs(args);
-  // Without a scenario file, the defaults with both algorithms (planes: the planar defaults).
+  // Without a scenario file, the defaults: Relative Point and the EKF that fits a rawlog (the
+  // planar one for a planar log, rawlog_defaults.hpp); the planar defaults for plane files.
   std::vector<std::string> set = args.set;
   if (args.scenario.empty()) {
     const std::vector<std::string> defaults =
-        args.planes.empty() ? std::vector<std::string>{"algorithms=relative_point,ekf6d"}
+        args.planes.empty() ? std::vector<std::string>{"algorithms=" + default_rawlog_algorithms(rawlog_files(args))}
                             : std::vector<std::string>{"kind=planar", "algorithms=relative_plane"};
     set.insert(set.begin(), defaults.begin(), defaults.end());
   }
@@ -94,10 +106,7 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
     } else if (args.rawlog.empty()) {
       result = simulate_and_run(loaded, args.out, !args.quiet);
     } else {
-      RawlogFiles files{args.rawlog, std::nullopt, std::nullopt};
-      if (!args.truth_path.empty()) files.truth_path = args.truth_path;
-      if (!args.truth_landmarks.empty()) files.truth_landmarks = args.truth_landmarks;
-      result = run_on_rawlog(loaded, files, args.out, !args.quiet);
+      result = run_on_rawlog(loaded, rawlog_files(args), args.out, !args.quiet);
     }
   } catch (const std::exception& e) {
     record_failure(args.out, loaded.scenario, invocation, e);

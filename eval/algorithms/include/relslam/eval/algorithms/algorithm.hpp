@@ -57,6 +57,9 @@ class Algorithm {
   virtual std::size_t steps_before_map_frame() const { return 0; }
   // Why the algorithm gave up without throwing ("" while it has not).
   virtual std::string failure() const { return ""; }
+  // Why its pose was not its own registration for most of the run so far ("" when it was,
+  // lost_pose.hpp): a run that ends so is "lost", not "ok".
+  virtual std::string lost() const { return ""; }
   virtual std::optional<TimeBudget> time_budget() const { return std::nullopt; }
 
   // Its own columns of iterations.csv (after the shared score columns) and this step's fields.

@@ -24,12 +24,13 @@ RuntimeStats runtime_stats(std::vector<double> times_ms);
 // How an algorithm's run ended: summary.csv's status column.
 struct RunStatus {
   enum class Kind {
-    NotRun,   // never stepped
-    Ok,       // processed every frame
-    Failed,   // an exception, a non-finite estimate, or the algorithm gave up
+    NotRun,       // never stepped
+    Ok,           // processed every frame
+    Failed,       // an exception, a non-finite estimate, or the algorithm gave up
     Stopped,      // over its time budget: the rest of the stream was not processed
     Ratio,        // not a run: the row of ratios between two runs
     Interrupted,  // SIGINT or SIGTERM ended the stream early: the row covers the frames before it
+    Lost,         // processed every frame, but its pose was not its own registration for most of them
   };
   Kind kind = Kind::NotRun;
   int iteration = -1;  // where it failed or stopped; -1 when no single iteration is to blame
@@ -40,12 +41,14 @@ struct RunStatus {
   static RunStatus stopped(int iteration, std::string reason) { return {Kind::Stopped, iteration, std::move(reason)}; }
   // `iteration` is the first frame the run did not process.
   static RunStatus interrupted(int iteration) { return {Kind::Interrupted, iteration, ""}; }
+  static RunStatus lost(std::string reason) { return {Kind::Lost, -1, std::move(reason)}; }
   bool is_ok() const { return kind == Kind::Ok; }
   // "ok", "failed at iteration 30: why", "failed: why", "stopped at iteration 4: why",
-  // "interrupted at iteration 2240", "ratio", "not run".
+  // "interrupted at iteration 2240", "lost: pose from unmapped points in 213 of 250 iterations",
+  // "ratio", "not run".
   std::string text() const;
 };
-// The kind alone: "ok", "failed", "stopped", "interrupted", "ratio", "not run".
+// The kind alone: "ok", "failed", "stopped", "interrupted", "lost", "ratio", "not run".
 std::string_view to_string(RunStatus::Kind kind);
 
 // The scores of a planar run (spec relative_plane_em.md §7.2) that the point columns lack.

@@ -20,6 +20,24 @@ struct RawlogFiles {
   std::optional<std::filesystem::path> truth_landmarks;  // needs truth_path
 };
 
+// What kind of log it is, decided once where the log is read (issue 35). A planar log keeps
+// every observation in one plane, as MRPT's 2D range-bearing data (kf-slam_demo.rawlog, 2D
+// odometry CActionRobotMovement2D) and Victoria Park's laser do: every pitch 0, the sensor
+// level on the robot at one height, the odometry (if any) in the floor plane. Such a log runs
+// through the planar machinery Victoria Park uses (MRPT's planar EKF, Relative Point on the
+// points of the scan plane bridged by dead reckoning; experiments/rawlog_defaults.hpp).
+struct RawlogShape {
+  bool planar = false;
+  std::string why;  // planar: what shows it; otherwise the first record that is not in the plane
+  int frames = 0;
+  int frames_with_odometry = 0;
+  // Planar logs: the median distance from a point to its nearest neighbour in the same frame
+  // (0 when no frame has two points): how far apart the landmarks are that one must not be
+  // taken for another.
+  double point_spacing = 0;
+};
+RawlogShape shape_of(const Rawlog& log);
+
 class RawlogSource final : public FrameSource {
  public:
   // Reads every file; InputError naming the file (or flag) and the problem.
@@ -34,6 +52,8 @@ class RawlogSource final : public FrameSource {
 
   // Whether every measurement carries a landmark id (known association is possible).
   bool ids_everywhere() const;
+  // Planar or not, and what the planar defaults are derived from.
+  const RawlogShape& shape() const { return shape_; }
 
   // Writes the truth given into `dir` as a simulated run has it, for any tool to compare with:
   // ground_truth_landmarks.csv now (id = the truth row the landmark scores use, log_id = the
@@ -44,6 +64,7 @@ class RawlogSource final : public FrameSource {
  private:
   RawlogFiles files_;
   Rawlog log_;
+  RawlogShape shape_;
   std::vector<Rigid3> path_;  // MRPT's truth rows, MRPT axes
   Rigid3 first_inverse_;
   LandmarkTruth truth_;
