@@ -154,11 +154,9 @@ void interrupt_resume_and_compare(int signal, const Ready& ready) {
 }
 
 TEST(SweepIntegrity, SigintWhileTheFirstRunRunsCountsNothingAndResumeGivesTheUninterruptedTables) {
-  interrupt_resume_and_compare(SIGINT, [](const fs::path& sweep) {
-    const fs::path first = cells(sweep).front();
-    return manifest_status(first) == "running" && fs::exists(first / "relative_point/iterations.csv") &&
-           fs::file_size(first / "relative_point/iterations.csv") > 20000;
-  });
+  // As soon as the first run's manifest says running: the run is under way, no run has finished.
+  interrupt_resume_and_compare(SIGINT,
+                               [](const fs::path& sweep) { return manifest_status(cells(sweep).front()) == "running"; });
 }
 
 TEST(SweepIntegrity, SigtermAfterOneRunFinishedKeepsItAndResumeRunsOnlyTheRest) {

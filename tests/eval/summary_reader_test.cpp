@@ -36,7 +36,8 @@ SummaryRow row(const std::string& algorithm, double scale) {
 TEST(SummaryReader, StatusTextsRoundTrip) {
   for (const RunStatus& s :
        {RunStatus::ok(), RunStatus::failed(30, "non-finite estimate, at last"), RunStatus::failed(-1, "threw: a: b"),
-        RunStatus::stopped(4, "over budget"), RunStatus{RunStatus::Kind::Ratio, -1, ""}, RunStatus{}})
+        RunStatus::stopped(4, "over budget"), RunStatus::interrupted(2240), RunStatus{RunStatus::Kind::Ratio, -1, ""},
+        RunStatus{}})
     EXPECT_EQ(parse_run_status(s.text()).text(), s.text());
   EXPECT_THROW(parse_run_status("fine"), std::invalid_argument);
 }
@@ -87,6 +88,26 @@ TEST(SummaryReader, ABadFieldNamesFileLineAndColumn) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.line(), 2);
     EXPECT_EQ(e.field(), "iterations");
+  }
+}
+
+// write_summary writes an unknown value as an empty field and no run's error comes near 1e150:
+// "inf", "nan" or 1e308 in a summary.csv is damage, refused at its field (sweep tables stay finite).
+TEST(SummaryReader, NonFiniteOrAbsurdNumbersAreRefusedAtTheirField) {
+  for (const char* damage : {"inf", "nan", "-infinity", "1e308"}) {
+    test::ScratchDir dir;
+    write_summary(dir / "a.csv", {row("relative_point", 1)});
+    std::string text = test::read_file(dir / "a.csv");
+    const std::string ate = ",2.5,";  // ate_rmse_aligned
+    text.replace(text.find(ate), ate.size(), std::string(",") + damage + ",");
+    test::write_file(dir / "a.csv", text);
+    try {
+      read_summary(dir / "a.csv");
+      ADD_FAILURE() << damage << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), 2) << damage;
+      EXPECT_EQ(e.field(), "ate_rmse_aligned") << damage;
+    }
   }
 }
 

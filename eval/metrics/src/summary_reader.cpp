@@ -49,6 +49,8 @@ class SummaryFields {
     double v = 0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
     if (ec != std::errc() || end != t.data() + t.size()) fail(name, "expected a number, got \"" + t + "\"");
+    // write_summary writes a non-finite value as an empty field, never as text.
+    if (!std::isfinite(v)) fail(name, "expected a finite number (an unknown one is an empty field), got \"" + t + "\"");
     if (std::abs(v) > kLargestSummaryValue)
       fail(name, t + " is beyond any value a run writes (at most 1e150 in magnitude): the file is damaged");
     return v;
