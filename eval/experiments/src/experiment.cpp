@@ -4,6 +4,7 @@
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/point_bounds.hpp"
+#include "relslam/eval/experiments/ekf_log_settings.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/io/progress.hpp"
@@ -136,7 +137,13 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
                                bool progress) {
   require_algorithms(loaded);
   RawlogSource source(files);
-  const LoadedScenario adapted = with_rawlog_noise(loaded, source.sensor(), files);
+  LoadedScenario adapted = with_rawlog_noise(loaded, source.sensor(), files);
+  // The EKFs' noise from the log unless the scenario sets it, and where each value came from.
+  const std::vector<SettingSource> ekf_settings = apply_log_ekf_settings(adapted.scenario, loaded, source.log());
+  if (progress && !ekf_settings.empty()) {
+    std::printf("EKF settings (source: log, scenario, tuned or default):\n");
+    print_settings(ekf_settings);
+  }
   const Scenario& scenario = adapted.scenario;
   if (std::find(scenario.algorithms.begin(), scenario.algorithms.end(), "ekf6d") != scenario.algorithms.end() &&
       scenario.ekf6d.association == EkfAssociation::Known && !source.ids_everywhere())
@@ -144,6 +151,7 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
   Experiment experiment(adapted, source, out);
   ExperimentResult result = experiment.run(progress);
   if (!adapted.scenario.derived.empty()) result.source["derived"] = derived_json(adapted.scenario);
+  if (!ekf_settings.empty()) result.source["noise_sources"] = settings_json(ekf_settings);
   return result;
 }
 

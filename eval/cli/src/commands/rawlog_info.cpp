@@ -3,6 +3,8 @@
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/io/rawlog.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cstdio>
 
@@ -17,6 +19,23 @@ void add_rawlog(CLI::App& app, RawlogArgs& args) {
   cmd->add_option("rawlog", args.file, "Rawlog file")->required();
   cmd->add_option("--csv", args.csv, "Write frame,x,y,z,landmark_id rows to this CSV file");
 }
+
+namespace {
+
+// The sensor as the first observation describes it: its noise is what the EKFs take from the
+// log, its pose on the robot what turns every measurement into robot coordinates.
+void print_sensor(const Rawlog& log) {
+  const RangeBearingSensor& s = log.sensor;
+  constexpr double kDeg = 180.0 / 3.14159265358979323846;
+  std::printf("  sensor noise: std range %g m, yaw %g deg, pitch %g deg%s\n", s.std_range, s.std_yaw_rad * kDeg,
+              s.std_pitch_rad * kDeg, s.std_range > 0 ? "" : " (none given)");
+  const Rigid3& pose = log.frames.front().robot_T_sensor;
+  const Eigen::Vector3d& t = pose.translation;
+  const double angle = Eigen::AngleAxisd(pose.rotation).angle() * kDeg;
+  std::printf("  sensor on robot (MRPT axes): x %g y %g z %g m, rotated %g deg\n", t.x(), t.y(), t.z(), angle);
+}
+
+}  // namespace
 
 int run_rawlog(const RawlogArgs& args) {
   const Rawlog log = read_rawlog(args.file);
@@ -40,6 +59,7 @@ int run_rawlog(const RawlogArgs& args) {
   std::printf("  landmark ids: %s\n", known == points ? "all known" : known == 0 ? "all unknown (-1)" : "mixed");
   std::printf("  odometry: %zu of %zu frames\n", odometry, log.frames.size());
   std::printf("  time: %.3f .. %.3f s\n", log.frames.front().timestamp_s, log.frames.back().timestamp_s);
+  print_sensor(log);
 
   if (!args.csv.empty()) {
     CsvWriter csv(args.csv, {"frame", "x", "y", "z", "landmark_id"});
