@@ -150,8 +150,16 @@ nlohmann::json settings_json(const std::vector<SettingSource>& settings) {
 }
 
 void print_settings(const std::vector<SettingSource>& settings) {
-  for (const SettingSource& s : settings)
+  bool defaults = false;
+  for (const SettingSource& s : settings) {
     std::printf("  %-28s = %s (%s: %s)\n", s.key.c_str(), s.value.dump().c_str(), s.source.c_str(), s.detail.c_str());
+    defaults = defaults || (s.source == "default" && !s.value.is_boolean());
+  }
+  // The defaults are the simulated figure eight's tuning (ekf6d_options.hpp), not this log's.
+  if (defaults)
+    std::printf(
+        "warning: a default EKF noise above was tuned for relslam's simulated figure eight, not for this "
+        "log; set it, or fit it with relslam tune-ekf --rawlog\n");
 }
 
 }  // namespace relslam::eval
