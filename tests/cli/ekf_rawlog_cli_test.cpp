@@ -118,6 +118,23 @@ TEST(EkfOnMrptDemoLog, ANonCentredSensorMapsAsWellAsTheCentredOne) {
   }
 }
 
+// The planar EKF on MRPT's 2D demo log: odometry as the key says (off Victoria Park), the sensor
+// noise from the log.
+TEST(EkfOnMrptDemoLog, ThePlanarEkfTakesOdometryWhenTheKeySaysSo) {
+  if (!fs::exists(kDatasets)) GTEST_SKIP() << kNoDatasets;
+  test::ScratchDir dir;
+  // A later --set wins: ekf2d instead of demo_run's ekf6d.
+  const auto r = run_relslam(demo_run("kf-slam_demo", dir / "run", {"algorithms=ekf2d", "ekf2d.use_odometry=true"}));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const test::CsvTable summary = read_csv(dir / "run/summary.csv");
+  EXPECT_EQ(summary.text(0, "algorithm"), "ekf2d");
+  EXPECT_LT(summary.number(0, "final_mean_landmark_error"), 0.02);
+  const nlohmann::json sources = manifest(dir / "run")["noise_sources"];
+  EXPECT_EQ(sources["ekf2d.use_odometry"]["value"], true);
+  EXPECT_EQ(sources["ekf2d.std_range"]["source"], "log");
+  EXPECT_DOUBLE_EQ(sources["ekf2d.std_range"]["value"].get<double>(), 0.01);
+}
+
 // ---- logs written by MRPT's simul-landmarks: centred, offset and pitched sensor ----
 
 bool have_simul_landmarks() { return std::system("command -v simul-landmarks >/dev/null 2>&1") == 0; }
