@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numbers>
 
 namespace relslam::eval {
 
@@ -26,7 +27,7 @@ namespace {
 // log, its pose on the robot what turns every measurement into robot coordinates.
 void print_sensor(const Rawlog& log) {
   const RangeBearingSensor& s = log.sensor;
-  constexpr double kDeg = 180.0 / 3.14159265358979323846;
+  constexpr double kDeg = 180.0 / std::numbers::pi;
   std::printf("  sensor noise: std range %g m, yaw %g deg, pitch %g deg%s\n", s.std_range, s.std_yaw_rad * kDeg,
               s.std_pitch_rad * kDeg, s.std_range > 0 ? "" : " (none given)");
   const Rigid3& pose = log.frames.front().robot_T_sensor;
