@@ -103,6 +103,26 @@ TEST(EkfOnMrptDemoLog, AValueTheScenarioSetsWinsOverTheLog) {
   EXPECT_NE(loud.out.find("ekf6d.std_yaw_deg            = 0.1 (log: "), std::string::npos) << loud.out;
 }
 
+// A log that states only part of the noise (relslam's own rawlog: the range std. deviation, no
+// angles, no odometry): the rest keeps the default, and the console warns.
+TEST(EkfOnALog, WhatTheLogDoesNotStateKeepsTheDefaultWithAWarning) {
+  test::ScratchDir dir;
+  const auto sim =
+      run_relslam({"simulate", test::source_path("scenarios/s-ekf-f8.json").string(), "--out", (dir / "sim").string(),
+                   "-q", "--set", "sim.iterations=60", "--set", "output.observations_csv=false"});
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto r = run_relslam({"run", "--rawlog", (dir / "sim/observations.rawlog").string(), "--out",
+                              (dir / "run").string(), "--set", "algorithms=ekf6d"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json sources = manifest(dir / "run")["noise_sources"];
+  EXPECT_EQ(sources["ekf6d.std_range"]["source"], "log");
+  EXPECT_DOUBLE_EQ(sources["ekf6d.std_range"]["value"].get<double>(), 0.1);  // s-ekf-f8's sim.noise_sigma
+  EXPECT_EQ(sources["ekf6d.std_yaw_deg"]["source"], "default");
+  EXPECT_DOUBLE_EQ(sources["ekf6d.std_yaw_deg"]["value"].get<double>(), 0.5);
+  EXPECT_EQ(sources["ekf6d.stds_q"]["source"], "default");
+  EXPECT_NE(r.out.find("warning: a default EKF noise"), std::string::npos) << r.out;
+}
+
 // MRPT's demo with the sensor 0.5 m off the robot's origin and turned (yaw 80°, pitch -20°,
 // roll 10°). kf-slam itself ends 5 m off on it (its 6D observation Jacobian); relslam moves the
 // points into the robot frame for both algorithms.
