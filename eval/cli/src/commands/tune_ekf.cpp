@@ -113,13 +113,20 @@ void print_ranking(const std::vector<Trial>& trials) {
 void print_rawlog_tuning(const nlohmann::json& tuning, const std::vector<Trial>& trials, const std::string& out) {
   print_ranking(trials);
   const auto error = [](const nlohmann::json& run) {
-    return run.contains("final_mean_landmark_error") ? run["final_mean_landmark_error"].dump() : run["status"].dump();
+    if (!run.contains("final_mean_landmark_error")) return run["status"].dump();
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", run["final_mean_landmark_error"].get<double>());
+    return std::string(text);
   };
   const nlohmann::json& split = tuning["split"];
+  // [first, end) as the first and last frame.
+  const auto frames = [](const nlohmann::json& range) {
+    return std::to_string(range[0].get<int>()) + ".." + std::to_string(range[1].get<int>() - 1);
+  };
   std::printf("best: \"ekf6d\": %s (tuned on frames %s)\n", tuning["best"]["ekf6d"].dump().c_str(),
-              split["tuning_frames"].dump().c_str());
+              frames(split["tuning_frames"]).c_str());
   std::printf("held out, frames %s: final mean landmark error %s tuned, %s untuned (log/default settings)\n",
-              split["held_out_frames"].dump().c_str(), error(tuning["held_out"]["tuned"]).c_str(),
+              frames(split["held_out_frames"]).c_str(), error(tuning["held_out"]["tuned"]).c_str(),
               error(tuning["held_out"]["untuned"]).c_str());
   std::printf("wrote %s (tune.csv, best.json, trials/, held_out/, held_out_untuned/)\n", out.c_str());
 }
