@@ -50,7 +50,8 @@ struct Ekf6dOptions {
   std::vector<double> stds_q = {0.175, 0.175, 0.175, 0.0025, 0.0025, 0.0025, 0.0025};
   // Feed each frame's odometry to the filter as MRPT's kf-slam does: the action's pose increment
   // with a Gaussian of these standard deviations (x, y, z; yaw, pitch, roll). Off by default: the
-  // thesis compares the algorithms without odometry (6.7) [T].
+  // thesis compares the algorithms without odometry (6.7) [T]. Frames without odometry (the
+  // first, relslam's simulation) keep the constant-position model and stds_q.
   bool use_odometry = false;
   double odometry_std_xyz = 0.05;                                  // m per step
   double odometry_std_angle_rad = 0.5 * std::numbers::pi / 180.0;  // read and written in degrees
@@ -71,7 +72,8 @@ void describe(OptionsOf<Ekf6dOptions> auto& o, auto& f) {
   f.degrees("std_pitch_deg", o.std_pitch_rad, "sensor model pitch std. deviation", at_least(kMinSensorStd));
   f.field("stds_q", o.stds_q, "motion noise without odometry: x, y, z, qr, qx, qy, qz",
           length(7, "x, y, z, qr, qx, qy, qz"), above(0.0));
-  f.field("use_odometry", o.use_odometry, "feed the frames' odometry to the filter (kf-slam's way; thesis: off)");
+  f.field("use_odometry", o.use_odometry,
+          "feed the frames' odometry to the filter as kf-slam does (thesis: off); frames without any keep stds_q");
   f.field("odometry_std_xyz", o.odometry_std_xyz, "with use_odometry: std. deviation of each step's x, y, z, m",
           above(0.0));
   f.degrees("odometry_std_angle_deg", o.odometry_std_angle_rad,
