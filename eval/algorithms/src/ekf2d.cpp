@@ -21,8 +21,8 @@ using mrpt::slam::CRangeBearingKFSLAM2D;
 
 class Ekf2d final : public MrptFilter {
  public:
-  Ekf2d(const Ekf2dOptions& options, bool use_odometry, const RangeBearingSensor& sensor)
-      : MrptFilter(use_odometry ? "ekf2d" : "ekf2d_no_odometry", {options.time_budget_ms, options.budget_iterations}),
+  Ekf2d(const Ekf2dOptions& options, const std::string& name, bool use_odometry, const RangeBearingSensor& sensor)
+      : MrptFilter(name, {options.time_budget_ms, options.budget_iterations}),
         options_(options),
         use_odometry_(use_odometry),
         association_(use_odometry ? options.association : options.association_no_odometry),
@@ -94,9 +94,9 @@ class Ekf2d final : public MrptFilter {
 
 }  // namespace
 
-std::unique_ptr<Algorithm> make_ekf2d(const Ekf2dOptions& options, bool use_odometry,
+std::unique_ptr<Algorithm> make_ekf2d(const Ekf2dOptions& options, const std::string& name, bool use_odometry,
                                       const RangeBearingSensor& sensor) {
-  return std::make_unique<Ekf2d>(options, use_odometry, sensor);
+  return std::make_unique<Ekf2d>(options, name, use_odometry, sensor);
 }
 
 }  // namespace relslam::eval

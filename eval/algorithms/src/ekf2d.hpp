@@ -10,7 +10,8 @@
 namespace relslam::eval {
 
 // `use_odometry`: feed each frame's odometry as MRPT's 2D odometry action (algorithm ekf2d);
-// otherwise empty actions, the constant-position model (ekf2d_no_odometry).
-std::unique_ptr<Algorithm> make_ekf2d(const Ekf2dOptions& options, bool use_odometry, const RangeBearingSensor& sensor);
+// otherwise empty actions, the constant-position model. `name`: as the scenario lists it.
+std::unique_ptr<Algorithm> make_ekf2d(const Ekf2dOptions& options, const std::string& name, bool use_odometry,
+                                      const RangeBearingSensor& sensor);
 
 }  // namespace relslam::eval

@@ -7,8 +7,13 @@
 #include "relslam/eval/io/range_bearing.hpp"
 
 #include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement3D.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose3DPDFGaussian.h>
+#include <mrpt/poses/CPose3DQuat.h>
 #include <mrpt/slam/CRangeBearingKFSLAM.h>
+
+#include <Eigen/Geometry>
 
 namespace relslam::eval {
 namespace {
@@ -33,7 +38,8 @@ class Ekf6d final : public MrptFilter {
     // Fixed in code and logged with the run (spec mrpt §6.2).
     filter_.KF_options.method =
         options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
-    filter_.options.force_ignore_odometry = true;  // belt and braces: the actions are empty anyway
+    // Without use_odometry the actions are empty anyway; the flag is belt and braces.
+    filter_.options.force_ignore_odometry = !options.use_odometry;
     filter_.options.std_sensor_range = static_cast<float>(options.std_range);
     filter_.options.std_sensor_yaw = static_cast<float>(options.std_yaw_rad);
     filter_.options.std_sensor_pitch = static_cast<float>(options.std_pitch_rad);
@@ -53,9 +59,29 @@ class Ekf6d final : public MrptFilter {
     const std::vector<int>& ids = options_.association == EkfAssociation::Known ? truth.landmark_ids : unknown;
     mrpt::obs::CSensoryFrame::Ptr sf = std::make_shared<mrpt::obs::CSensoryFrame>();
     sf->insert(bearing_range_observation(observation, ids, sensor_, 1.0e9 + observation.iteration));
-    mrpt::obs::CActionCollection::Ptr no_odometry =
-        std::make_shared<mrpt::obs::CActionCollection>();  // never null (§1.8 item 2)
-    filter_.processActionObservation(no_odometry, sf);
+    mrpt::obs::CActionCollection::Ptr actions = std::make_shared<mrpt::obs::CActionCollection>();  // never null
+    // A frame without odometry (the first) leaves the filter its constant-position model.
+    if (options_.use_odometry && observation.odometry) actions->insert(odometry_action(*observation.odometry));
+    filter_.processActionObservation(actions, sf);
+  }
+
+  // The frame's odometry as kf-slam reads a 3D odometry action: the pose increment with a
+  // Gaussian of the configured (or the log's) standard deviations, in the increment's frame.
+  mrpt::obs::CActionRobotMovement3D odometry_action(const Rigid3& motion) const {
+    const Rigid3 m = mrpt_axes_from_robot(motion);
+    const Eigen::Quaterniond q(m.rotation);
+    const mrpt::poses::CPose3D mean(
+        mrpt::poses::CPose3DQuat(m.translation.x(), m.translation.y(), m.translation.z(),
+                                 mrpt::math::CQuaternionDouble(q.w(), q.x(), q.y(), q.z())));
+    mrpt::math::CMatrixDouble66 cov;
+    cov.setZero();
+    for (int i = 0; i < 3; ++i) cov(i, i) = options_.odometry_std_xyz * options_.odometry_std_xyz;
+    for (int i = 3; i < 6; ++i) cov(i, i) = options_.odometry_std_angle_rad * options_.odometry_std_angle_rad;
+    mrpt::obs::CActionRobotMovement3D action;
+    action.estimationMethod = mrpt::obs::CActionRobotMovement3D::emOdometry;
+    action.rawOdometryIncrementReading = mean;
+    action.poseChange = mrpt::poses::CPose3DPDFGaussian(mean, cov);
+    return action;
   }
 
   std::size_t map_size() const override { return filter_.getNumberOfLandmarksInTheMap(); }

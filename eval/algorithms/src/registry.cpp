@@ -24,12 +24,18 @@ const std::vector<AlgorithmEntry>& algorithm_registry() {
   static const std::vector<AlgorithmEntry> entries = {
       {"relative_point", "Relative Point: relative maps of point groups, no odometry, no pose state (thesis 3, 6)",
        [](const AlgorithmContext& c) { return make_relative_point(c.scenario.relative_point); }},
-      {"ekf6d", "MRPT's 6D range-bearing EKF-SLAM without odometry, the thesis's baseline (6.7)",
+      {"ekf6d",
+       "MRPT's 6D range-bearing EKF-SLAM, without odometry unless ekf6d.use_odometry: the thesis's baseline (6.7)",
        [](const AlgorithmContext& c) { return make_ekf6d(c.scenario.ekf6d, c.sensor); }},
-      {"ekf2d", "MRPT's planar EKF-SLAM with the vehicle's odometry, the Victoria Park reference (6.8)",
-       [](const AlgorithmContext& c) { return make_ekf2d(c.scenario.ekf2d, true, c.sensor); }},
+      {"ekf2d",
+       "MRPT's planar EKF-SLAM: with the vehicle's odometry, the Victoria Park reference (6.8); elsewhere as "
+       "ekf2d.use_odometry says",
+       [](const AlgorithmContext& c) {
+         const bool odometry = c.scenario.kind == ScenarioKind::VictoriaPark || c.scenario.ekf2d.use_odometry;
+         return make_ekf2d(c.scenario.ekf2d, "ekf2d", odometry, c.sensor);
+       }},
       {"ekf2d_no_odometry", "MRPT's planar EKF-SLAM without odometry (constant-position model)",
-       [](const AlgorithmContext& c) { return make_ekf2d(c.scenario.ekf2d, false, c.sensor); }},
+       [](const AlgorithmContext& c) { return make_ekf2d(c.scenario.ekf2d, "ekf2d_no_odometry", false, c.sensor); }},
   };
   return entries;
 }

@@ -4,6 +4,7 @@
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/point_bounds.hpp"
+#include "relslam/eval/experiments/ekf_log_settings.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/experiments/rawlog_defaults.hpp"
@@ -138,8 +139,13 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
   require_algorithms(loaded);
   RawlogSource source(files);
   nlohmann::json planar_defaults = nlohmann::json::object();
-  const LoadedScenario adapted =
-      with_rawlog_shape(with_rawlog_noise(loaded, source.sensor(), files), source, planar_defaults);
+  LoadedScenario adapted = with_rawlog_shape(with_rawlog_noise(loaded, source.sensor(), files), source, planar_defaults);
+  // The EKFs' noise from the log unless the scenario sets it, and where each value came from.
+  const std::vector<SettingSource> ekf_settings = apply_log_ekf_settings(adapted.scenario, loaded, source.log());
+  if (progress && !ekf_settings.empty()) {
+    std::printf("EKF settings (source: log, scenario, tuned or default):\n");
+    print_settings(ekf_settings);
+  }
   const Scenario& scenario = adapted.scenario;
   if (std::find(scenario.algorithms.begin(), scenario.algorithms.end(), "ekf6d") != scenario.algorithms.end() &&
       scenario.ekf6d.association == EkfAssociation::Known && !source.ids_everywhere())
@@ -149,6 +155,7 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
   ExperimentResult result = experiment.run(progress);
   if (!adapted.scenario.derived.empty()) result.source["derived"] = derived_json(adapted.scenario);
   if (!planar_defaults.empty()) result.source["planar_defaults"] = planar_defaults;
+  if (!ekf_settings.empty()) result.source["noise_sources"] = settings_json(ekf_settings);
   return result;
 }
 

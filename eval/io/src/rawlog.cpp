@@ -124,6 +124,24 @@ void check_sensor_sense(const RangeBearingSensor& s, const std::string& file, in
     if (value < 0) fail(field, "must be >= 0", value);
 }
 
+// What the action states about its own uncertainty, for the EKFs' odometry noise; nothing for
+// an action without a (finite, positive) covariance.
+std::optional<OdometryStd> odometry_std_of(const CActionCollection& actions) {
+  double xyz = 0, angle = 0;
+  if (auto a3 = actions.getActionByClass<mrpt::obs::CActionRobotMovement3D>()) {
+    const auto& c = a3->poseChange.cov;
+    xyz = std::max({c(0, 0), c(1, 1), c(2, 2)});
+    angle = std::max({c(3, 3), c(4, 4), c(5, 5)});
+  } else if (auto a2 = actions.getActionByClass<mrpt::obs::CActionRobotMovement2D>(); a2 && a2->poseChange) {
+    mrpt::math::CMatrixDouble33 c;
+    a2->poseChange->getCovariance(c);
+    xyz = std::max(c(0, 0), c(1, 1));
+    angle = c(2, 2);
+  }
+  if (!(xyz > 0 && angle > 0 && std::isfinite(xyz) && std::isfinite(angle))) return std::nullopt;
+  return OdometryStd{std::sqrt(xyz), std::sqrt(angle)};
+}
+
 // A NaN or infinite value would poison every estimate downstream; reject it here, naming the
 // record and the field, instead of producing silently wrong numbers. Every observation is
 // checked, though only the first one's sensor is kept.
@@ -263,6 +281,7 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t 
       if (!any_action && !any_frame) log.sensory_frame_first = false;
       any_action = true;
       pending_odometry = odometry_of(*actions, name, record);
+      if (!log.odometry_std) log.odometry_std = odometry_std_of(*actions);
     } else if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(object)) {
       if (!any_action && !any_frame) log.sensory_frame_first = true;
       any_frame = true;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace relslam::eval {
 namespace {
@@ -50,6 +51,30 @@ double point_spacing(const Rawlog& log) {
   return *middle;
 }
 
+// The sensor as the algorithms see it. observation_frame() moves every point into the robot
+// frame with the observation's sensorLocationOnRobot, so both Relative Point and the EKFs get
+// the sensor at the robot origin, and the truth (the robot's path) fits both. From there a
+// sensor mounted off the origin or turned sees further and in other directions; MRPT's EKF does
+// not predict landmarks outside the stated field of view, so such a sensor's field becomes all
+// around and its range grows by the offset. Giving MRPT the real pose is no option: its 6D
+// observation Jacobian is wrong for a sensor off the origin (kf-slam ends metres off on MRPT's
+// own noncentered demo).
+RangeBearingSensor robot_frame_sensor(const Rawlog& log) {
+  RangeBearingSensor s = log.sensor;
+  double offset = 0;
+  bool turned = false;
+  for (const RawlogFrame& f : log.frames) {
+    offset = std::max(offset, f.robot_T_sensor.translation.norm());
+    turned = turned || !f.robot_T_sensor.rotation.isIdentity(1e-12);
+  }
+  if (offset == 0 && !turned) return s;
+  s.field_of_view_yaw_rad = 2 * std::numbers::pi;
+  s.field_of_view_pitch_rad = std::numbers::pi;
+  s.max_range += offset;
+  s.min_range = std::max(0.0, s.min_range - offset);
+  return s;
+}
+
 }  // namespace
 
 RawlogShape shape_of(const Rawlog& log) {
@@ -70,14 +95,20 @@ RawlogShape shape_of(const Rawlog& log) {
 }
 
 RawlogSource::RawlogSource(const RawlogFiles& files)
-    : files_(files), log_(read_rawlog(files.rawlog)), shape_(shape_of(log_)) {
+    : files_(files), log_(read_rawlog(files.rawlog)), shape_(shape_of(log_)), sensor_(robot_frame_sensor(log_)) {
+  const int count = static_cast<int>(log_.frames.size());
+  end_ = files_.end_frame < 0 ? count : std::min(files_.end_frame, count);
+  if (files_.first_frame < 0 || files_.first_frame >= end_)
+    throw InputError(files_.rawlog.string(), 0, "frames",
+                     "frames " + std::to_string(files_.first_frame) + ".." + std::to_string(end_) + " of " +
+                         std::to_string(count) + " hold none");
   // Truth in our frame: the world is the robot frame at the first frame (its axes ours).
   if (files_.truth_path) {
     path_ = read_mrpt_path(*files_.truth_path);
     if (path_.size() < log_.frames.size())
       throw InputError(files_.truth_path->string(), 0, "--truth-path",
                        std::to_string(path_.size()) + " rows for " + std::to_string(log_.frames.size()) + " frames");
-    first_inverse_ = path_.front().inverse();
+    first_inverse_ = path_[files_.first_frame].inverse();
   }
   truth_.known = files_.truth_landmarks.has_value();
   if (files_.truth_landmarks) {
@@ -113,16 +144,19 @@ void RawlogSource::record_into(const std::filesystem::path& dir) {
 }
 
 void RawlogSource::stream(const Consumer& consume) {
-  for (const RawlogFrame& frame : log_.frames) {
+  for (int k = files_.first_frame; k < end_; ++k) {
+    const RawlogFrame& frame = log_.frames[k];
     ObservationFrame observation = observation_frame(frame);
+    observation.iteration = k - files_.first_frame;
+    if (k == files_.first_frame) observation.odometry.reset();  // the motion into the part, not in it
     // MRPT reads a timestamp of 0 as "none".
     if (frame.timestamp_s > 0) observation.time_s = frame.timestamp_s;
     TruthFrame t;
-    t.iteration = frame.index;
+    t.iteration = observation.iteration;
     t.pose_known = files_.truth_path.has_value();
     if (t.pose_known) t.world_T_robot = robot_axes_from_mrpt(first_inverse_ * path_[frame.index]);
     if (truth_path_file_)
-      truth_path_file_->write(observation.time_s.value_or(static_cast<double>(frame.index)), t.world_T_robot);
+      truth_path_file_->write(observation.time_s.value_or(static_cast<double>(observation.iteration)), t.world_T_robot);
     for (const RawlogMeasurement& m : frame.measurements) {
       const auto it = row_of_id_.find(m.landmark_id);
       // Scoring ids are truth rows when there are truth landmarks, else the rawlog's own ids.
@@ -134,14 +168,17 @@ void RawlogSource::stream(const Consumer& consume) {
 }
 
 nlohmann::json RawlogSource::describe() const {
-  return {{"rawlog",
-           {{"file", files_.rawlog.string()},
-            {"frames", log_.frames.size()},
-            {"sensory_frame_first", log_.sensory_frame_first},
-            {"planar", shape_.planar},
-            {"shape", shape_.why},
-            {"truth_path", files_.truth_path ? files_.truth_path->string() : ""},
-            {"truth_landmarks", files_.truth_landmarks ? files_.truth_landmarks->string() : ""}}}};
+  nlohmann::json d = {{"rawlog",
+                       {{"file", files_.rawlog.string()},
+                        {"frames", log_.frames.size()},
+                        {"sensory_frame_first", log_.sensory_frame_first},
+                        {"planar", shape_.planar},
+                        {"shape", shape_.why},
+                        {"truth_path", files_.truth_path ? files_.truth_path->string() : ""},
+                        {"truth_landmarks", files_.truth_landmarks ? files_.truth_landmarks->string() : ""}}}};
+  if (frames() != static_cast<long long>(log_.frames.size()))
+    d["rawlog"]["part"] = {{"first_frame", files_.first_frame}, {"end_frame", end_}};
+  return d;
 }
 
 }  // namespace relslam::eval

@@ -4,8 +4,11 @@
 #include "relslam/eval/io/rawlog.hpp"
 #include "relslam/eval/sources/rawlog_source.hpp"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cstdio>
+#include <numbers>
 
 namespace relslam::eval {
 
@@ -18,6 +21,23 @@ void add_rawlog(CLI::App& app, RawlogArgs& args) {
   cmd->add_option("rawlog", args.file, "Rawlog file")->required();
   cmd->add_option("--csv", args.csv, "Write frame,x,y,z,landmark_id rows to this CSV file");
 }
+
+namespace {
+
+// The sensor as the first observation describes it: its noise is what the EKFs take from the
+// log, its pose on the robot what turns every measurement into robot coordinates.
+void print_sensor(const Rawlog& log) {
+  const RangeBearingSensor& s = log.sensor;
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  std::printf("  sensor noise: std range %g m, yaw %g deg, pitch %g deg%s\n", s.std_range, s.std_yaw_rad * kDeg,
+              s.std_pitch_rad * kDeg, s.std_range > 0 ? "" : " (none given)");
+  const Rigid3& pose = log.frames.front().robot_T_sensor;
+  const Eigen::Vector3d& t = pose.translation;
+  const double angle = Eigen::AngleAxisd(pose.rotation).angle() * kDeg;
+  std::printf("  sensor on robot (MRPT axes): x %g y %g z %g m, rotated %g deg\n", t.x(), t.y(), t.z(), angle);
+}
+
+}  // namespace
 
 int run_rawlog(const RawlogArgs& args) {
   const Rawlog log = read_rawlog(args.file);
@@ -44,6 +64,7 @@ int run_rawlog(const RawlogArgs& args) {
   // What relslam run makes of it: a planar log runs relative_point + ekf2d (rawlog_defaults.hpp).
   const RawlogShape shape = shape_of(log);
   std::printf("  %s: %s\n", shape.planar ? "planar (2D)" : "3D", shape.why.c_str());
+  print_sensor(log);
 
   if (!args.csv.empty()) {
     CsvWriter csv(args.csv, {"frame", "x", "y", "z", "landmark_id"});

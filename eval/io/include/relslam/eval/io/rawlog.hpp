@@ -36,6 +36,13 @@ struct RawlogFrame {
   std::optional<Rigid3> odometry;
 };
 
+// An odometry action's own uncertainty (its Gaussian's diagonal): the largest translation and
+// the largest rotation standard deviation.
+struct OdometryStd {
+  double xyz_m = 0;
+  double angle_rad = 0;
+};
+
 struct Rawlog {
   enum class Format { ActionsSensoryFrames, ObservationsOnly };
   Format format = Format::ActionsSensoryFrames;
@@ -45,6 +52,7 @@ struct Rawlog {
   int records = 0;               // serialized objects read
   int skipped_observations = 0;  // observations of other types, ignored
   RangeBearingSensor sensor;     // as the first bearing-range observation describes it
+  std::optional<OdometryStd> odometry_std;  // as the first odometry action with a covariance states it
   std::vector<RawlogFrame> frames;
 };
 

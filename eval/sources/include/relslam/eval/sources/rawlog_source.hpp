@@ -18,6 +18,10 @@ struct RawlogFiles {
   std::filesystem::path rawlog;
   std::optional<std::filesystem::path> truth_path;       // one row per frame
   std::optional<std::filesystem::path> truth_landmarks;  // needs truth_path
+  // Frames [first_frame, end_frame) only (end_frame < 0: to the end); the world is the robot
+  // frame at first_frame. tune-ekf tunes on one part of a log and scores on the rest.
+  int first_frame = 0;
+  int end_frame = -1;
 };
 
 // What kind of log it is, decided once where the log is read (issue 35). A planar log keeps
@@ -44,9 +48,10 @@ class RawlogSource final : public FrameSource {
   explicit RawlogSource(const RawlogFiles& files);
 
   std::string label() const override { return "run " + files_.rawlog.filename().string(); }
-  long long frames() const override { return static_cast<long long>(log_.frames.size()); }
+  long long frames() const override { return end_ - files_.first_frame; }
   const LandmarkTruth& truth() const override { return truth_; }
-  const RangeBearingSensor& sensor() const override { return log_.sensor; }
+  // The sensor as the algorithms see it: at the robot origin (robot_frame_sensor).
+  const RangeBearingSensor& sensor() const override { return sensor_; }
   void stream(const Consumer& consume) override;
   nlohmann::json describe() const override;
 
@@ -61,10 +66,15 @@ class RawlogSource final : public FrameSource {
   // log's timestamps in seconds, or the frame index where the log has none).
   void record_into(const std::filesystem::path& dir);
 
+  // The file as read, every frame.
+  const Rawlog& log() const { return log_; }
+
  private:
   RawlogFiles files_;
   Rawlog log_;
   RawlogShape shape_;
+  RangeBearingSensor sensor_;
+  int end_ = 0;  // files_.end_frame, or the frame count
   std::vector<Rigid3> path_;  // MRPT's truth rows, MRPT axes
   Rigid3 first_inverse_;
   LandmarkTruth truth_;

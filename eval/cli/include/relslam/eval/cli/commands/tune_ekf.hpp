@@ -21,6 +21,13 @@ struct TuneEkfArgs : ScenarioCommandArgs {
   int iterations = 1000;   // a shortened run: the EKF's cost grows with the map [C]
   int seed_offset = 1000;  // tuning seed = scenario seed + this, kept apart from the experiments [C]
   int jobs = 2;
+  // On a recorded log instead of the simulation: tune on its first `split` share of frames,
+  // score the winner on the rest, which tuning never saw. q_scale then multiplies the motion
+  // noise sized from the log (ekf_log_settings.hpp).
+  std::string rawlog;
+  std::string truth_path;       // required with rawlog: tuning scores against it
+  std::string truth_landmarks;  // required with rawlog
+  double split = 0.5;
 };
 
 void add_tune_ekf(CLI::App& app, TuneEkfArgs& args);
