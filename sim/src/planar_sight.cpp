@@ -177,4 +177,30 @@ std::optional<WallCrossing> first_wall_crossing(const PlanarMap& map, const Plan
   return std::nullopt;
 }
 
+std::optional<MapExit> first_exit_from_map(const PlanarMap& map, const PlanarPath& path) {
+  Box walls;
+  for (const Wall& w : map.world.walls) walls.add(w.a), walls.add(w.b);
+  // Out of the map is beyond the sensor's reach of every wall's extent: from there nothing the
+  // map describes can be seen (a robot may start outside a lone wall it walks up to).
+  const double reach = sensor_reach(map.sensor);
+  if (!std::isfinite(reach)) return std::nullopt;
+  walls.low.array() -= reach;
+  walls.high.array() += reach;
+  const auto outside = [&](const Eigen::Vector2d& p) {
+    return (p.array() < walls.low.array()).any() || (p.array() > walls.high.array()).any();
+  };
+  int first = 0;
+  const std::vector<int>& ends = path.operation_ends();
+  for (std::size_t op = 0; op < ends.size(); ++op) {
+    const int last = ends[op];
+    // A MOVE's poses lie between its ends, and the box is convex: its ends tell.
+    const bool move = operation_place(map.path, static_cast<int>(op)).operation->kind == PathOperationKind::Move;
+    for (int k = first; k <= last; k += move ? std::max(1, last - first) : 1)
+      if (const Eigen::Vector2d p = path.world_T_robot(k).translation; outside(p))
+        return MapExit{static_cast<int>(op), k, p, walls.low, walls.high};
+    first = last;
+  }
+  return std::nullopt;
+}
+
 }  // namespace relslam::sim

@@ -269,11 +269,23 @@ TEST(PlanarMapFile, PathThroughAWallNamesTheStepAndTheWall) {
       << error_of(map_text(wall0, wall1, R"(["ARC 12.6 -45"])"));
 }
 
-TEST(PlanarMapFile, EveryShippedPathStaysClearOfItsWalls) {
+TEST(PlanarMapFile, EveryShippedPathStaysClearOfItsWallsAndWithinTheMap) {
   for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenarios/maps"))) {
     const sim::PlanarMap map = read_planar_map(entry.path());
     EXPECT_FALSE(sim::first_wall_crossing(map, sim::PlanarPath(map.path))) << entry.path();
+    EXPECT_FALSE(sim::first_exit_from_map(map, sim::PlanarPath(map.path))) << entry.path();
   }
+}
+
+// Out of the map: farther from every wall's extent than the sensor reaches (the small frustum's
+// far corners, about 10.6 here), where nothing the map holds can be seen.
+TEST(PlanarMapFile, PathLeavingTheMapNamesTheStepAndWhere) {
+  const std::string wall0 = R"({"a": [5, -1], "b": [5, 1], "facing": "-x"})",
+                    wall1 = R"({"a": [6, 1], "b": [6, 2], "facing": "-x"})";
+  const std::string away = error_of(map_text(wall0, wall1, R"(["MOVE 4", "TURN 180", "MOVE 40"])"));
+  EXPECT_EQ(away.rfind("m.json:8: path.steps[2]: leaves the map at (-36, ", 0), 0u) << away;
+  EXPECT_NE(away.find("within its sensor's reach of the walls"), std::string::npos) << away;
+  EXPECT_EQ(error_of(map_text(wall0, wall1, R"(["MOVE 4", "TURN 180", "MOVE 4"])")), "no error");
 }
 
 TEST(PlanarMapFile, MoreWallsThanTheLimitAreRefusedByTheirCount) {
@@ -292,11 +304,11 @@ TEST(PlanarMapFile, LongPathNeverNearTwoWallsIsRefusedQuickly) {
   const std::string text =
       "{\n"
       "  \"walls\": [\n"
-      "    {\"a\": [1e6, 4], \"b\": [1000006, 4], \"facing\": \"-z\"},\n"
-      "    {\"a\": [1, -3], \"b\": [1, 3], \"facing\": \"-x\"}\n"
+      "    {\"a\": [1e7, 30], \"b\": [10000006, 30], \"facing\": \"-z\"},\n"
+      "    {\"a\": [-1, -3], \"b\": [-1, 3], \"facing\": \"+x\"}\n"
       "  ],\n"
       "  \"path\": {\n"
-      "    \"start\": {\"x\": 0, \"z\": 0, \"heading_deg\": 180}, \"speed\": 1,\n"
+      "    \"start\": {\"x\": 0, \"z\": 0, \"heading_deg\": 0}, \"speed\": 1,\n"
       "    \"steps\": [\"MOVE 9999990\"]\n"
       "  }\n"
       "}\n";

@@ -93,12 +93,22 @@ class MapReader {
   }
 
  private:
-  // The path must stay clear of the walls and see two of them at once; both in time that grows
-  // with the map, not with the path's length (planar_simulator.hpp).
+  // The path must stay within reach of the map, clear of its walls, and see two of them at
+  // once; all in time that grows with the map, not with the path's length (planar_sight.hpp).
   void check_along_path(const sim::PlanarMap& map) const {
     const sim::PlanarPath path(map.path);
     std::optional<sim::WallCrossing> crossing;
     std::optional<int> seeing;
+    const std::optional<sim::MapExit> exit = sim::first_exit_from_map(map, path);
+    if (exit) {
+      const sim::OperationPlace place = sim::operation_place(map.path, exit->operation);
+      fail("path." + place.field,
+           "leaves the map at (" + format_number(exit->at.x()) + ", " + format_number(exit->at.y()) + ")" +
+               (place.loop > 0 ? ", loop " + std::to_string(place.loop) : "") + ", iteration " +
+               std::to_string(exit->iteration) + ": the robot must stay within its sensor's reach of the walls, x " +
+               format_number(exit->low.x()) + " to " + format_number(exit->high.x()) + ", z " +
+               format_number(exit->low.y()) + " to " + format_number(exit->high.y()));
+    }
     try {
       crossing = sim::first_wall_crossing(map, path);
       if (!crossing) seeing = sim::first_iteration_seeing(map, path, 2);

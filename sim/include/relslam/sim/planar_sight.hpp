@@ -42,6 +42,17 @@ struct WallCrossing {
 // length; the steps of an ARC are tested against the walls its bounding box meets.
 // `path` is built from map.path.
 std::optional<WallCrossing> first_wall_crossing(const PlanarMap& map, const PlanarPath& path);
+// Where the robot's path leaves its map: the first pose farther out than the sensor's reach
+// from the box that holds every wall (from there nothing the map describes can be seen).
+struct MapExit {
+  int operation = 0;
+  int iteration = 0;
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();
+  Eigen::Vector2d low = Eigen::Vector2d::Zero(), high = Eigen::Vector2d::Zero();  // the walls' extent and reach
+};
+// The first pose of `path` outside that box, if any; none without a frustum (every wall always
+// visible). Work: one pass over the path's poses (as building it), a MOVE by its two ends.
+std::optional<MapExit> first_exit_from_map(const PlanarMap& map, const PlanarPath& path);
 // The operation `index` of WallCrossing::operation in `program`, and where it stands: "steps[2]"
 // or "then[0]", with the loop (1-based; 0 for `then`).
 struct OperationPlace {
