@@ -3,7 +3,7 @@
 // build their input here; the ones named Repro3* run the found inputs of
 // ../shared/reliability/repro3 in place and skip when that folder is absent.
 
-#include "child_process.hpp"
+#include "located_error.hpp"
 #include "relslam/eval/io/rawlog.hpp"
 #include "test_support.hpp"
 
@@ -18,24 +18,14 @@ namespace {
 namespace fs = std::filesystem;
 
 #ifdef RELSLAM_SANITIZED
-constexpr double kPeakRssMb = 4096;  // shadow memory and quarantine are resident too
 constexpr double kSeconds = 120;
 #else
-constexpr double kPeakRssMb = 1024;
 constexpr double kSeconds = 20;
 #endif
 
-// Runs the relslam program as a child in a scratch folder; exit 2, `located` in the message,
-// within the time and memory bounds.
+// Exit 2 with `located` in the message, within kSeconds and 1 GB.
 void expect_located_error(const std::vector<std::string>& arguments, const std::string& located) {
-  test::ScratchDir dir;
-  std::vector<std::string> argv = {std::string(RELSLAM_BINARY_DIR) + "/relslam"};
-  argv.insert(argv.end(), arguments.begin(), arguments.end());
-  const test::ProcessResult r = test::run_process(argv, dir.path());
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find(located), std::string::npos) << "expected \"" << located << "\" in: " << r.err;
-  EXPECT_LT(r.seconds, kSeconds);
-  EXPECT_LT(r.peak_rss_mb, kPeakRssMb);
+  test::expect_located_error(arguments, located, kSeconds);
 }
 
 fs::path repro3_dir() { return test::source_path("../shared/reliability/repro3"); }

@@ -1,0 +1,39 @@
+#pragma once
+// The outcome every refused input must have, checked on the relslam program run as a child:
+// exit 2, the location in its message, within a time bound and 1 GB. Shared by the tests of the
+// reproducers and of the readers' limits.
+
+#include "child_process.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace relslam::test {
+
+// Under AddressSanitizer the program's shadow memory and the quarantine of freed blocks are
+// resident too (measured 1062 MB for every reproducer), so the sanitizer build checks the other
+// outcomes and only the release build the 1 GB.
+#ifdef RELSLAM_SANITIZED
+inline constexpr double kRefusalPeakRssMb = 4096;
+#else
+inline constexpr double kRefusalPeakRssMb = 1024;
+#endif
+
+// Runs the relslam program with `arguments` in a scratch folder: exit 2, `located` in the
+// message, within `seconds` and kRefusalPeakRssMb.
+inline void expect_located_error(const std::vector<std::string>& arguments, const std::string& located,
+                                 double seconds) {
+  ScratchDir dir;
+  std::vector<std::string> argv = {std::string(RELSLAM_BINARY_DIR) + "/relslam"};
+  argv.insert(argv.end(), arguments.begin(), arguments.end());
+  const ProcessResult r = run_process(argv, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(located), std::string::npos) << "expected \"" << located << "\" in: " << r.err;
+  EXPECT_LT(r.seconds, seconds);
+  EXPECT_LT(r.peak_rss_mb, kRefusalPeakRssMb);
+}
+
+}  // namespace relslam::test
