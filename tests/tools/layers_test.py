@@ -196,7 +196,7 @@ def check_inside(root, allowed):
                     where = f"{path.relative_to(root)}:{text.count(chr(10), 0, match.start(1)) + 1}: {target}"
                     if target.startswith(prefix):
                         included = str(Path(target[len(prefix):]).with_suffix(""))
-                    elif (file := resolve(target, path.parent, private)) and file.is_relative_to(private):
+                    elif (file := resolve(target, path.parent, private)) and private in file.parents:
                         included = str(file.relative_to(private).with_suffix(""))
                         if base == public:
                             problems.append(f"{where}: a public header includes a header private to {name}/src")
