@@ -3,6 +3,7 @@
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
+#include "relslam/eval/experiments/require_algorithms.hpp"
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 

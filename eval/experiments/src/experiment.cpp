@@ -8,6 +8,7 @@
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/experiments/rawlog_defaults.hpp"
+#include "relslam/eval/experiments/require_algorithms.hpp"
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/sources/simulation_source.hpp"
@@ -21,13 +22,6 @@
 #include <sstream>
 
 namespace relslam::eval {
-
-void require_algorithms(const LoadedScenario& loaded) {
-  if (loaded.scenario.algorithms.empty())
-    throw loaded.error("algorithms",
-                       "the scenario lists no algorithm to run; add one, e.g. --set algorithms=relative_point");
-  check_algorithm_names(loaded);
-}
 
 Experiment::Experiment(const LoadedScenario& loaded, FrameSource& source, const std::filesystem::path& out)
     : source_(source), out_(out) {

@@ -4,6 +4,7 @@
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
+#include "relslam/eval/experiments/require_algorithms.hpp"
 #include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/sources/planar_simulation_source.hpp"
 

@@ -1,5 +1,6 @@
 #include "relslam/eval/experiments/victoria_park_experiment.hpp"
 
+#include "relslam/eval/experiments/require_algorithms.hpp"
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
 

@@ -1,11 +1,8 @@
 #include "relslam/eval/io/map_render.hpp"
 
-#include "relslam/eval/config/input_error.hpp"
-
 #include "render_drawing.hpp"
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -176,16 +173,6 @@ cv::Mat render_map(const RenderScene& scene, const RenderFrame& frame, const Ren
   draw_scale_bar(image, frame, options);
   draw_legend(image, !scene.groups.empty());
   return image;
-}
-
-void write_image(const std::string& file, const cv::Mat& image) {
-  bool ok = false;
-  try {
-    ok = cv::imwrite(file, image);
-  } catch (const cv::Exception& e) {
-    throw InputError(file, 0, "--out", std::string("cannot write an image here: ") + e.what());
-  }
-  if (!ok) throw InputError(file, 0, "--out", "cannot write an image here (a known image extension such as .png?)");
 }
 
 }  // namespace relslam::eval

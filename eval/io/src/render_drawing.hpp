@@ -3,7 +3,7 @@
 // (planar_render.cpp) draw alike — world-to-pixel mapping, text, the scale bar, the legend, the
 // fit rule and the group colours — so both kinds of run look like one family of figures.
 
-#include "relslam/eval/io/map_render.hpp"
+#include "relslam/eval/io/render_frame.hpp"
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>

@@ -1,7 +1,8 @@
 #include "relslam/eval/cli/commands/compare.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
-#include "relslam/eval/io/map_render.hpp"
+#include "relslam/eval/io/image_file.hpp"
+#include "relslam/eval/io/render_frame.hpp"
 #include "relslam/eval/io/run_overview.hpp"
 #include "relslam/eval/metrics/summary_reader.hpp"
 

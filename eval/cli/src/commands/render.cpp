@@ -3,6 +3,7 @@
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/experiments/planar_replay.hpp"
 #include "relslam/eval/experiments/run_replay.hpp"
+#include "relslam/eval/io/image_file.hpp"
 #include "relslam/eval/io/map_render.hpp"
 #include "relslam/eval/io/planar_render.hpp"
 #include "relslam/eval/io/progress.hpp"

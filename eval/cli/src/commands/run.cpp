@@ -6,6 +6,7 @@
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/experiments/rawlog_defaults.hpp"
+#include "relslam/eval/experiments/require_algorithms.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/sources/plane_file_source.hpp"
 

@@ -7,10 +7,10 @@
 // calls it on an RltPlane's stored observations (RltPlane::view, PairComparison). Part of relslam/plane.
 
 #include "relslam/core/plane_object.hpp"
+#include "relslam/plane/compare_result.hpp"
 #include "relslam/plane/growth_phase.hpp"
 #include "relslam/plane/observation_view.hpp"
 #include "relslam/plane/options.hpp"
-#include "relslam/plane/rlt_plane_compare.hpp"
 
 #include <optional>
 #include <vector>

@@ -13,11 +13,11 @@
 //  - stored observations never change, so a piece chosen before keeps its comparison.
 // Part of relslam/plane: Eigen only.
 
+#include "relslam/plane/compare_result.hpp"
 #include "relslam/plane/growth_phase.hpp"
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/rlt_plane.hpp"
-#include "relslam/plane/rlt_plane_compare.hpp"
 
 #include <climits>
 #include <optional>

@@ -3,10 +3,10 @@
 // the plane's place in that group's relative map.
 
 #include "relslam/core/planar_pose.hpp"
+#include "relslam/plane/compare_result.hpp"
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/plane_object.hpp"
 #include "relslam/plane/rlt_interval.hpp"
-#include "relslam/plane/rlt_plane_compare.hpp"
 
 #include <optional>
 

@@ -5,31 +5,15 @@
 
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/algorithm_recorder.hpp"
-#include "relslam/eval/metrics/run_summary.hpp"
+#include "relslam/eval/experiments/experiment_result.hpp"
 #include "relslam/eval/sources/frame_source.hpp"
 #include "relslam/eval/sources/rawlog_source.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <vector>
 
 namespace relslam::eval {
-
-struct ExperimentResult {
-  std::vector<SummaryRow> rows;     // one per algorithm
-  std::optional<SummaryRow> ratio;  // relative_point over ekf6d (or ekf2d), when both ran
-  int iterations = 0;
-  double seconds = 0;
-  nlohmann::json source;  // what the observations were: manifest material
-  // SIGINT or SIGTERM stopped the frames early: the rows cover the frames processed.
-  bool interrupted = false;
-};
-
-// InputError at "algorithms" when the scenario lists none or one the registry does not have.
-void require_algorithms(const LoadedScenario& loaded);
 
 class Experiment {
  public:

@@ -3,7 +3,8 @@
 // algorithm of the scenario, each recorded and scored against the true walls, into one run
 // folder: a sub-folder per algorithm and summary.csv (the counterpart of experiment.hpp).
 
-#include "relslam/eval/experiments/experiment.hpp"
+#include "relslam/eval/config/scenario_loading.hpp"
+#include "relslam/eval/experiments/experiment_result.hpp"
 #include "relslam/eval/experiments/plane_recorder.hpp"
 #include "relslam/eval/sources/plane_frame_source.hpp"
 

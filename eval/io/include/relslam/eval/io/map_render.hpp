@@ -4,6 +4,7 @@
 // image out. The scene is filled by the replay (run_replay.hpp); drawing knows nothing of runs.
 
 #include "relslam/core/rigid.hpp"
+#include "relslam/eval/io/render_frame.hpp"
 
 #include <Eigen/Core>
 
@@ -17,8 +18,6 @@ class Mat;
 }
 
 namespace relslam::eval {
-
-enum class RenderView { Top, Side };  // top: world z right, x up (seen from +y); side: z right, y up
 
 // One map landmark as the algorithm holds it (world frame, our axes).
 struct SceneLandmark {
@@ -55,22 +54,6 @@ struct RenderScene {
   SceneFrustum frustum;
 };
 
-// What part of the world the picture shows.
-struct RenderFrame {
-  double center_u = 0, center_v = 0;  // picture centre in world units (top: z, x; side: z, y)
-  double span = 100;                  // world units across the picture's wider side
-};
-
-struct RenderOptions {
-  int width = 1280;  // pixels
-  int height = 960;
-  RenderView view = RenderView::Top;
-  // Point and group labels (thesis Fig 129). Unset: only when at most this many landmarks are
-  // in the picture [C], so a whole figure eight stays readable.
-  std::optional<bool> labels;
-  int auto_label_limit = 250;
-};
-
 // The frame that shows every true point and both paths, with a margin.
 RenderFrame fit_everything(const RenderScene& scene, const RenderOptions& options);
 // The frame around the true (else estimated) robot that holds its frustum.
@@ -78,9 +61,5 @@ RenderFrame fit_robot(const RenderScene& scene, const RenderOptions& options);
 
 // The picture (BGR, options.width x options.height).
 cv::Mat render_map(const RenderScene& scene, const RenderFrame& frame, const RenderOptions& options);
-
-// Writes a picture in the format its extension names (.png, .jpg, ...). Throws InputError at
-// --out when it cannot.
-void write_image(const std::string& file, const cv::Mat& image);
 
 }  // namespace relslam::eval

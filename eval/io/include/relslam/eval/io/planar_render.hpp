@@ -8,7 +8,7 @@
 
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"
-#include "relslam/eval/io/map_render.hpp"
+#include "relslam/eval/io/render_frame.hpp"
 #include "relslam/sim/viewing_frustum.hpp"
 
 #include <Eigen/Core>

@@ -4,7 +4,7 @@
 // this way — simulated, from a rawlog, Victoria Park, planar, a sweep's cell — since it reads
 // only what every run writes (trajectory.tum, landmarks.csv or planes.csv, and the truth files).
 
-#include "relslam/eval/io/map_render.hpp"
+#include "relslam/eval/io/render_frame.hpp"
 
 #include <Eigen/Core>
 
