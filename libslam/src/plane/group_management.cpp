@@ -6,6 +6,8 @@
 
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
+#include "group_charting.hpp"
+
 #include <algorithm>
 #include <utility>
 #include <vector>
@@ -17,7 +19,7 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   // view goes back to that group instead of starting a new one.
   if (motion_model_active_ && options_.rules.return_to_visited_group) {
     const bool pseudo_merge = options_.key_points && options_.rules.pseudo_merge;
-    bool returned = switch_to_group_holding_all();
+    bool returned = switch_to_group_holding_all(*this, assignment_);
     if (pseudo_merge && stamped_.size() >= 2) {
       // Rule 37 looks for duplicates where the motion model puts the robot now. A copy tracks
       // this iteration and the membership it writes is put back: the model and its plane stay
@@ -31,9 +33,10 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
       // CheckForLoopClosing (spec §5.5.5) counts a group as holding a plane in view through the
       // plane's duplicates too: a wall seen again after the motion model as a new plane (Fig
       // 101's plane 8 ≡ 2) still lets the robot return to the group of the old one.
-      const std::vector<DuplicateGroup> duplicates = find_duplicate_groups(world_T_robot);
-      if (!returned) returned = switch_to_group_holding_all(duplicates);
-      if (returned) result.oneway_links += mend_merge_after_loop_closing(duplicates);
+      const std::vector<DuplicateGroup> duplicates = find_duplicate_groups(
+          *this, {stamped_, assignment_}, world_T_robot, DuplicateSearchOptions::of(options_), matches_);
+      if (!returned) returned = switch_to_group_holding_all(*this, assignment_, duplicates);
+      if (returned) result.oneway_links += mend_merge_after_loop_closing(*this, duplicates);
     }
   }
   // Spec §5.5.1 step A, with the bootstrap of A23: the first group waits for two planes.
@@ -59,7 +62,7 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   upkeep_unassigned();
   // Step D: the current group by charting (Rule 22); off, the group last started stays current,
   // as before Rule 22 in the thesis (4.3.5).
-  if (options_.key_points && options_.rules.current_group_chart) chart_current_group();
+  if (options_.key_points && options_.rules.current_group_chart) chart_current_group(*this, assignment_, chart_);
 }
 
 void RltXPointsS::regroup_reacquired(RelativePlaneStep& result) {
@@ -156,7 +159,7 @@ bool RltXPointsS::make_new_xpoint(PlaneId plane, RelativePlaneStep& result) {
       std::vector<PlaneId> chain = linking;
       chain.push_back(plane);
       std::ranges::sort(chain);  // creation order (spec §5.5.3)
-      set_current(create_xpoint(std::move(chain), x, std::move(linking), plane));
+      set_current(*this, create_xpoint(std::move(chain), x, std::move(linking), plane));
       ++result.groups_created;
       return true;
     }

@@ -4,6 +4,8 @@
 
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
+#include "group_charting.hpp"
+
 #include <algorithm>
 #include <optional>
 #include <vector>
@@ -23,9 +25,9 @@ void RltXPointsS::end_motion_model_on_the_map() {
   const bool second_on_map = std::ranges::any_of(
       assignment_, [&](PlaneId p) { return p != tracked && p < static_cast<PlaneId>(map.size()) && map[p].mapped; });
   if (!second_on_map) return;
-  fill_chart(false);
+  fill_chart(*this, assignment_, false, chart_);
   const auto best = std::ranges::max_element(chart_);  // the first of the most: the lowest id
-  if (*best > 0) set_current(static_cast<XPointId>(best - chart_.begin()));
+  if (*best > 0) set_current(*this, static_cast<XPointId>(best - chart_.begin()));
 }
 
 void RltXPointsS::check_for_motion_model() {

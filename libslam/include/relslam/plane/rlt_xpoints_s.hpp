@@ -11,9 +11,9 @@
 #include "relslam/plane/rlt_map_builder.hpp"
 #include "relslam/plane/rlt_plane.hpp"
 #include "relslam/plane/rlt_plane_interval.hpp"
+#include "relslam/plane/rlt_xmm_point.hpp"
 #include "relslam/plane/rlt_xpoint.hpp"
 #include "relslam/plane/rlt_xpoint_link.hpp"
-#include "relslam/plane/rlt_xmm_point.hpp"
 #include "relslam/plane/rlt_xpoints_state.hpp"
 #include "relslam/plane/roll_back.hpp"
 
@@ -109,9 +109,7 @@ class RltXPointsS : private RltXPointsState {
   XPointId current_xpoint() const { return current_; }
   // Every motion model ever started, in order; the active one, if any, is last.
   const std::vector<RltXMMPoint>& motion_models() const { return motion_models_; }
-  const RltXMMPoint* active_motion_model() const {
-    return motion_model_active_ ? &motion_models_.back() : nullptr;
-  }
+  const RltXMMPoint* active_motion_model() const { return motion_model_active_ ? &motion_models_.back() : nullptr; }
   const RelativePlaneOptions& options() const { return options_; }
   // Rules 32/34: the hints held now.
   const RltTemporalHints& hints() const { return hints_; }
@@ -145,18 +143,7 @@ class RltXPointsS : private RltXPointsState {
   void upkeep_unassigned();
   void regroup_reacquired(RelativePlaneStep& result);
   void regroup_unplaced(RelativePlaneStep& result);
-  void chart_current_group();
   void end_motion_model_on_the_map();
-  void fill_chart(bool oneway_links);
-  void set_current(XPointId x);
-  // A plane in view and a group holding a duplicate of it (Rule 37).
-  struct DuplicateGroup {
-    PlaneId plane;
-    XPointId xpoint;
-  };
-  bool switch_to_group_holding_all(std::span<const DuplicateGroup> through = {});
-  std::vector<DuplicateGroup> find_duplicate_groups(const PlanarPose& world_T_robot);
-  int mend_merge_after_loop_closing(std::span<const DuplicateGroup> duplicates);
   void check_for_motion_model();
   void create_motion_model(PlaneId plane);
   void compute_xpoints(RelativePlaneStep& result);
