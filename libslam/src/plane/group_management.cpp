@@ -7,6 +7,7 @@
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
 #include "group_charting.hpp"
+#include "motion_model_control.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -58,7 +59,7 @@ void RltXPointsS::manage_xpoints(RelativePlaneStep& result) {
   if (options_.key_points && options_.rules.regroup_unplaced && !xpoints_.empty()) regroup_unplaced(result);
   if (motion_model_active_ && options_.key_points && options_.rules.return_to_visited_group &&
       options_.rules.current_group_chart)
-    end_motion_model_on_the_map();
+    end_motion_model_on_the_map(*this, assignment_, chart_);
   upkeep_unassigned();
   // Step D: the current group by charting (Rule 22); off, the group last started stays current,
   // as before Rule 22 in the thesis (4.3.5).

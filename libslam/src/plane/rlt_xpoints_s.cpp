@@ -6,6 +6,8 @@
 
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
+#include "motion_model_control.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
@@ -125,7 +127,10 @@ void RltXPointsS::get_poset() {
   registered_.clear();
   for (std::size_t i = 0; i < stamped_.size(); ++i) registered_.push_back({&stamped_[i], assignment_[i]});
   pose_ = builder_.get_poset(registered_, planes_, options_);
-  if (!pose_.valid && !motion_model_active_) check_for_motion_model();
+  if (!pose_.valid && !motion_model_active_) {
+    const PlaneId plane = check_for_motion_model(*this, assignment_, MotionModelStartOptions::of(options_));
+    if (plane != kNone) create_motion_model(*this, plane, world_T_start_, options_);
+  }
   // While a motion model is active its track is the pose (spec §5.10.3), also for Rule 11.
   if (motion_model_active_) {
     const std::optional<PlanarPose> tracked = motion_models_.back().world_T_robot(iteration_);

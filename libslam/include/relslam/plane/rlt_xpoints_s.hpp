@@ -143,9 +143,6 @@ class RltXPointsS : private RltXPointsState {
   void upkeep_unassigned();
   void regroup_reacquired(RelativePlaneStep& result);
   void regroup_unplaced(RelativePlaneStep& result);
-  void end_motion_model_on_the_map();
-  void check_for_motion_model();
-  void create_motion_model(PlaneId plane);
   void compute_xpoints(RelativePlaneStep& result);
   void get_poset();
 
