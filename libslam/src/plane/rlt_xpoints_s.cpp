@@ -7,6 +7,7 @@
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
 #include "motion_model_control.hpp"
+#include "plane_registration.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -76,7 +77,7 @@ RelativePlaneStep RltXPointsS::iterate(const PlaneFrame& frame) {
   result.iteration = frame.iteration;
   Clock::time_point t = Clock::now();
   start_iteration(frame.iteration);
-  add_planes(frame, result);
+  add_planes(*this, *this, frame, RegistrationOptions::of(options_), result);
   result.timings.add_ms = lap(t);
   manage_xpoints(result);
   result.timings.manage_ms = lap(t);

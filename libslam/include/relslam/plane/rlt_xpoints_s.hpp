@@ -73,11 +73,24 @@ struct RelativePlaneStep {
   std::span<const RollBackEvent> roll_backs;
 };
 
+// RltXPointsS's per-iteration registration scratch, as its base like RltXPointsState (so the
+// member names stay the class's own) and a value the stages can be handed: this iteration's
+// planes in view and what AddPlane did with them. Kept from one iteration to the next only to
+// avoid allocations; never restored.
+struct RltXPointsScratch {
+  std::vector<PlaneObject> stamped_;  // the frame's planes with their iteration set
+  std::vector<PlaneId> assignment_;   // the RltPlane of each, in input order
+  std::vector<char> taken_;           // per RltPlane: registered this iteration
+  std::vector<PlaneMatch> matches_;
+  std::vector<PlaneId> reacquired_now_;  // Rule 11 this iteration
+  std::vector<RegisteredObservation> registered_;
+};
+
 // Invariant: planes() and xpoints() are indexed by their ids; each RltPlane is in the
 // unassigned list or in at least one group, or was dropped from the list (then never mapped).
 // With Rules 31–34 (or rollback.force_every) the state after step() is the one a run with every
 // hint now held known from the start would have (thesis 4.3.7.2: roll back, apply, roll forward).
-class RltXPointsS : private RltXPointsState {
+class RltXPointsS : private RltXPointsState, private RltXPointsScratch {
  public:
   // world_T_start: the robot pose of the first frame, the map's anchor (Rule 4: "(0,0) or some
   // other inputted coordinate"). logic_error if check(options) finds a problem.
@@ -127,13 +140,6 @@ class RltXPointsS : private RltXPointsState {
   void roll_back(RelativePlaneStep& result);
 
   void start_iteration(int iteration);
-  void add_planes(const PlaneFrame& frame, RelativePlaneStep& result);
-  // Rule 11's pose, and whether it is of this iteration or the last (`fresh`) rather than
-  // held from longer ago while the pose was lost.
-  std::pair<PlanarPose, bool> pose_for_global_matching();
-  void register_matches(int& counter, std::vector<PlaneId>* registered = nullptr);
-  void add_to_plane(PlaneId plane, const PlaneObject& observation);
-  PlaneId create_plane(const PlaneObject& observation, int input_index);
   void manage_xpoints(RelativePlaneStep& result);
   bool bootstrap(RelativePlaneStep& result);
   bool join_group(PlaneId plane);
@@ -157,13 +163,7 @@ class RltXPointsS : private RltXPointsState {
   std::size_t step_log_begin_ = 0;  // this step's part of roll_back_log_
 
   // Per-iteration scratch, kept to avoid allocations.
-  std::vector<PlaneObject> stamped_;  // the frame's planes with their iteration set
-  std::vector<PlaneId> assignment_;
-  std::vector<char> taken_;  // per RltPlane: registered this iteration
-  std::vector<PlaneMatch> matches_;
-  std::vector<PlaneId> reacquired_now_;  // Rule 11 this iteration
-  std::vector<int> chart_;               // Rule 22: planes in view per group
-  std::vector<RegisteredObservation> registered_;
+  std::vector<int> chart_;  // Rule 22: planes in view per group
   std::vector<char> visited_;
   std::vector<XPointId> stack_;
   std::vector<PlaneId> candidates_;
