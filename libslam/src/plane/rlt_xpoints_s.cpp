@@ -6,6 +6,7 @@
 
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
+#include "group_management.hpp"
 #include "motion_model_control.hpp"
 #include "plane_registration.hpp"
 
@@ -79,7 +80,7 @@ RelativePlaneStep RltXPointsS::iterate(const PlaneFrame& frame) {
   start_iteration(frame.iteration);
   add_planes(*this, *this, frame, RegistrationOptions::of(options_), result);
   result.timings.add_ms = lap(t);
-  manage_xpoints(result);
+  GroupManagement(*this, *this, hints_, GroupingOptions::of(options_)).manage_xpoints(result);
   result.timings.manage_ms = lap(t);
   compute_xpoints(result);
   result.timings.compute_ms = lap(t);

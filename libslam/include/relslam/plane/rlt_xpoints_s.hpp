@@ -73,10 +73,10 @@ struct RelativePlaneStep {
   std::span<const RollBackEvent> roll_backs;
 };
 
-// RltXPointsS's per-iteration registration scratch, as its base like RltXPointsState (so the
-// member names stay the class's own) and a value the stages can be handed: this iteration's
-// planes in view and what AddPlane did with them. Kept from one iteration to the next only to
-// avoid allocations; never restored.
+// RltXPointsS's per-iteration scratch, as its base like RltXPointsState (so the member names
+// stay the class's own) and a value the stages can be handed: this iteration's planes in view
+// and what AddPlane did with them, and ManageXPoints's working buffers. Kept from one iteration
+// to the next only to avoid allocations; never restored.
 struct RltXPointsScratch {
   std::vector<PlaneObject> stamped_;  // the frame's planes with their iteration set
   std::vector<PlaneId> assignment_;   // the RltPlane of each, in input order
@@ -84,6 +84,12 @@ struct RltXPointsScratch {
   std::vector<PlaneMatch> matches_;
   std::vector<PlaneId> reacquired_now_;  // Rule 11 this iteration
   std::vector<RegisteredObservation> registered_;
+  // ManageXPoints's.
+  std::vector<int> chart_;  // Rule 22: planes in view per group
+  std::vector<char> visited_;
+  std::vector<XPointId> stack_;
+  std::vector<PlaneId> candidates_;
+  RltPlaneInterval scratch_interval_;
 };
 
 // Invariant: planes() and xpoints() are indexed by their ids; each RltPlane is in the
@@ -111,7 +117,7 @@ class RltXPointsS : private RltXPointsState, private RltXPointsScratch {
   // hint's iteration at the end of the next step(), as when CheckIntervalSize sends one.
   void send_hint(const RltTemporalHint& hint);
   // The plane a hint names (spec §5.11.2).
-  PlaneIdentity identity(PlaneId plane) const { return {planes_[plane].created_iteration(), plane_inputs_[plane]}; }
+  using RltXPointsState::identity;
 
   const std::vector<RltPlane>& planes() const { return planes_; }
   const std::vector<RltXPoint>& xpoints() const { return xpoints_; }
@@ -134,21 +140,11 @@ class RltXPointsS : private RltXPointsState, private RltXPointsScratch {
  private:
   bool keeps_history() const { return options_.rules.interval_check || options_.rollback.force_every > 0; }
   RelativePlaneStep iterate(const PlaneFrame& frame);
-  bool may_join(PlaneId plane, XPointId x) const { return hints_.may_join(identity(plane), iteration_, x); }
   void check_interval_sizes(const RltXPoint& x, RelativePlaneStep& result);
   void set_roll_back_to(const RollBackEvent& request);
   void roll_back(RelativePlaneStep& result);
 
   void start_iteration(int iteration);
-  void manage_xpoints(RelativePlaneStep& result);
-  bool bootstrap(RelativePlaneStep& result);
-  bool join_group(PlaneId plane);
-  bool make_new_xpoint(PlaneId plane, RelativePlaneStep& result);
-  bool link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<PlaneId>& linking);
-  XPointId create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking, PlaneId founder);
-  void upkeep_unassigned();
-  void regroup_reacquired(RelativePlaneStep& result);
-  void regroup_unplaced(RelativePlaneStep& result);
   void compute_xpoints(RelativePlaneStep& result);
   void get_poset();
 
@@ -163,11 +159,6 @@ class RltXPointsS : private RltXPointsState, private RltXPointsScratch {
   std::size_t step_log_begin_ = 0;  // this step's part of roll_back_log_
 
   // Per-iteration scratch, kept to avoid allocations.
-  std::vector<int> chart_;  // Rule 22: planes in view per group
-  std::vector<char> visited_;
-  std::vector<XPointId> stack_;
-  std::vector<PlaneId> candidates_;
-  RltPlaneInterval scratch_interval_;
   std::vector<PlaneId> failed_;  // CheckIntervalSize's planes
 };
 
