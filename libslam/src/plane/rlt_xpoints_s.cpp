@@ -2,7 +2,10 @@
 // AddPlane, ManageXPoints, ComputeXPoints, BuildMap, GetPoset and RollBack, in that order. The
 // stages live in their own files: plane_registration.cpp (Rules 1, 10, 11), group_management.cpp
 // (Rules 7–9, 12, 21), group_charting.cpp (Rules 22, 29, 37), motion_model_control.cpp (Rules
-// 23–27) and roll_back_control.cpp (Rules 31–34).
+// 23–27) and roll_back_control.cpp (Rules 31–34). The first four are free functions or a small
+// class on RltXPointsState and the per-iteration RltXPointsScratch, each taking the narrowest
+// options view it needs; roll-back control stays with the class, as it restores the whole state
+// and replays iterate().
 
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
