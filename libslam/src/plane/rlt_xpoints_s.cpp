@@ -12,6 +12,7 @@
 #include "group_management.hpp"
 #include "motion_model_control.hpp"
 #include "plane_registration.hpp"
+#include "roll_back_control.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -55,7 +56,8 @@ RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
   }
   RelativePlaneStep result = iterate(frame);
   if (rb.force_every > 0 && frame.iteration > 0 && frame.iteration % rb.force_every == 0)
-    set_roll_back_to({.iteration_requested = frame.iteration, .target_iteration = frame.iteration - rb.force_depth});
+    set_roll_back_to(roll_back_request_,
+                     {.iteration_requested = frame.iteration, .target_iteration = frame.iteration - rb.force_depth});
   // Walkthrough 4.5: RollBack is called last, after GetPoset.
   if (roll_back_request_) roll_back(result);
   if (keeps_history()) {
@@ -115,7 +117,9 @@ void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
     if (x.needs_compute() && !x.motion_model()) {
       if (reorder) x.reorder_if_due(planes_, options_, iteration_);  // Rule 30 (spec §5.7.1)
       x.compute(planes_, options_);
-      if (options_.rules.interval_check) check_interval_sizes(x, result);  // Rules 31, 32 (walkthrough 4.5)
+      if (options_.rules.interval_check)  // Rules 31, 32 (walkthrough 4.5)
+        result.roll_back.hints +=
+            check_interval_sizes(*this, x, options_.rollback, hints_, failed_, roll_back_request_);
       ++result.groups_computed;
     }
   // A motion model re-runs its track over its plane's observations (spec §5.10.3).

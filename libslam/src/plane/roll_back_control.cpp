@@ -5,13 +5,14 @@
 
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
+#include "roll_back_control.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
 
 namespace relslam::plane {
-
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -19,7 +20,7 @@ using Clock = std::chrono::steady_clock;
 }  // namespace
 
 void RltXPointsS::request_roll_back(int target) {
-  set_roll_back_to({.iteration_requested = iteration_, .target_iteration = target});
+  set_roll_back_to(roll_back_request_, {.iteration_requested = iteration_, .target_iteration = target});
 }
 
 void RltXPointsS::send_hint(const RltTemporalHint& hint) {
@@ -27,33 +28,35 @@ void RltXPointsS::send_hint(const RltTemporalHint& hint) {
   PlaneId plane = kNone;
   for (PlaneId p = 0; p < static_cast<PlaneId>(planes_.size()) && plane == kNone; ++p)
     if (identity(p) == hint.plane) plane = p;
-  set_roll_back_to({iteration_, hint.iteration, plane, hint.xpoint, static_cast<int>(hint.level)});
+  set_roll_back_to(roll_back_request_, {iteration_, hint.iteration, plane, hint.xpoint, static_cast<int>(hint.level)});
 }
 
-void RltXPointsS::set_roll_back_to(const RollBackEvent& request) {
+void set_roll_back_to(std::optional<RollBackEvent>& pending, const RollBackEvent& request) {
   // SetRollBackTo: several requests in one iteration roll back once, to the earliest target.
-  if (!roll_back_request_ || request.target_iteration < roll_back_request_->target_iteration)
-    roll_back_request_ = request;
+  if (!pending || request.target_iteration < pending->target_iteration) pending = request;
 }
 
-void RltXPointsS::check_interval_sizes(const RltXPoint& x, RelativePlaneStep& result) {
-  failed_.clear();
-  x.check_interval_size(planes_, options_.rollback, iteration_, failed_);
-  for (PlaneId p : failed_) {
-    RltXPointRef& ref = *planes_[p].ref(x.id());
+int check_interval_sizes(RltXPointsState& s, const RltXPoint& x, const RollBackOptions& options,
+                         RltTemporalHints& hints, std::vector<PlaneId>& failed, std::optional<RollBackEvent>& pending) {
+  int sent = 0;
+  failed.clear();
+  x.check_interval_size(s.planes_, options, s.iteration_, failed);
+  for (PlaneId p : failed) {
+    RltXPointRef& ref = *s.planes_[p].ref(x.id());
     ref.hinted = true;
-    const PlaneIdentity id = identity(p);
+    const PlaneIdentity id = s.identity(p);
     // Rule 32: the next level for this plane. Thesis 4.5 (CheckIntervalSize): a plane that
     // started the group it fails in "should not be added to any RltXPoint" — its own new group
     // was the second try, and the replay would only make the same group again.
-    const int level = founders_[x.id()] == p
+    const int level = s.founders_[x.id()] == p
                           ? static_cast<int>(HintLevel::NotOnMap)
-                          : std::min(hints_.count_for(id) + 1, static_cast<int>(HintLevel::NotOnMap));
-    hints_.add({static_cast<HintLevel>(level), id, ref.join_iteration, x.id()});
-    ++result.roll_back.hints;
+                          : std::min(hints.count_for(id) + 1, static_cast<int>(HintLevel::NotOnMap));
+    hints.add({static_cast<HintLevel>(level), id, ref.join_iteration, x.id()});
+    ++sent;
     // Rule 34: back to when the plane joined, so the hint can act there.
-    set_roll_back_to({iteration_, ref.join_iteration, p, x.id(), level});
+    set_roll_back_to(pending, {s.iteration_, ref.join_iteration, p, x.id(), level});
   }
+  return sent;
 }
 
 void RltXPointsS::roll_back(RelativePlaneStep& result) {

@@ -140,8 +140,6 @@ class RltXPointsS : private RltXPointsState, private RltXPointsScratch {
  private:
   bool keeps_history() const { return options_.rules.interval_check || options_.rollback.force_every > 0; }
   RelativePlaneStep iterate(const PlaneFrame& frame);
-  void check_interval_sizes(const RltXPoint& x, RelativePlaneStep& result);
-  void set_roll_back_to(const RollBackEvent& request);
   void roll_back(RelativePlaneStep& result);
 
   void start_iteration(int iteration);
