@@ -21,18 +21,6 @@ void stored_observations_in(const RltPlane& plane, const RltPlaneInterval& withi
     if (within.in_interval(plane[i].iteration)) out.push_back(plane[i]);
 }
 
-// A plane's canonical size in the group (spec §5.7.2, A18): the largest length any of its chain
-// edges saw it at, and the key point of that edge.
-struct Canonical {
-  bool valid = false;
-  double length = 0;
-  KeyPoint key_point = KeyPoint::None;
-  bool is_static = false;  // static in the edge that gave `length`
-  RltInterval interval;
-  int samples = 0;
-  double height = 0;
-};
-
 // One side of one edge: the plane's length, key point and static flag as that edge saw it.
 struct EdgeSide {
   double length;
@@ -47,6 +35,18 @@ EdgeSide side(const CompareResult& edge, bool first) {
 }
 
 }  // namespace
+
+// A plane's canonical size in the group (spec §5.7.2, A18): the largest length any of its chain
+// edges saw it at, and the key point of that edge.
+struct RltXPoint::Canonical {
+  bool valid = false;
+  double length = 0;
+  KeyPoint key_point = KeyPoint::None;
+  bool is_static = false;  // static in the edge that gave `length`
+  RltInterval interval;
+  int samples = 0;
+  double height = 0;
+};
 
 RltXPoint::RltXPoint(XPointId id, int created_iteration, std::vector<PlaneId> chain)
     : id_(id), created_iteration_(created_iteration), chain_(std::move(chain)) {}
@@ -90,13 +90,12 @@ const RltPlaneInterval* RltXPoint::comparison_window(const std::vector<RltPlane>
   return &scratch_common_;
 }
 
-bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
-                               int iteration) {
+bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration) {
   const int n = static_cast<int>(chain_.size());
   if (n < 3 || motion_model()) return false;  // two planes have one edge either way
-  const bool periodic = options.rules.reorder_planes &&
-                        (last_reorder_ < 0 ? iteration - created_iteration_ >= options.reorder.first_age
-                                           : iteration - last_reorder_ >= options.reorder.period);
+  const bool periodic =
+      options.rules.reorder_planes && (last_reorder_ < 0 ? iteration - created_iteration_ >= options.reorder.first_age
+                                                         : iteration - last_reorder_ >= options.reorder.period);
   const bool broken = options.rules.reorder_broken_chains && !placed() &&
                       (last_reorder_ < 0 || iteration - last_reorder_ >= options.reorder.broken_gap) &&
                       edges_.size() + 1 == chain_.size() &&
@@ -111,8 +110,8 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlan
   std::vector<std::vector<int>> weight(n, std::vector<int>(n, -1));
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
-      const CompareResult r = compare_with_key_points(observations(planes, i, within), observations(planes, j, within),
-                                                      options);
+      const CompareResult r =
+          compare_with_key_points(observations(planes, i, within), observations(planes, j, within), options);
       weight[i][j] = weight[j][i] = places_both(r) ? r.samples : -1;
     }
   const std::optional<std::vector<int>> path = best_comparison_path(weight, options.reorder.exact_max_planes);
@@ -213,7 +212,7 @@ void RltXPoint::check_interval_size(std::vector<RltPlane>& planes, const RollBac
 }
 
 ObservationView RltXPoint::observations(const std::vector<RltPlane>& planes, std::size_t k,
-                                       const RltPlaneInterval* within) {
+                                        const RltPlaneInterval* within) {
   if (within == nullptr) return planes[chain_[k]].view();
   if (!observations_filled_[k]) {
     stored_observations_in(planes[chain_[k]], *within, scratch_observations_[k]);
@@ -270,17 +269,24 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
   scratch_observations_.resize(n);
   observations_filled_.assign(n, 0);
   pair_comparisons_.resize(n - 1);
+  compare_edges(planes, options, within);
+  chain_with_size_correction(planes, options, within, canonical_sizes(planes, options, within));
+  if (options.rules.save_snapshot) keep_or_restore_snapshot(planes, options);
+}
+
+void RltXPoint::compare_edges(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                              const RltPlaneInterval* within) {
   // Each edge by ComparePlanes with key points: one growth phase (Rule 18), the pair of assumed
   // midpoints with the lowest σ (Rules 13–15); an edge whose common observations did not change
   // keeps its result (IntervalMode::Group narrows them by the whole group: always recomputed).
-  for (std::size_t k = 1; k < n; ++k) {
+  for (std::size_t k = 1; k < chain_.size(); ++k) {
     if (within == nullptr) {
       const CompareResult* r = pair_comparisons_[k - 1].update(planes[chain_[k - 1]], planes[chain_[k]], options);
       if (r == nullptr) continue;
       edges_[k - 1] = *r;
     } else {
-      edges_[k - 1] = compare_with_key_points(observations(planes, k - 1, within), observations(planes, k, within),
-                                              options);
+      edges_[k - 1] =
+          compare_with_key_points(observations(planes, k - 1, within), observations(planes, k, within), options);
     }
     // Rule 36 (DoBackupCheck, spec §5.7.1, §5.12): the pair's best result so far when it beats
     // this one; so a plane whose shared iterations the circular array overwrote stays placed
@@ -288,20 +294,27 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
     if (options.rules.save_reserve)
       do_backup_check(*planes[chain_[k]].ref(id_), chain_[k - 1], edges_[k - 1], options.same_length);
   }
+}
 
+KeyPoint RltXPoint::key_point_in(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                                 const RltPlaneInterval* within, std::size_t k, int iteration) {
+  // Plane k's key point in the growth phase holding `iteration`, from the group's other planes
+  // (Rule 19: a key point is valid only in the interval it was computed on).
+  if (!options.rules.missing_key_points) return KeyPoint::None;  // Rule 19 off
+  std::vector<ObservationView> others;
+  for (std::size_t o = 0; o < chain_.size(); ++o)
+    if (o != k) others.push_back(observations(planes, o, within));
+  const auto missing = calculate_missing_key_points(observations(planes, k, within), others, iteration, options);
+  return missing ? missing->key_point : KeyPoint::None;
+}
+
+std::vector<RltXPoint::Canonical> RltXPoint::canonical_sizes(const std::vector<RltPlane>& planes,
+                                                             const RelativePlaneOptions& options,
+                                                             const RltPlaneInterval* within) {
   // Canonical size and key point of each plane (spec §5.7.2, A18): the largest length among
   // the edges touching it, with that edge's key point; the other edge's key point when that
   // one could not tell, and Rule 19 when neither could.
-  // Plane k's key point in the growth phase holding `iteration`, from the group's other planes
-  // (Rule 19: a key point is valid only in the interval it was computed on).
-  const auto key_point_in = [&](std::size_t k, int iteration) {
-    if (!options.rules.missing_key_points) return KeyPoint::None;  // Rule 19 off
-    std::vector<ObservationView> others;
-    for (std::size_t o = 0; o < n; ++o)
-      if (o != k) others.push_back(observations(planes, o, within));
-    const auto missing = calculate_missing_key_points(observations(planes, k, within), others, iteration, options);
-    return missing ? missing->key_point : KeyPoint::None;
-  };
+  const std::size_t n = chain_.size();
   std::vector<Canonical> canonical(n);
   for (std::size_t k = 0; k < n; ++k) {
     Canonical& c = canonical[k];
@@ -316,14 +329,20 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
     if (c.valid && c.key_point == KeyPoint::None) c.key_point = fallback;
     // Rule 19 (CalculateMissingKeyPoints, spec §5.7.4): against every other plane of the group,
     // forced into the plane's own interval.
-    if (c.valid && c.key_point == KeyPoint::None && !c.is_static) c.key_point = key_point_in(k, c.interval.end);
+    if (c.valid && c.key_point == KeyPoint::None && !c.is_static)
+      c.key_point = key_point_in(planes, options, within, k, c.interval.end);
   }
+  return canonical;
+}
 
+void RltXPoint::chain_with_size_correction(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                                           const RltPlaneInterval* within, const std::vector<Canonical>& canonical) {
   // Chaining with size correction (Rules 2, 6, 28; spec §5.7.2): each edge's offset joins the
   // two planes' reference points at the sizes that edge saw; the parent's canonical point is
   // moved to its edge size first and the child's edge point to its canonical size after, each
   // on the key point the edge anchored it at (the canonical one when the edge had none: the
   // plane was static there, or the pair was ambiguous).
+  const std::size_t n = chain_.size();
   RltXPointRef* parent = planes[chain_.front()].ref(id_);
   const auto fill = [&](RltXPointRef* ref, const Canonical& c) {
     ref->interval = c.interval;
@@ -357,7 +376,8 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
         const PlanarPose& d22 = edge.pair_delta[1][1];
         const bool diagonals_agree = (d11.translation - d22.translation).norm() <= options.same_length &&
                                      std::abs(wrap_angle(d11.heading - d22.heading)) <= options.same_length;
-        const KeyPoint kp1 = key_point_in(k - 1, edge.interval.end), kp2 = key_point_in(k, edge.interval.end);
+        const KeyPoint kp1 = key_point_in(planes, options, within, k - 1, edge.interval.end);
+        const KeyPoint kp2 = key_point_in(planes, options, within, k, edge.interval.end);
         if (kp1 != KeyPoint::None && kp2 != KeyPoint::None) {
           kp_parent = kp1;
           kp_child = kp2;
@@ -382,7 +402,6 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
     }
     parent = child;
   }
-  if (options.rules.save_snapshot) keep_or_restore_snapshot(planes, options);
 }
 
 }  // namespace relslam::plane

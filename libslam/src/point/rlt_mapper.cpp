@@ -75,29 +75,7 @@ StepResult RltMapper::step(const ObservationFrame& frame, const std::vector<std:
   result.timings.init_ms = ms_since(clock);
 
   // [load] Local, then global matching, then new RltPoints (thesis 6.2.5).
-  const MatchResult& match = matcher_.match(frame.points, k, *map_.global_index, map_.points, pose_);
-  result.assignment = match.assigned;
-  result.local_matches = match.local;
-  result.global_matches = match.global;
-  for (const auto& [observation, id] : forced_matches) {
-    if (observation < 0 || static_cast<std::size_t>(observation) >= result.assignment.size() || id < 0 ||
-        static_cast<std::size_t>(id) >= map_.points.size())
-      throw std::logic_error("RltMapper::step: forced match out of range at iteration " + std::to_string(k));
-    result.assignment[observation] = id;
-    ++result.global_matches;
-  }
-  bool loop_closed = false;
-  for (std::size_t i = 0; i < frame.points.size(); ++i) {
-    PointId& id = result.assignment[i];
-    if (id != kNone && k - map_.points[id].last_iteration() >= options_.relaxation_loop_gap) loop_closed = true;
-    const bool returned = id != kNone && map_.points[id].last_iteration() < k - options_.match_look_back;
-    if (id == kNone) {
-      id = create_point(frame.points[i], k);
-      ++result.new_points;
-    } else {
-      record(id, frame.points[i], k, returned);
-    }
-  }
+  const bool loop_closed = load(frame, forced_matches, result);
   result.timings.load_ms = ms_since(clock);
 
   // [merge] New points that turned out to be old ones (thesis 6.5.2).
@@ -121,20 +99,7 @@ StepResult RltMapper::step(const ObservationFrame& frame, const std::vector<std:
   // [relax] Beyond the thesis (issue 19): all group-to-world transforms at once. A loop closure
   // schedules the solve once the groups tying the re-found points to the new ones exist (the
   // final level's look-ahead later); further closures wait for it.
-  if (options_.global_relaxation == GlobalRelaxation::OnLoopClosure) {
-    if (loop_closed && relax_at_ == kNone) {
-      const GroupLevelOptions& level = options_.final_group.enabled ? options_.final_group : options_.temporary_group;
-      relax_at_ = std::max(k + level.look_ahead + 1, next_relax_);
-    }
-    if (relax_at_ != kNone && k >= relax_at_) {
-      relax(result);
-      // The next closure is relaxed no sooner than relaxation_period from now.
-      relax_at_ = kNone;
-      next_relax_ = k + options_.relaxation_period;
-    }
-  } else if (options_.global_relaxation == GlobalRelaxation::Periodic) {
-    if (k > map_.first_iteration && (k - map_.first_iteration) % options_.relaxation_period == 0) relax(result);
-  }
+  schedule_relaxation(k, loop_closed, result);
   result.timings.relax_ms = ms_since(clock);
 
   // [pose] Current position (thesis 6.1): used for the next global matching and for metrics.
@@ -207,6 +172,52 @@ void RltMapper::record(PointId id, const Eigen::Vector3d& p, int k, bool returne
   }
 }
 
+bool RltMapper::load(const ObservationFrame& frame, const std::vector<std::pair<int, PointId>>& forced_matches,
+                     StepResult& result) {
+  const int k = frame.iteration;
+  const MatchResult& match = matcher_.match(frame.points, k, *map_.global_index, map_.points, pose_);
+  result.assignment = match.assigned;
+  result.local_matches = match.local;
+  result.global_matches = match.global;
+  for (const auto& [observation, id] : forced_matches) {
+    if (observation < 0 || static_cast<std::size_t>(observation) >= result.assignment.size() || id < 0 ||
+        static_cast<std::size_t>(id) >= map_.points.size())
+      throw std::logic_error("RltMapper::step: forced match out of range at iteration " + std::to_string(k));
+    result.assignment[observation] = id;
+    ++result.global_matches;
+  }
+  bool loop_closed = false;
+  for (std::size_t i = 0; i < frame.points.size(); ++i) {
+    PointId& id = result.assignment[i];
+    if (id != kNone && k - map_.points[id].last_iteration() >= options_.relaxation_loop_gap) loop_closed = true;
+    const bool returned = id != kNone && map_.points[id].last_iteration() < k - options_.match_look_back;
+    if (id == kNone) {
+      id = create_point(frame.points[i], k);
+      ++result.new_points;
+    } else {
+      record(id, frame.points[i], k, returned);
+    }
+  }
+  return loop_closed;
+}
+
+void RltMapper::schedule_relaxation(int k, bool loop_closed, StepResult& result) {
+  if (options_.global_relaxation == GlobalRelaxation::OnLoopClosure) {
+    if (loop_closed && relax_at_ == kNone) {
+      const GroupLevelOptions& level = options_.final_group.enabled ? options_.final_group : options_.temporary_group;
+      relax_at_ = std::max(k + level.look_ahead + 1, next_relax_);
+    }
+    if (relax_at_ != kNone && k >= relax_at_) {
+      relax(result);
+      // The next closure is relaxed no sooner than relaxation_period from now.
+      relax_at_ = kNone;
+      next_relax_ = k + options_.relaxation_period;
+    }
+  } else if (options_.global_relaxation == GlobalRelaxation::Periodic) {
+    if (k > map_.first_iteration && (k - map_.first_iteration) % options_.relaxation_period == 0) relax(result);
+  }
+}
+
 void RltMapper::compute_groups(int k) {
   // Oldest group first, so anchors are refreshed before the groups that build on them (spec 5.5).
   std::sort(queued_groups_.begin(), queued_groups_.end());
@@ -268,7 +279,8 @@ void RltMapper::move_map_frame(int k) {
     RltPoint& p = map_.points[id];
     if (p.dynamic || p.merged) continue;
     p.first_observation = *p.observations.at(k);
-    for (GroupLevel level : {GroupLevel::Temporary, GroupLevel::Final}) wait_for_group(map_, id, level, k, options_, true);
+    for (GroupLevel level : {GroupLevel::Temporary, GroupLevel::Final})
+      wait_for_group(map_, id, level, k, options_, true);
   }
 }
 
@@ -290,94 +302,11 @@ bool RltMapper::implausible(const Rigid3& registered, const Eigen::Matrix3d& pre
 void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   const int k = frame.iteration;
   const std::vector<PointId>& seen = map_.charting.at(k);
-  // With use_odometry, where this frame's dead reckoning puts the robot (the latest pose moved by it).
-  std::optional<Rigid3> dead_reckoned;
-  if (options_.use_odometry && frame.odometry && pose_iteration_ == k - 1) dead_reckoned = pose_ * *frame.odometry;
-  // The rotation the robot has now: dead-reckoned, or if it turned on at the measured rate
-  // (adaptive; otherwise the latest rotation).
-  const Eigen::Matrix3d predicted =
-      dead_reckoned ? dead_reckoned->rotation : Eigen::Matrix3d(pose_.rotation * turn_rate_.turn(pose_iteration_, k));
+  const PosePrediction prediction = predict_pose(frame);
   bool rejected = false;
-  auto register_to = [&](bool provisional) -> std::optional<Rigid3> {
-    std::vector<Eigen::Vector3d>&robot = robot_scratch_, &world = world_scratch_;
-    robot.clear();
-    world.clear();
-    for (PointId id : seen) {
-      const RltPoint& p = map_.points[id];
-      if (p.dynamic || p.merged) continue;
-      if (p.has_global) {
-        robot.push_back(p.observations.latest().p);
-        world.push_back(p.global);
-      } else if (provisional && p.has_provisional) {
-        robot.push_back(p.observations.latest().p);
-        world.push_back(p.provisional);
-      }
-    }
-    auto registered = rlt_icp(robot, world);
-    // Deviation (adaptive, issue 16; use_odometry, issue 19): a registration that turns the robot
-    // further from the predicted rotation than max_turn_deg, or strays from the dead-reckoned
-    // pose, is a mismatch, not a motion (implausible).
-    if (registered && implausible(*registered, predicted, dead_reckoned)) {
-      registered.reset();
-      rejected = true;
-    }
-    return registered;
-  };
-  // Deviation (adaptive, provisional_rotation_weight): the chain through provisional positions
-  // takes only part of each registration's rotation, the rest from the turn-rate prediction, and
-  // its position from the pairs (left in the scratch buffers by register_to) at their centroid.
-  auto weighed = [&](const Rigid3& registered) {
-    return register_centroids(robot_scratch_, world_scratch_,
-                              interpolate_rotation(predicted, registered.rotation,
-                                                   options_.provisional_rotation_weight));
-  };
-  auto mapped_pose = register_to(false);
-  // Fewer than three mapped pairs (adaptive preset): the one or two register_to(false) found.
-  const std::size_t mapped_pairs = robot_scratch_.size();
-  std::array<Eigen::Vector3d, 2> mapped_robot, mapped_world;
-  for (std::size_t i = 0; i < std::min<std::size_t>(mapped_pairs, 2); ++i) {
-    mapped_robot[i] = robot_scratch_[i];
-    mapped_world[i] = world_scratch_[i];
-  }
-  std::optional<Rigid3> pose;
-
-  if (k == map_.first_iteration) {
-    pose_ = Rigid3::identity();
-    result.pose_source = PoseSource::Start;
-  } else if (mapped_pose) {
-    pose_ = *mapped_pose;
-    result.pose_source = PoseSource::MappedPoints;
-  } else if (!dead_reckoned && mapped_pairs == 2 &&
-             (pose = map_.pose_from_two_points(mapped_robot[0], mapped_robot[1], mapped_world[0], mapped_world[1]))) {
-    pose_ = *pose;
-    result.pose_source = PoseSource::TwoPoints;
-  } else if (options_.pose_from_unmapped && (pose = register_to(true))) {
-    pose_ = average_provisional_on(options_) ? weighed(*pose) : *pose;
-    result.pose_source = PoseSource::UnmappedPoints;
-  } else if (dead_reckoned) {
-    // Fewer than three points to register (use_odometry): dead reckoning rather than a pose from
-    // one or two points.
-    pose_ = *dead_reckoned;
-    result.pose_source = PoseSource::Odometry;
-  } else if (average_provisional_on(options_) && robot_scratch_.size() == 2 &&
-             (pose = register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1],
-                                         pose_.rotation, pose_.rotation.col(1), map_.max_line_sine()))) {
-    // register_to(true) left its two pairs (mapped or provisional) in the scratch buffers.
-    pose_ = weighed(*pose);
-    result.pose_source = PoseSource::TwoUnmappedPoints;
-  } else if (mapped_pairs >= 1 && (pose = map_.pose_from_one_point(mapped_robot[0], mapped_world[0], turn_rate_, k))) {
-    pose_ = *pose;
-    result.pose_source = PoseSource::OnePoint;
-  } else if (average_provisional_on(options_) && !robot_scratch_.empty()) {
-    // One pair, two on a line too steep for two-point registration, or a rejected registration.
-    // The rotation turns on at the measured rate (turn_rate_window; none: the latest rotation);
-    // the position from the pairs' centroid (one pair: that pair; a rejected registration's
-    // swapped pair leaves it where it was).
-    pose_ = register_centroids(robot_scratch_, world_scratch_, predicted);
-    result.pose_source = PoseSource::OneUnmappedPoint;
-  } else {
-    result.pose_source = PoseSource::Held;
-  }
+  MappedPairs mapped;
+  const std::optional<PoseSource> registered_source = register_pose(k, seen, prediction, mapped, rejected);
+  result.pose_source = registered_source ? *registered_source : provisional_fallback(k, prediction, mapped);
   result.world_T_robot = pose_;
   pose_iteration_ = k;
   // The poses whose registration fixed the rotation measure the turn rate.
@@ -386,22 +315,131 @@ void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   rejected_turns_ = rejected && !registered ? rejected_turns_ + 1 : 0;
   pose_from_map_ = from_map(result.pose_source);
   if (pose_from_map_) map_.record_map_pose(k, pose_);
+  if (options_.match_unmapped || options_.pose_from_unmapped) place_provisional(seen);
+}
 
-  // Provisional positions of the unmapped points seen now (Deviation, see options).
-  if (options_.match_unmapped || options_.pose_from_unmapped)
-    for (PointId id : seen) {
-      RltPoint& p = map_.points[id];
-      if (p.has_global || p.dynamic || p.merged) continue;
-      const Eigen::Vector3d placed = pose_ * p.observations.latest().p;
-      if (average_provisional_on(options_) && p.has_provisional) {
-        p.provisional += (placed - p.provisional) / ++p.provisional_placements;  // the running mean
-      } else {
-        p.provisional = placed;
-        p.provisional_placements = 1;
-      }
-      p.has_provisional = true;
-      if (options_.match_unmapped) map_.global_index->place(id, p.provisional);
+RltMapper::PosePrediction RltMapper::predict_pose(const ObservationFrame& frame) const {
+  const int k = frame.iteration;
+  // With use_odometry, where this frame's dead reckoning puts the robot (the latest pose moved by it).
+  std::optional<Rigid3> dead_reckoned;
+  if (options_.use_odometry && frame.odometry && pose_iteration_ == k - 1) dead_reckoned = pose_ * *frame.odometry;
+  // The rotation the robot has now: dead-reckoned, or if it turned on at the measured rate
+  // (adaptive; otherwise the latest rotation).
+  const Eigen::Matrix3d predicted =
+      dead_reckoned ? dead_reckoned->rotation : Eigen::Matrix3d(pose_.rotation * turn_rate_.turn(pose_iteration_, k));
+  return {dead_reckoned, predicted};
+}
+
+std::optional<Rigid3> RltMapper::register_seen(const std::vector<PointId>& seen, bool provisional,
+                                               const PosePrediction& prediction, bool& rejected) {
+  std::vector<Eigen::Vector3d>&robot = robot_scratch_, &world = world_scratch_;
+  robot.clear();
+  world.clear();
+  for (PointId id : seen) {
+    const RltPoint& p = map_.points[id];
+    if (p.dynamic || p.merged) continue;
+    if (p.has_global) {
+      robot.push_back(p.observations.latest().p);
+      world.push_back(p.global);
+    } else if (provisional && p.has_provisional) {
+      robot.push_back(p.observations.latest().p);
+      world.push_back(p.provisional);
     }
+  }
+  auto registered = rlt_icp(robot, world);
+  // Deviation (adaptive, issue 16; use_odometry, issue 19): a registration that turns the robot
+  // further from the predicted rotation than max_turn_deg, or strays from the dead-reckoned
+  // pose, is a mismatch, not a motion (implausible).
+  if (registered && implausible(*registered, prediction.rotation, prediction.dead_reckoned)) {
+    registered.reset();
+    rejected = true;
+  }
+  return registered;
+}
+
+Rigid3 RltMapper::weigh_provisional(const Rigid3& registered, const Eigen::Matrix3d& predicted) const {
+  // Deviation (adaptive, provisional_rotation_weight): the chain through provisional positions
+  // takes only part of each registration's rotation, the rest from the turn-rate prediction, and
+  // its position from the pairs (left in the scratch buffers by register_seen) at their centroid.
+  return register_centroids(robot_scratch_, world_scratch_,
+                            interpolate_rotation(predicted, registered.rotation, options_.provisional_rotation_weight));
+}
+
+std::optional<PoseSource> RltMapper::register_pose(int k, const std::vector<PointId>& seen,
+                                                   const PosePrediction& prediction, MappedPairs& mapped,
+                                                   bool& rejected) {
+  const std::optional<Rigid3> mapped_pose = register_seen(seen, false, prediction, rejected);
+  // Fewer than three mapped pairs (adaptive preset): the one or two register_seen(false) found.
+  mapped.count = robot_scratch_.size();
+  for (std::size_t i = 0; i < std::min<std::size_t>(mapped.count, 2); ++i) {
+    mapped.robot[i] = robot_scratch_[i];
+    mapped.world[i] = world_scratch_[i];
+  }
+  std::optional<Rigid3> pose;
+  if (k == map_.first_iteration) {
+    pose_ = Rigid3::identity();
+    return PoseSource::Start;
+  }
+  if (mapped_pose) {
+    pose_ = *mapped_pose;
+    return PoseSource::MappedPoints;
+  }
+  if (!prediction.dead_reckoned && mapped.count == 2 &&
+      (pose = map_.pose_from_two_points(mapped.robot[0], mapped.robot[1], mapped.world[0], mapped.world[1]))) {
+    pose_ = *pose;
+    return PoseSource::TwoPoints;
+  }
+  if (options_.pose_from_unmapped && (pose = register_seen(seen, true, prediction, rejected))) {
+    pose_ = average_provisional_on(options_) ? weigh_provisional(*pose, prediction.rotation) : *pose;
+    return PoseSource::UnmappedPoints;
+  }
+  if (prediction.dead_reckoned) {
+    // Fewer than three points to register (use_odometry): dead reckoning rather than a pose from
+    // one or two points.
+    pose_ = *prediction.dead_reckoned;
+    return PoseSource::Odometry;
+  }
+  return std::nullopt;
+}
+
+PoseSource RltMapper::provisional_fallback(int k, const PosePrediction& prediction, const MappedPairs& mapped) {
+  std::optional<Rigid3> pose;
+  if (average_provisional_on(options_) && robot_scratch_.size() == 2 &&
+      (pose = register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1],
+                                  pose_.rotation, pose_.rotation.col(1), map_.max_line_sine()))) {
+    // register_seen(true) left its two pairs (mapped or provisional) in the scratch buffers.
+    pose_ = weigh_provisional(*pose, prediction.rotation);
+    return PoseSource::TwoUnmappedPoints;
+  }
+  if (mapped.count >= 1 && (pose = map_.pose_from_one_point(mapped.robot[0], mapped.world[0], turn_rate_, k))) {
+    pose_ = *pose;
+    return PoseSource::OnePoint;
+  }
+  if (average_provisional_on(options_) && !robot_scratch_.empty()) {
+    // One pair, two on a line too steep for two-point registration, or a rejected registration.
+    // The rotation turns on at the measured rate (turn_rate_window; none: the latest rotation);
+    // the position from the pairs' centroid (one pair: that pair; a rejected registration's
+    // swapped pair leaves it where it was).
+    pose_ = register_centroids(robot_scratch_, world_scratch_, prediction.rotation);
+    return PoseSource::OneUnmappedPoint;
+  }
+  return PoseSource::Held;
+}
+
+void RltMapper::place_provisional(const std::vector<PointId>& seen) {
+  for (PointId id : seen) {
+    RltPoint& p = map_.points[id];
+    if (p.has_global || p.dynamic || p.merged) continue;
+    const Eigen::Vector3d placed = pose_ * p.observations.latest().p;
+    if (average_provisional_on(options_) && p.has_provisional) {
+      p.provisional += (placed - p.provisional) / ++p.provisional_placements;  // the running mean
+    } else {
+      p.provisional = placed;
+      p.provisional_placements = 1;
+    }
+    p.has_provisional = true;
+    if (options_.match_unmapped) map_.global_index->place(id, p.provisional);
+  }
 }
 
 }  // namespace relslam::point

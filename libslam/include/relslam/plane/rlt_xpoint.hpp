@@ -67,9 +67,9 @@ class RltXPoint {
   // ReorderPlanes (Rule 30, spec §5.7.3) when it is due at `iteration`: periodically with
   // options.rules.reorder_planes (options.reorder), and with rules.reorder_broken_chains while
   // the group is not placed and an edge of its chain could not place both its planes (then only
-  // a chain whose edges all can replaces it). The chain becomes the best path by the planes' pairwise comparison intervals
-  // with valid key points (reorder_planes.hpp). True when the chain changed (the group is then
-  // recomputed); the Rule 36 reserves of the edges that changed are then cleared.
+  // a chain whose edges all can replaces it). The chain becomes the best path by the planes' pairwise comparison
+  // intervals with valid key points (reorder_planes.hpp). True when the chain changed (the group is then recomputed);
+  // the Rule 36 reserves of the edges that changed are then cleared.
   bool reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration);
 
   // CheckIntervalSize (Rules 31, 32; spec §5.11.1), after compute(): a plane's membership is
@@ -116,8 +116,22 @@ class RltXPoint {
   std::optional<PlanarPose> anchor_;
   void compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
                                const RltPlaneInterval* within);
+  // compute_with_key_points's three parts (spec §5.7.2): edge comparison (ComparePlanes with key
+  // points, Rules 13–15, 18, 36), canonical sizes (each plane's largest length and its key point,
+  // Rule 19 for a missing one), and chaining with size correction (Rules 2, 6, 15, 28).
+  struct Canonical;
+  void compare_edges(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                     const RltPlaneInterval* within);
+  std::vector<Canonical> canonical_sizes(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                                         const RltPlaneInterval* within);
+  void chain_with_size_correction(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                                  const RltPlaneInterval* within, const std::vector<Canonical>& canonical);
+  // Rule 19: chain plane k's key point in the growth phase holding `iteration`, KeyPoint::None
+  // when the other planes cannot tell (or Rule 19 is off).
+  KeyPoint key_point_in(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+                        const RltPlaneInterval* within, std::size_t k, int iteration);
 
-  RltPlaneInterval scratch_common_;                             // reused by compute() in IntervalMode::Group
+  RltPlaneInterval scratch_common_;  // reused by compute() in IntervalMode::Group
   // The iterations comparisons are limited to: the group's common interval in
   // IntervalMode::Group (kept in scratch_common_), nullptr (all) in IntervalMode::Pair.
   const RltPlaneInterval* comparison_window(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options);

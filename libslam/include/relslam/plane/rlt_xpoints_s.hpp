@@ -11,9 +11,9 @@
 #include "relslam/plane/rlt_map_builder.hpp"
 #include "relslam/plane/rlt_plane.hpp"
 #include "relslam/plane/rlt_plane_interval.hpp"
+#include "relslam/plane/rlt_xmm_point.hpp"
 #include "relslam/plane/rlt_xpoint.hpp"
 #include "relslam/plane/rlt_xpoint_link.hpp"
-#include "relslam/plane/rlt_xmm_point.hpp"
 #include "relslam/plane/rlt_xpoints_state.hpp"
 #include "relslam/plane/roll_back.hpp"
 
@@ -73,11 +73,30 @@ struct RelativePlaneStep {
   std::span<const RollBackEvent> roll_backs;
 };
 
+// RltXPointsS's per-iteration scratch, as its base like RltXPointsState (so the member names
+// stay the class's own) and a value the stages can be handed: this iteration's planes in view
+// and what AddPlane did with them, and ManageXPoints's working buffers. Kept from one iteration
+// to the next only to avoid allocations; never restored.
+struct RltXPointsScratch {
+  std::vector<PlaneObject> stamped_;  // the frame's planes with their iteration set
+  std::vector<PlaneId> assignment_;   // the RltPlane of each, in input order
+  std::vector<char> taken_;           // per RltPlane: registered this iteration
+  std::vector<PlaneMatch> matches_;
+  std::vector<PlaneId> reacquired_now_;  // Rule 11 this iteration
+  std::vector<RegisteredObservation> registered_;
+  // ManageXPoints's.
+  std::vector<int> chart_;  // Rule 22: planes in view per group
+  std::vector<char> visited_;
+  std::vector<XPointId> stack_;
+  std::vector<PlaneId> candidates_;
+  RltPlaneInterval scratch_interval_;
+};
+
 // Invariant: planes() and xpoints() are indexed by their ids; each RltPlane is in the
 // unassigned list or in at least one group, or was dropped from the list (then never mapped).
 // With Rules 31–34 (or rollback.force_every) the state after step() is the one a run with every
 // hint now held known from the start would have (thesis 4.3.7.2: roll back, apply, roll forward).
-class RltXPointsS : private RltXPointsState {
+class RltXPointsS : private RltXPointsState, private RltXPointsScratch {
  public:
   // world_T_start: the robot pose of the first frame, the map's anchor (Rule 4: "(0,0) or some
   // other inputted coordinate"). logic_error if check(options) finds a problem.
@@ -98,7 +117,7 @@ class RltXPointsS : private RltXPointsState {
   // hint's iteration at the end of the next step(), as when CheckIntervalSize sends one.
   void send_hint(const RltTemporalHint& hint);
   // The plane a hint names (spec §5.11.2).
-  PlaneIdentity identity(PlaneId plane) const { return {planes_[plane].created_iteration(), plane_inputs_[plane]}; }
+  using RltXPointsState::identity;
 
   const std::vector<RltPlane>& planes() const { return planes_; }
   const std::vector<RltXPoint>& xpoints() const { return xpoints_; }
@@ -109,9 +128,7 @@ class RltXPointsS : private RltXPointsState {
   XPointId current_xpoint() const { return current_; }
   // Every motion model ever started, in order; the active one, if any, is last.
   const std::vector<RltXMMPoint>& motion_models() const { return motion_models_; }
-  const RltXMMPoint* active_motion_model() const {
-    return motion_model_active_ ? &motion_models_.back() : nullptr;
-  }
+  const RltXMMPoint* active_motion_model() const { return motion_model_active_ ? &motion_models_.back() : nullptr; }
   const RelativePlaneOptions& options() const { return options_; }
   // Rules 32/34: the hints held now.
   const RltTemporalHints& hints() const { return hints_; }
@@ -123,42 +140,9 @@ class RltXPointsS : private RltXPointsState {
  private:
   bool keeps_history() const { return options_.rules.interval_check || options_.rollback.force_every > 0; }
   RelativePlaneStep iterate(const PlaneFrame& frame);
-  bool may_join(PlaneId plane, XPointId x) const { return hints_.may_join(identity(plane), iteration_, x); }
-  void check_interval_sizes(const RltXPoint& x, RelativePlaneStep& result);
-  void set_roll_back_to(const RollBackEvent& request);
   void roll_back(RelativePlaneStep& result);
 
   void start_iteration(int iteration);
-  void add_planes(const PlaneFrame& frame, RelativePlaneStep& result);
-  // Rule 11's pose, and whether it is of this iteration or the last (`fresh`) rather than
-  // held from longer ago while the pose was lost.
-  std::pair<PlanarPose, bool> pose_for_global_matching();
-  void register_matches(int& counter, std::vector<PlaneId>* registered = nullptr);
-  void add_to_plane(PlaneId plane, const PlaneObject& observation);
-  PlaneId create_plane(const PlaneObject& observation, int input_index);
-  void manage_xpoints(RelativePlaneStep& result);
-  bool bootstrap(RelativePlaneStep& result);
-  bool join_group(PlaneId plane);
-  bool make_new_xpoint(PlaneId plane, RelativePlaneStep& result);
-  bool link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<PlaneId>& linking);
-  XPointId create_xpoint(std::vector<PlaneId> chain, XPointId from, std::vector<PlaneId> linking, PlaneId founder);
-  void upkeep_unassigned();
-  void regroup_reacquired(RelativePlaneStep& result);
-  void regroup_unplaced(RelativePlaneStep& result);
-  void chart_current_group();
-  void end_motion_model_on_the_map();
-  void fill_chart(bool oneway_links);
-  void set_current(XPointId x);
-  // A plane in view and a group holding a duplicate of it (Rule 37).
-  struct DuplicateGroup {
-    PlaneId plane;
-    XPointId xpoint;
-  };
-  bool switch_to_group_holding_all(std::span<const DuplicateGroup> through = {});
-  std::vector<DuplicateGroup> find_duplicate_groups(const PlanarPose& world_T_robot);
-  int mend_merge_after_loop_closing(std::span<const DuplicateGroup> duplicates);
-  void check_for_motion_model();
-  void create_motion_model(PlaneId plane);
   void compute_xpoints(RelativePlaneStep& result);
   void get_poset();
 
@@ -173,17 +157,6 @@ class RltXPointsS : private RltXPointsState {
   std::size_t step_log_begin_ = 0;  // this step's part of roll_back_log_
 
   // Per-iteration scratch, kept to avoid allocations.
-  std::vector<PlaneObject> stamped_;  // the frame's planes with their iteration set
-  std::vector<PlaneId> assignment_;
-  std::vector<char> taken_;  // per RltPlane: registered this iteration
-  std::vector<PlaneMatch> matches_;
-  std::vector<PlaneId> reacquired_now_;  // Rule 11 this iteration
-  std::vector<int> chart_;               // Rule 22: planes in view per group
-  std::vector<RegisteredObservation> registered_;
-  std::vector<char> visited_;
-  std::vector<XPointId> stack_;
-  std::vector<PlaneId> candidates_;
-  RltPlaneInterval scratch_interval_;
   std::vector<PlaneId> failed_;  // CheckIntervalSize's planes
 };
 

@@ -4,6 +4,7 @@
 // (Rule 33) restores a copy of it and replays, so a member added to the algorithm later is
 // restored without anyone having to remember it. Eigen only.
 
+#include "relslam/plane/hints.hpp"
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/rlt_map_builder.hpp"
 #include "relslam/plane/rlt_plane.hpp"
@@ -25,8 +26,8 @@ struct RltXPointsState {
   std::vector<PlaneId> unassigned_;  // RltPlaneList, creation order
   // Rule 21: planes global matching re-acquired, with the iteration, until they are grouped.
   std::vector<std::pair<PlaneId, int>> reacquired_;
-  std::vector<PlaneId> recent_;      // RltPlanes seen within local_match.max_iteration_gap
-  std::vector<char> in_recent_;      // per RltPlane: in recent_
+  std::vector<PlaneId> recent_;  // RltPlanes seen within local_match.max_iteration_gap
+  std::vector<char> in_recent_;  // per RltPlane: in recent_
   // Per RltPlane: the index of its first observation in that iteration's input (its hint
   // identity with its created iteration, spec §5.11.2).
   std::vector<int> plane_inputs_;
@@ -40,9 +41,12 @@ struct RltXPointsState {
   bool motion_model_active_ = false;  // the last of motion_models_ carries the pose
   int no_pose_count_ = 0;             // Rule 26: iterations without a pose ...
   int no_pose_start_ = 0;             // ... since this one
-  XPointId current_ = kNone;  // the current group; the working group while managing
+  XPointId current_ = kNone;          // the current group; the working group while managing
   int iteration_ = 0;
   bool started_ = false;
+
+  // The plane a hint names (spec §5.11.2): its created iteration and its index in that input.
+  PlaneIdentity identity(PlaneId plane) const { return {planes_[plane].created_iteration(), plane_inputs_[plane]}; }
 };
 
 }  // namespace relslam::plane

@@ -14,6 +14,7 @@
 #include "relslam/point/rlt_point_merging.hpp"
 #include "relslam/point/turn_rate.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -33,9 +34,9 @@ enum class PoseSource : unsigned char {
                       // the rotation about their line from the latest pose (adaptive average_provisional)
   OneUnmappedPoint,  // one provisional point visible (or two on a steep line), no mapped one: as OnePoint, the rotation
                      // of the latest pose (adaptive average_provisional)
-  Held,      // no registration possible: the previous pose is kept
-  Odometry,  // use_odometry, no registration to three or more points: the previous pose moved by
-             // the frame's odometry
+  Held,              // no registration possible: the previous pose is kept
+  Odometry,          // use_odometry, no registration to three or more points: the previous pose moved by
+                     // the frame's odometry
 };
 
 // The pose's position and rotation came from the map itself (the map frame or mapped points).
@@ -73,9 +74,9 @@ struct StepResult {
   int dynamic_flagged = 0;  // points RltBinning flagged this iteration
   int merges = 0;           // RltPoints merged into older ones this iteration
   int binning_comparisons = 0;
-  bool relaxed = false;   // a global relaxation ran this iteration (beyond the thesis)
+  bool relaxed = false;             // a global relaxation ran this iteration (beyond the thesis)
   bool relaxation_skipped = false;  // one was due but no tie's gap triggered it (relaxation_trigger_gap)
-  RelaxationReport relaxation;  // its outcome, when relaxed
+  RelaxationReport relaxation;      // its outcome, when relaxed
   StepTimings timings;
 };
 
@@ -117,7 +118,44 @@ class RltMapper {
   void compute_groups(int k);
   void check_map_frame(int k);
   void move_map_frame(int k);
+  // [load] The frame's observations to their RltPoints, matched or new; true when one re-found a
+  // point unseen for relaxation_loop_gap iterations (a loop closure).
+  bool load(const ObservationFrame& frame, const std::vector<std::pair<int, PointId>>& forced_matches,
+            StepResult& result);
+  // [relax] When global relaxation runs (beyond the thesis, issue 19).
+  void schedule_relaxation(int k, bool loop_closed, StepResult& result);
+
+  // [pose] Current position (thesis 6.1): prediction, registration, then the provisional fallback.
   void update_pose(const ObservationFrame& frame, StepResult& result);
+  // Where the robot should be before registering: dead-reckoned (use_odometry) and its rotation,
+  // or the latest rotation turned on at the measured rate.
+  struct PosePrediction {
+    std::optional<Rigid3> dead_reckoned;
+    Eigen::Matrix3d rotation;
+  };
+  PosePrediction predict_pose(const ObservationFrame& frame) const;
+  // The first (up to) two pairs with a mapped point (the adaptive preset's one- and two-point poses).
+  struct MappedPairs {
+    std::size_t count = 0;
+    std::array<Eigen::Vector3d, 2> robot, world;
+  };
+  // The seen points' observations registered to their global (and with `provisional` their
+  // provisional) positions, the pairs left in robot_scratch_/world_scratch_; an implausible
+  // registration is dropped and sets `rejected`.
+  std::optional<Rigid3> register_seen(const std::vector<PointId>& seen, bool provisional,
+                                      const PosePrediction& prediction, bool& rejected);
+  // The poses from registration (start, mapped points, two points, unmapped points, odometry):
+  // sets pose_ and says from what, or nullopt when none came.
+  std::optional<PoseSource> register_pose(int k, const std::vector<PointId>& seen, const PosePrediction& prediction,
+                                          MappedPairs& mapped, bool& rejected);
+  // The provisional fallback (adaptive): two unmapped points, one point, one unmapped point, or
+  // the pose held.
+  PoseSource provisional_fallback(int k, const PosePrediction& prediction, const MappedPairs& mapped);
+  // provisional_rotation_weight's pose: part of `registered`'s rotation, the position from the
+  // scratch pairs' centroid.
+  Rigid3 weigh_provisional(const Rigid3& registered, const Eigen::Matrix3d& predicted) const;
+  // Provisional positions of the unmapped points seen now (Deviation, see options).
+  void place_provisional(const std::vector<PointId>& seen);
   // A registration strays from the dead-reckoned pose by more than odometry_max_turn_deg or
   // odometry_max_shift (use_odometry), or else its rotation differs from the predicted one by
   // more than max_turn_deg (adaptive preset only).
@@ -134,11 +172,11 @@ class RltMapper {
   bool pose_from_map_ = false;  // pose_ was registered to mapped points (or is the map frame)
   int pose_iteration_ = kNone;  // the iteration pose_ is of
   TurnRate turn_rate_;          // measured on the poses whose rotation was registered (adaptive)
-  int rejected_turns_ = 0;            // iterations in a row whose registration max_turn_deg rejected
+  int rejected_turns_ = 0;      // iterations in a row whose registration max_turn_deg rejected
   std::string failure_;
   GroupRelaxer relaxer_;
-  int relax_at_ = kNone;  // iteration of the solve a loop closure scheduled
-  int next_relax_ = kNone;  // the earliest iteration the next loop-closure solve may run
+  int relax_at_ = kNone;           // iteration of the solve a loop closure scheduled
+  int next_relax_ = kNone;         // the earliest iteration the next loop-closure solve may run
   std::vector<PointId> held_off_;  // points with a tie over relaxation_trigger_gap after the last solve, sorted
 
   // Per-iteration scratch.
