@@ -5,7 +5,8 @@
 
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/options.hpp"
-#include "relslam/plane/rlt_xpoints_s.hpp"
+#include "relslam/plane/relative_plane_step.hpp"
+#include "relslam/plane/rlt_xpoints_scratch.hpp"
 #include "relslam/plane/rlt_xpoints_state.hpp"
 
 #include <utility>
