@@ -17,7 +17,7 @@ namespace {
 // the origin); throws, gives up, returns NaN or sleeps where a test says so.
 class Scripted final : public Algorithm {
  public:
-  int throw_at = -1, nan_at = -1, give_up_at = -1;
+  int throw_at = -1, nan_at = -1, give_up_at = -1, diverge_at = -1;
   std::optional<TimeBudget> budget;
 
   const std::string& name() const override { return name_; }
@@ -27,6 +27,8 @@ class Scripted final : public Algorithm {
     pose_ = observation.iteration == nan_at
                 ? Rigid3::from(Eigen::Quaterniond::Identity(), Eigen::Vector3d::Constant(std::nan("")))
                 : Rigid3();
+    if (observation.iteration == diverge_at)
+      pose_ = Rigid3::from(Eigen::Quaterniond::Identity(), Eigen::Vector3d(8e23, 0, 0));
     map_ = observation.points;
     assignment_.clear();
     changed_.clear();
@@ -131,6 +133,13 @@ TEST(AlgorithmRecorder, ANonFiniteEstimateIsAFailureNotANumber) {
   test::ScratchDir dir;
   const SummaryRow row = record(dir, 4, [](Scripted& a) { a.nan_at = 2; });
   EXPECT_EQ(row.status.text(), "failed at iteration 2: the estimate became NaN");
+  EXPECT_EQ(row.iterations, 2);
+}
+
+TEST(AlgorithmRecorder, AFiniteButDivergedEstimateIsAFailureToo) {
+  test::ScratchDir dir;
+  const SummaryRow row = record(dir, 4, [](Scripted& a) { a.diverge_at = 2; });
+  EXPECT_EQ(row.status.text(), "failed at iteration 2: the estimate diverged (a coordinate beyond 1e9 units)");
   EXPECT_EQ(row.iterations, 2);
 }
 

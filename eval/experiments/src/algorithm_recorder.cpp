@@ -91,6 +91,16 @@ void AlgorithmRecorder::step(const ObservationFrame& observation, const TruthFra
     status_ = RunStatus::failed(k, "the estimate became NaN");
     return;
   }
+  // A filter can diverge to finite numbers no world has (an EKF at 8e23 units): a failure too,
+  // never an `ok` row whose errors dwarf every other run's.
+  const auto diverged = [](const Eigen::Vector3d& p) { return p.lpNorm<Eigen::Infinity>() > kDivergedMagnitude; };
+  if (diverged(estimate.translation) || std::any_of(changed.begin(), changed.end(), [&](int id) {
+        const auto p = algorithm_->position(id);
+        return p && diverged(*p);
+      })) {
+    status_ = RunStatus::failed(k, "the estimate diverged (a coordinate beyond 1e9 units)");
+    return;
+  }
   scorer_.associate(algorithm_->assignment(), truth.landmark_ids);
   const IterationScore s = scorer_.score(
       estimate, truth, changed, [&](int id) { return algorithm_->position(id); }, runtime_ms);

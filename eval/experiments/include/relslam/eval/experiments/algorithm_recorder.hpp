@@ -24,6 +24,10 @@
 
 namespace relslam::eval {
 
+// Past this magnitude (units) a pose or landmark coordinate has diverged: the worlds relslam
+// simulates span hundreds of units and real data sets kilometres.
+inline constexpr double kDivergedMagnitude = 1e9;
+
 // A running hash of the frames an algorithm was given (iteration, point and odometry bytes, or
 // plane corners and heights), so a run can show that every algorithm saw the very same stream.
 class FrameDigest {
