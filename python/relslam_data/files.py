@@ -97,3 +97,11 @@ def read_json(path):
         return json.loads(text)
     except json.JSONDecodeError as e:
         raise DataError(path, f"not valid JSON: {e}") from None
+
+
+def scenario_name(manifest, folder):
+    """The scenario's name a manifest.json records, else the folder's name."""
+    scenario = manifest.get("scenario")
+    if isinstance(scenario, dict) and scenario.get("name"):
+        return scenario["name"]
+    return Path(folder).name

@@ -10,7 +10,7 @@ ground_truth_walls.csv (planar). Every other CSV in the folder is read on demand
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .files import DataError, read_csv, read_json, read_tum
+from .files import DataError, read_csv, read_json, read_tum, scenario_name
 
 # Columns the plots rely on; checked to be present (required) or numbers (numeric, when present),
 # so a damaged file fails here, naming itself, instead of in the middle of a figure.
@@ -56,10 +56,7 @@ class Run:
     @property
     def name(self):
         """The scenario's name (manifest.json), else the folder's name."""
-        scenario = self.manifest.get("scenario")
-        if isinstance(scenario, dict) and scenario.get("name"):
-            return scenario["name"]
-        return self.folder.name
+        return scenario_name(self.manifest, self.folder)
 
     @property
     def ratios(self):

@@ -8,7 +8,7 @@ and cells) and manifest.json, plus one run folder per cell, read on demand by `S
 from dataclasses import dataclass
 from pathlib import Path
 
-from .files import DataError, read_csv, read_json
+from .files import DataError, read_csv, read_json, scenario_name
 from .run import load_run
 
 STATISTICS = ("_mean", "_std", "_ci95")
@@ -36,10 +36,7 @@ class Sweep:
     @property
     def name(self):
         """The scenario's name (manifest.json), else the folder's name."""
-        scenario = self.manifest.get("scenario")
-        if isinstance(scenario, dict) and scenario.get("name"):
-            return scenario["name"]
-        return self.folder.name
+        return scenario_name(self.manifest, self.folder)
 
     def run(self, cell):
         """The run folder of one cell, by its `folder` value in sweep.csv

@@ -22,18 +22,7 @@ vp_data=${RELSLAM_VICTORIA_PARK:-$src/../shared/datasets/victoria_park}
 vp_bench=${RELSLAM_BENCH_VICTORIA_PARK:-$(dirname "$relslam")/bench/relslam_bench_victoria_park}
 SIZE="1000 600"  # figures.py FIGSIZE x DPI
 
-passed=0
-failed=0
-ok() { passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-summary() { echo "$passed passed, $failed failed"; }
-die() { fail "$*"; summary; exit 1; }
-not() { ! "$@"; }
-expect() {  # expect DESCRIPTION COMMAND...: one check
-  local what=$1
-  shift
-  if "$@"; then ok; else fail "$what"; fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/checks.sh"
 
 runs=$work/runs
 rm -rf "$runs" "$work/figures" "$work/report" "$work/empty" "$work/bad"

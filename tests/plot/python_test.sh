@@ -16,18 +16,7 @@ work=$(realpath -m "$3")
 python=/usr/bin/python3  # Debian's, with pandas and matplotlib
 export PYTHONDONTWRITEBYTECODE=1  # no __pycache__ in the source tree
 
-passed=0
-failed=0
-ok() { passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-summary() { echo "$passed passed, $failed failed"; }
-die() { fail "$*"; summary; exit 1; }
-not() { ! "$@"; }
-expect() {  # expect DESCRIPTION COMMAND...: one check
-  local what=$1
-  shift
-  if "$@"; then ok; else fail "$what"; fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/checks.sh"
 
 rm -rf "$work"
 mkdir -p "$work" || die "cannot create $work"
