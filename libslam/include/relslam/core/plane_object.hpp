@@ -4,10 +4,12 @@
 // relative_plane_em.md §2.2). Part of relslam/core: Eigen only. Truth travels separately, in
 // PlaneTruthFrame, which only the evaluation reads.
 
+#include "relslam/core/laser_scan.hpp"
 #include "relslam/core/planar_pose.hpp"
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <vector>
 
 namespace relslam {
@@ -50,6 +52,9 @@ struct PlaneObject {
 struct PlaneFrame {
   int iteration = 0;
   std::vector<PlaneObject> planes;
+  // The raw 2-D scan the planes were extracted from, where they came from a planar laser
+  // (baselines that match scans, such as ICP-SLAM, read it); null otherwise.
+  std::shared_ptr<const LaserScan> scan;
 };
 
 // What the simulator knows of one observed plane, for scoring only.
