@@ -13,7 +13,7 @@ import os
 
 import numpy as np
 
-import figures as fg
+from measures import common, em, planes, points
 import noise_sweep
 import relslam_plot as rp
 
@@ -31,9 +31,9 @@ class Run:
         self.read.append(os.path.relpath(path, self.runs))
         return path
 
-    def iterations(self, columns, algorithm=fg.ALG):
+    def iterations(self, columns, algorithm=common.ALG):
         self.file(algorithm, "iterations.csv")
-        return fg.iterations(self.path, columns, algorithm)
+        return common.iterations(self.path, columns, algorithm)
 
     def summary(self, columns):
         """{algorithm: {column: value}} from summary.csv."""
@@ -42,8 +42,8 @@ class Run:
 
     def density(self):
         self.file("sweep.csv")
-        self.read.append(os.path.join(os.path.relpath(self.path, self.runs), "*", "seed-*", fg.ALG, "iterations.csv"))
-        return fg.density_table(self.path)
+        self.read.append(os.path.join(os.path.relpath(self.path, self.runs), "*", "seed-*", common.ALG, "iterations.csv"))
+        return points.density_table(self.path)
 
 
 def pick_density(available, wanted):
@@ -84,7 +84,7 @@ def after_closure(run):
     """Mean run time once the first loop is done (thesis 6.5.1: closure at about iteration 4000)."""
     path = run.file("manifest.json")
     try:
-        loop_end = int(fg.read_json(path)["scenario"]["sim"]["iterations_per_loop"])
+        loop_end = int(common.read_json(path)["scenario"]["sim"]["iterations_per_loop"])
     except (KeyError, TypeError, ValueError):
         raise rp.DataError(f"{path}: no scenario.sim.iterations_per_loop") from None
     d = run.iterations(["runtime_ms"])
@@ -121,9 +121,9 @@ def dense(run, column, unit, wanted=550.0):
 
 def dense_total_points(run, wanted=550.0):
     density, note = pick_density(run.density()["density"], wanted)
-    folder = dict((float(v), f) for v, f in fg.sweep_runs(run.path, "sim.density"))[density]
-    d = fg.iterations(folder, ["landmarks_in_map"])
-    run.read.append(os.path.relpath(os.path.join(folder, fg.ALG, "iterations.csv"), run.runs))
+    folder = dict((float(v), f) for v, f in common.sweep_runs(run.path, "sim.density"))[density]
+    d = common.iterations(folder, ["landmarks_in_map"])
+    run.read.append(os.path.relpath(os.path.join(folder, common.ALG, "iterations.csv"), run.runs))
     return f"{d['landmarks_in_map'][-1]:.0f} landmarks on the map{note}"
 
 
@@ -136,7 +136,7 @@ def minimum_share(run):
 
 def relative_vs_ekf(run):
     s = run.summary(["status", "runtime_mean_ms", "runtime_max_ms"])
-    rel, ekf = s.get(fg.ALG), s.get("ekf6d")
+    rel, ekf = s.get(common.ALG), s.get("ekf6d")
     if rel is None or ekf is None:
         return "the run lacks relative_point or ekf6d"
     return f"{rel['runtime_mean_ms']:.3g} ms vs {ekf['runtime_mean_ms']:.3g} ms mean " \
@@ -158,7 +158,7 @@ def dynamic_drop(run):
 def vp_level(run, level):
     """ms per scan and the time for all 7249 scans, per window, from Google Benchmark JSON."""
     cells = [f"{ms[level]:.3g} ms ({ms[level] * 7.249:.3g} s) [{window}]"
-             for window, ms in fg.vp_benchmarks(run.file()).items() if level in ms]
+             for window, ms in points.vp_benchmarks(run.file()).items() if level in ms]
     return "; ".join(cells) or f"no 'levels {level}' benchmark"
 
 
@@ -179,9 +179,9 @@ def plane_summary(run, *parts):
     if parts:
         t = rp.read_table(run.file(*parts, "summary.csv"), ["algorithm", *columns], text=("algorithm",))
         row = {a: {c: t[c][i] for c in columns} for i, a in enumerate(t["algorithm"])}
-    if fg.PLANE not in row:
-        raise rp.DataError(f"{os.path.join(run.path, *parts, 'summary.csv')}: column algorithm: no {fg.PLANE} row")
-    return row[fg.PLANE]
+    if common.PLANE not in row:
+        raise rp.DataError(f"{os.path.join(run.path, *parts, 'summary.csv')}: column algorithm: no {common.PLANE} row")
+    return row[common.PLANE]
 
 
 def verdict(s):
@@ -195,7 +195,7 @@ def verdict(s):
 def rule3_invariance(run):
     run.file("plane_observations.csv")
     run.file("ground_truth_path.tum")
-    psi, raw, rel, expected = fg.invariance(run.path)
+    psi, raw, rel, expected = planes.invariance(run.path)
     return (f"raw std (Δx, Δz) ({raw[:, 0].std():.3g}, {raw[:, 1].std():.3g}) vs Rule 3 std ({rel[:, 0].std():.3g}, "
             f"{rel[:, 1].std():.3g}), Rule 3 mean ({rel[:, 0].mean():.4g}, {rel[:, 1].mean():.4g}) vs true "
             f"({expected[0]:.4g}, {expected[1]:.4g}); {len(psi)} iterations, ψ from {np.nanmin(psi):.0f}° to "
@@ -204,9 +204,9 @@ def rule3_invariance(run):
 
 def no_drift(run):
     run.file("manifest.json")
-    run.file(fg.PLANE, "iterations.csv")
-    loops = fg.loop_means(run.path, "mean_map_error")
-    pose = fg.loop_means(run.path, "position_error")
+    run.file(common.PLANE, "iterations.csv")
+    loops = planes.loop_means(run.path, "mean_map_error")
+    pose = planes.loop_means(run.path, "position_error")
     first, last = loops[0][2], loops[-1][2]
     return (f"{'no drift' if last <= DRIFT_RATIO * first else 'drift'}: mean map error per plane, loop 1 "
             f"{first:.3g}, loop {len(loops)} {last:.3g} (ratio {last / first:.2f}; loops range "
@@ -219,10 +219,10 @@ def map_correct(run):
 
 
 def hallway(run):
-    links = rp.read_table(run.file(fg.PLANE, "links.csv"), ["from", "linking_planes"], text=("linking_planes",))
+    links = rp.read_table(run.file(common.PLANE, "links.csv"), ["from", "linking_planes"], text=("linking_planes",))
     counts = [len([p for p in planes.split(";") if p]) for f, planes in zip(links["from"], links["linking_planes"])
               if np.isfinite(f)]
-    groups = rp.read_table(run.file(fg.PLANE, "groups.csv"), ["group_id"])["group_id"]
+    groups = rp.read_table(run.file(common.PLANE, "groups.csv"), ["group_id"])["group_id"]
     return (f"{len(groups)} groups, {len(counts)} links with {'/'.join(map(str, counts))} linking planes; "
             + verdict(plane_summary(run)))
 
@@ -232,7 +232,7 @@ def variant_folder(run, prefix):
     names = ["variant", "folder", "algorithm"]
     t = rp.read_table(run.file("sweep.csv"), names, text=names)
     for v, f, a in zip(t["variant"], t["folder"], t["algorithm"]):
-        if a == fg.PLANE and v.startswith(prefix):
+        if a == common.PLANE and v.startswith(prefix):
             return v, f
     raise rp.DataError(f"{os.path.join(run.path, 'sweep.csv')}: column variant: none starts with {prefix!r}")
 
@@ -246,7 +246,7 @@ def e06(run):
     cells = []
     for prefix in ("rule12_on", "rule12_off"):
         name, folder = variant_folder(run, prefix)
-        links = rp.read_table(run.file(folder, fg.PLANE, "links.csv"), ["from", "to"])
+        links = rp.read_table(run.file(folder, common.PLANE, "links.csv"), ["from", "to"])
         pairs = [f"X{f:.0f}→X{t:.0f}" for f, t in zip(links["from"], links["to"]) if np.isfinite(f)]
         cells.append(f"{name}: links {' '.join(pairs) or 'none'}; " + verdict(plane_summary(run, folder)))
     return " — ".join(cells)
@@ -255,7 +255,7 @@ def e06(run):
 def e21(run):
     """A completed map: walls mapped, pose exactness and the key points claimed, noise-free."""
     s = plane_summary(run)
-    kp = run.summary(["key_point_accuracy", "wrong_key_point_iterations"])[fg.PLANE]
+    kp = run.summary(["key_point_accuracy", "wrong_key_point_iterations"])[common.PLANE]
     return (f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, {s['duplicates']:.0f} duplicate(s) "
             f"(a wall first seen in part, kept apart as in Fig 90), max position error "
             f"{s['max_position_error']:.2g}, pose valid {100 * s['pose_valid_fraction']:.1f} % of iterations; "
@@ -264,11 +264,11 @@ def e21(run):
 
 
 def e10(run):
-    """Rule 21's group counts (fg.group_counts, as Fig 82 shows them); Rule 22's time is the next row."""
+    """Rule 21's group counts (planes.group_counts, as Fig 82 shows them); Rule 22's time is the next row."""
     run.file("sweep.csv")
-    for (name,), folders in fg.plane_sweep(run.path):
-        run.file(os.path.relpath(folders[0], run.path), fg.PLANE, "iterations.csv")
-    return "; ".join(f"{name}: {n} groups" for name, n in fg.group_counts(run.path).items()) + \
+    for (name,), folders in planes.plane_sweep(run.path):
+        run.file(os.path.relpath(folders[0], run.path), common.PLANE, "iterations.csv")
+    return "; ".join(f"{name}: {n} groups" for name, n in planes.group_counts(run.path).items()) + \
         " (Rule 22's time while revisiting: the row 'E10 Rule 22')"
 
 
@@ -277,7 +277,7 @@ def e31(run):
     maps = []
     for prefix in ("creation", "reversed"):
         name, folder = variant_folder(run, prefix)
-        maps.append(rp.read_table(run.file(folder, fg.PLANE, "planes.csv"), ["id", "kp1_x", "kp1_z", "kp2_x", "kp2_z"]))
+        maps.append(rp.read_table(run.file(folder, common.PLANE, "planes.csv"), ["id", "kp1_x", "kp1_z", "kp2_x", "kp2_z"]))
     a, b = maps
     if len(a["id"]) != len(b["id"]):
         return f"different maps: {len(a['id'])} vs {len(b['id'])} planes"
@@ -289,12 +289,12 @@ def e31(run):
 # from the figures' own helpers (figures.py), so a figure and its claim cannot disagree.
 
 def e02(run):
-    run.file(fg.PLANE, "pairs.csv")
-    run.file(fg.PLANE, "pair_sigma.csv")
+    run.file(common.PLANE, "pairs.csv")
+    run.file(common.PLANE, "pair_sigma.csv")
     run.file("plane_observations.csv")
-    series, sig, chosen, right = fg.key_point_pair(run.path)
+    series, sig, chosen, right = planes.key_point_pair(run.path)
     others = [s for k, s in enumerate(sig["sigma"]) if k != chosen]
-    name = fg.PAIR_NAMES[(int(sig["kp_a"][chosen]), int(sig["kp_b"][chosen]))]
+    name = planes.PAIR_NAMES[(int(sig["kp_a"][chosen]), int(sig["kp_b"][chosen]))]
     return (f"lowest σ {sig['sigma'][chosen]:.3g} ({name}) vs {min(others):.3g}-{max(others):.3g} for the other "
             f"three, over {sig['samples'][0]:.0f} iterations; the chosen ends are real wall ends in {100 * right[0]:.0f} % "
             f"and {100 * right[1]:.0f} % of them")
@@ -302,7 +302,7 @@ def e02(run):
 
 def e07(run):
     run.file("sweep.csv")
-    errors = fg.interval_mode_errors(run.path)
+    errors = planes.interval_mode_errors(run.path)
     cell = {key: v[2] for key, v in errors.items()}
     seeds = min(v[3] for v in errors.values())
     return ("run mean of the map error per plane, " + ", ".join(f"{m}/{n} {e:.3g}" for (m, n), e in cell.items())
@@ -314,16 +314,16 @@ def e08(run):
     and how soon they heal; wrong key-point episodes scored against the truth."""
     run.file("sweep.csv")
     cells = []
-    for (name,), folders in fg.plane_sweep(run.path):
+    for (name,), folders in planes.plane_sweep(run.path):
         events = quick = never = episodes = longest = 0
         for folder in folders:
-            run.file(os.path.relpath(folder, run.path), fg.PLANE, "iterations.csv")
-            run.file(os.path.relpath(folder, run.path), fg.PLANE, "keypoints.csv")
-            n, q, nv, _ = fg.event_healing(folder)
-            k, _, _, lg = fg.healing(folder)
+            run.file(os.path.relpath(folder, run.path), common.PLANE, "iterations.csv")
+            run.file(os.path.relpath(folder, run.path), common.PLANE, "keypoints.csv")
+            n, q, nv, _ = planes.event_healing(folder)
+            k, _, _, lg = planes.healing(folder)
             events, quick, never, episodes, longest = events + n, quick + q, never + nv, episodes + k, max(longest, lg)
         cells.append(f"{name} ({len(folders)} seed(s)): {quick} of {events} map-error events healed within "
-                     f"{fg.HEAL_ITERATIONS} iterations, {never} never; {episodes} wrong key-point episodes, longest "
+                     f"{planes.HEAL_ITERATIONS} iterations, {never} never; {episodes} wrong key-point episodes, longest "
                      f"{longest} iterations")
     return "; ".join(cells)
 
@@ -333,26 +333,26 @@ def per_variant(run, names, name_file, describe):
     run.file("sweep.csv")
     cells = []
     for name in names:
-        folder = fg.variant_folder_of(run.path, name)
-        run.file(os.path.relpath(folder, run.path), fg.PLANE, name_file)
+        folder = planes.variant_folder_of(run.path, name)
+        run.file(os.path.relpath(folder, run.path), common.PLANE, name_file)
         cells.append(f"{name}: " + describe(folder))
     return "; ".join(cells)
 
 
 def e09(run):
     return per_variant(run, ("rule21_off", "rule21_new_group", "rule21_walkthrough"), "planes.csv",
-                       lambda folder: ", ".join(f"wall {w} at {r:.2f} of its length" for w, r in fg.under_sized(folder))
-                       or f"no wall under {fg.UNDER_SIZED:g} of its length")
+                       lambda folder: ", ".join(f"wall {w} at {r:.2f} of its length" for w, r in planes.under_sized(folder))
+                       or f"no wall under {planes.UNDER_SIZED:g} of its length")
 
 
 def e10_rule22(run):
     run.file("sweep.csv")
     times = {}
     for name in ("rule21_capped", "rule22_off"):
-        folder = fg.variant_folder_of(run.path, name)
-        run.file(os.path.relpath(folder, run.path), fg.PLANE, "iterations.csv")
+        folder = planes.variant_folder_of(run.path, name)
+        run.file(os.path.relpath(folder, run.path), common.PLANE, "iterations.csv")
         run.file(os.path.relpath(folder, run.path), "ground_truth_path.tum")
-        times[name] = fg.revisit_time(folder)
+        times[name] = planes.revisit_time(folder)
     on, off = times["rule21_capped"], times["rule22_off"]
     if on is None or off is None:
         return "no revisit: the runs end before the robot is back at its start"
@@ -362,18 +362,18 @@ def e10_rule22(run):
 
 def e12(run):
     return per_variant(run, ("rule28_on", "rule28_off"), "planes.csv",
-                       lambda folder: ", ".join(f"wall {w} {e:.3g} off its line" for w, e in fg.misplaced(folder))
-                       or f"every mapped plane on its wall's line (≤ {fg.OFF_LINE:g})")
+                       lambda folder: ", ".join(f"wall {w} {e:.3g} off its line" for w, e in planes.misplaced(folder))
+                       or f"every mapped plane on its wall's line (≤ {planes.OFF_LINE:g})")
 
 
 def e15(run):
     run.file("sweep.csv")
     cells = []
-    for (name,), folders in fg.plane_sweep(run.path):
+    for (name,), folders in planes.plane_sweep(run.path):
         rel = os.path.relpath(folders[0], run.path)
         s = plane_summary(run, rel)
         t = rp.read_table(run.file(rel, "summary.csv"), ["algorithm", "key_point_accuracy"], text=("algorithm",))
-        acc = t["key_point_accuracy"][list(t["algorithm"]).index(fg.PLANE)]
+        acc = t["key_point_accuracy"][list(t["algorithm"]).index(common.PLANE)]
         cells.append(f"{name}: {s['duplicates']:.0f} duplicate(s), final mean map error "
                      f"{s['final_mean_map_error']:.3g}, key points right {100 * acc:.1f} %")
     return "; ".join(cells)
@@ -381,8 +381,8 @@ def e15(run):
 
 def e18(run):
     for name in ("iterations.csv", "keypoints.csv", "edges.csv"):
-        run.file(fg.PLANE, name)
-    d, first_bad, claims_tied, edges_tied = fg.collinear_run(run.path)
+        run.file(common.PLANE, name)
+    d, first_bad, claims_tied, edges_tied = planes.collinear_run(run.path)
     s = plane_summary(run)
     until = "throughout" if first_bad is None else f"until iteration {first_bad}"
     valid = np.nonzero(d["pose_valid"] == 1)[0]
@@ -403,18 +403,18 @@ def e19(run):
 
 def e20(run):
     """Rule 37 on against off, seed by seed: iterations with another current group, one-way links, plane 1's e_ends."""
-    variants = dict(fg.plane_sweep(run.path))
+    variants = dict(planes.plane_sweep(run.path))
     if ("rule37_on",) not in variants or ("rule37_off",) not in variants:
         raise rp.DataError(f"{os.path.join(run.path, 'sweep.csv')}: column variant: needs rule37_on and rule37_off")
     cells = []
     for on, off in zip(variants[("rule37_on",)], variants[("rule37_off",)]):
-        it = [rp.read_table(run.file(os.path.relpath(f, run.path), fg.PLANE, "iterations.csv"),
+        it = [rp.read_table(run.file(os.path.relpath(f, run.path), common.PLANE, "iterations.csv"),
                             ["current_group", "oneway_links"], text=("current_group",)) for f in (on, off)]
         n = min(len(it[0]["current_group"]), len(it[1]["current_group"]))
         differ = sum(it[0]["current_group"][k] != it[1]["current_group"][k] for k in range(n))
         plane1 = []
         for f in (on, off):
-            t = rp.read_table(run.file(os.path.relpath(f, run.path), fg.PLANE, "planes.csv"), ["id", "e_ends"])
+            t = rp.read_table(run.file(os.path.relpath(f, run.path), common.PLANE, "planes.csv"), ["id", "e_ends"])
             hit = np.nonzero(t["id"] == 1)[0]
             plane1.append(f"{t['e_ends'][hit[0]]:.3g}" if len(hit) else "not mapped")
         cells.append(f"{os.path.basename(on)}: {int(np.nansum(it[0]['oneway_links']))} one-way link(s), current group "
@@ -425,7 +425,7 @@ def e20(run):
 def e32(run):
     run.file("sweep.csv")
     return "; ".join(f"{k} loop(s): median {v[0]:.3g} ms (first tenth {v[1]:.3g}, last tenth {v[2]:.3g}), {v[3]} "
-                     f"RltPlanes" for k, v in fg.runtime_by_size(run.path).items())
+                     f"RltPlanes" for k, v in planes.runtime_by_size(run.path).items())
 
 
 # issue 15: Relative Plane part 3: the motion model (Rules 23-27, 29: E11, E13, E14, E16, E22) and the interval
@@ -435,11 +435,11 @@ def e17(run):
     run.file("sweep.csv")
     cells = []
     for name in ("interval_check_off", "interval_check_on"):
-        rel = os.path.relpath(fg.variant_folder_of(run.path, name), run.path)
+        rel = os.path.relpath(planes.variant_folder_of(run.path, name), run.path)
         s = plane_summary(run, rel)
         t = rp.read_table(run.file(rel, "summary.csv"), ["algorithm", "hints", "rollbacks", "replayed_iterations"],
                           text=("algorithm",))
-        i = list(t["algorithm"]).index(fg.PLANE)
+        i = list(t["algorithm"]).index(common.PLANE)
         cells.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, final mean map error "
                      f"{s['final_mean_map_error']:.3g}, final position error {s['final_position_error']:.3g}, "
                      f"{t['rollbacks'][i]:.0f} roll-back(s) from {t['hints'][i]:.0f} hint(s), "
@@ -447,14 +447,14 @@ def e17(run):
     return "; ".join(cells)
 
 
-PLANE_FILES = (os.path.join(fg.PLANE, "iterations.csv"), os.path.join(fg.PLANE, "planes.csv"))
+PLANE_FILES = (os.path.join(common.PLANE, "iterations.csv"), os.path.join(common.PLANE, "planes.csv"))
 
 
 def seed_folders(run, names=PLANE_FILES):
     """Every run folder of a planar sweep (all variants and seeds), recording the files (relative to a run
     folder) read from each."""
     run.file("sweep.csv")
-    folders = [f for _, fs in fg.plane_sweep(run.path, ("seed",)) for f in fs]
+    folders = [f for _, fs in planes.plane_sweep(run.path, ("seed",)) for f in fs]
     for folder in folders:
         for name in names:
             run.file(os.path.relpath(folder, run.path), name)
@@ -465,25 +465,25 @@ def e11(run):
     """Pooled over the seeds: where the motion model starts and ends, the end wall's growth, wrong key
     points inside and outside it, and the map-error events."""
     starts, ends, grown, inside, outside, events, quick, joined, longest = [], [], [], [0, 0], [0, 0], 0, 0, 0, 0
-    folders = seed_folders(run, PLANE_FILES + (os.path.join(fg.PLANE, "keypoints.csv"),))
+    folders = seed_folders(run, PLANE_FILES + (os.path.join(common.PLANE, "keypoints.csv"),))
     for folder in folders:
-        e, before, heading = fg.first_corner(folder)
+        e, before, heading = planes.first_corner(folder)
         starts.append(before)
         ends.append(heading)
         grown.append(e["length"] / e["true_length"])
-        split = fg.key_points_by_phase(folder)
+        split = planes.key_points_by_phase(folder)
         inside = [a + b for a, b in zip(inside, split["in"])]
         outside = [a + b for a, b in zip(outside, split["out"])]
-        n, q, _, _ = fg.event_healing(folder)
+        n, q, _, _ = planes.event_healing(folder)
         events, quick = events + n, quick + q
-        joined += sum(e[3] for e in fg.map_error_events(folder))
-        longest = max([longest] + [ep[3] for ep in fg.wrong_episodes(folder)])
+        joined += sum(e[3] for e in planes.map_error_events(folder))
+        longest = max([longest] + [ep[3] for ep in planes.wrong_episodes(folder)])
     return (f"{len(folders)} seed(s): the motion model starts {min(starts):.2g}-{max(starts):.2g} units before the "
             f"turn (the end of the hallway) and ends {min(ends):.0f}-{max(ends):.0f}° into it; the end wall's tracked "
             f"length at its end {min(grown):.3f}-{max(grown):.3f} of its true length; wrong key-point claims (the "
             f"end claimed is not a real wall end in view) {inside[0]} of {inside[1]} inside the motion model, "
             f"{outside[0]} of {outside[1]} outside (longest wrong run {longest} iterations); {events} map-error "
-            f"events, {quick} healed within {fg.HEAL_ITERATIONS} iterations, {joined} of them a new plane joining the "
+            f"events, {quick} healed within {planes.HEAL_ITERATIONS} iterations, {joined} of them a new plane joining the "
             f"map")
 
 
@@ -492,19 +492,19 @@ LOST = 1.0  # units: a position error above this is a lost pose, not noise
 
 def e13(run):
     seed_folders(run)
-    stats = fg.grown_lengths(run.path)
+    stats = planes.grown_lengths(run.path)
     cells = []
-    for (name,), folders in fg.plane_sweep(run.path):
-        lost = [int(np.sum(fg.iterations(f, ["position_error"], fg.PLANE)["position_error"] > LOST)) for f in folders]
-        cells.append(fg.grown_text(name, stats[name]) + f"; position error above {LOST:g} in "
+    for (name,), folders in planes.plane_sweep(run.path):
+        lost = [int(np.sum(common.iterations(f, ["position_error"], common.PLANE)["position_error"] > LOST)) for f in folders]
+        cells.append(planes.grown_text(name, stats[name]) + f"; position error above {LOST:g} in "
                      f"{', '.join(map(str, lost))} iterations (per seed)")
     return "; ".join(cells)
 
 
 def e14(run):
-    seed_folders(run, (os.path.join(fg.PLANE, "planes.csv"), "plane_observations.csv", "ground_truth_path.tum"))
+    seed_folders(run, (os.path.join(common.PLANE, "planes.csv"), "plane_observations.csv", "ground_truth_path.tum"))
     cells = []
-    for name, (frustum, shape, wall, seen, mapped, true) in fg.frustum_turns(run.path).items():
+    for name, (frustum, shape, wall, seen, mapped, true) in planes.frustum_turns(run.path).items():
         k = int(np.argmax(seen["length"]))
         cells.append(f"{name}: wall {wall} in view up to {seen['length'][k]:.3g} (ψ {seen['psi_deg'][k]:.0f}°), "
                      f"{seen['length'][-1]:.3g} at the turn's end, farthest end {np.max(seen['range']):.3g}; mapped "
@@ -515,10 +515,10 @@ def e14(run):
 def e16(run):
     cells = []
     for name in ("rule29_on", "rule29_off"):
-        folder = fg.variant_folder_of(run.path, name)
+        folder = planes.variant_folder_of(run.path, name)
         for file in ("iterations.csv", "groups.csv", "planes.csv"):
-            run.file(os.path.relpath(folder, run.path), fg.PLANE, file)
-        n, back, groups = fg.motion_model_exits(folder)
+            run.file(os.path.relpath(folder, run.path), common.PLANE, file)
+        n, back, groups = planes.motion_model_exits(folder)
         s = plane_summary(run, os.path.relpath(folder, run.path))
         cells.append(f"{name}: {groups} groups; {back} of {n} motion models ended in a group made before them; "
                      f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, final mean map error "
@@ -527,11 +527,11 @@ def e16(run):
 
 
 def e22(run):
-    run.file(fg.PLANE, "iterations.csv")
+    run.file(common.PLANE, "iterations.csv")
     run.file("plane_observations.csv")
-    k, first, last = fg.one_plane_iteration(run.path)
-    d = run.iterations(["mm_active", "visible_planes", "position_error"], fg.PLANE)
-    loops, n = fg.run_loops(run.path)
+    k, first, last = planes.one_plane_iteration(run.path)
+    d = run.iterations(["mm_active", "visible_planes", "position_error"], common.PLANE)
+    loops, n = planes.run_loops(run.path)
     last_loop = d["iteration"] >= n * (loops - 1) / loops
     single = last_loop & (d["visible_planes"] == 1)
     return (f"on the last loop {int(np.sum(single))} iterations have a single plane in view, the motion model active "
@@ -608,8 +608,8 @@ def e27_real_time(run):
     """ms per iteration of EM and the Relative Plane algorithm, per E27 cell."""
     run.file("sweep.csv")
     cells = []
-    for variant, (em, rplane) in fg.demo_times(run.path).items():
-        run.read.append(os.path.join(os.path.relpath(fg.sweep_cell(run.path, variant), run.runs), fg.PLANE,
+    for variant, (em, rplane) in em.demo_times(run.path).items():
+        run.read.append(os.path.join(os.path.relpath(em.sweep_cell(run.path, variant), run.runs), common.PLANE,
                                      "iterations.csv"))
         total = em + rplane
         cells.append(f"{variant}: EM {np.median(em):.3g} + RP {np.median(rplane):.3g} ms median, together p95 "
@@ -621,7 +621,7 @@ def e27_real_time(run):
 def e30_bench(run):
     """Each failure case of the test bench beside the defaults: mean recall / precision over the seeds
     of EM2 and EM1 (bench.csv)."""
-    t = fg.bench_scores(run.path)
+    t = em.bench_scores(run.path)
     run.file("bench.csv")
     cases = [("close walls 0.1 apart", "close_parallel", "gap=0.1"), ("0.5 apart", "close_parallel", "gap=0.5"),
              ("d_in 0.6", "attached_smaller", "inlier_distance=0.6"),
@@ -644,7 +644,7 @@ def e29_speed(*runs):
     cells = []
     for run in runs:
         run.file("em_compare.csv")
-        it, by = fg.compare_frames(run.path)
+        it, by = em.compare_frames(run.path)
         if not {"em1", "em2"} <= set(by):
             raise rp.DataError(f"{os.path.join(run.path, 'em_compare.csv')}: no ms_em1 and ms_em2 columns")
         em1, em2 = by["em1"], by["em2"]
@@ -663,7 +663,7 @@ def e23_w_ma(*sweeps):
     for run in sweeps:
         run.file("sweep.csv")
         maps = []
-        for (name,), folders in fg.plane_sweep(run.path):
+        for (name,), folders in planes.plane_sweep(run.path):
             s = plane_summary(run, os.path.relpath(folders[0], run.path))
             maps.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
                         f"{s['duplicates']:.0f} duplicate(s), final mean map error {s['final_mean_map_error']:.3g}, "

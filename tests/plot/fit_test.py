@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Unit checks of the fit and smoothing helpers of scripts/plot/figures.py: fits recover known
+"""Unit checks of the fit and smoothing helpers of scripts/plot/measures/common.py: fits recover known
 coefficients, the moving average matches its definition. Usage: fit_test.py <source dir>"""
 import os
 import sys
@@ -7,7 +7,7 @@ import sys
 sys.path.insert(0, os.path.join(sys.argv[1], "scripts", "plot"))
 import numpy as np  # noqa: E402
 
-import figures as fg  # noqa: E402
+from measures import common as fg  # noqa: E402
 import relslam_plot as rp  # noqa: E402
 
 failures = []

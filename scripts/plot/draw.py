@@ -1,0 +1,65 @@
+"""Shared drawing: the Figure record every chapter's registry entries use, the figure size, axis labels,
+axes finishing and fitted curves."""
+import dataclasses
+import functools
+
+import numpy as np
+
+import catalogue
+from measures.common import SHAPES, fit_scale
+
+
+FIGSIZE, DPI = (10, 6), 100  # 1000 x 600 pixels; plot_test.sh checks it
+SMOOTH = 12  # Fig 136's moving average, iterations
+MS = "ms per iteration"
+LE = "landmark error (units)"
+
+
+def draw_fits(ax, x, y, kinds, color=None):
+    """Reference curves fitted to (x, y): SHAPES names through the origin, "poly" a quadratic
+    (drawn only with 3 or more points: fewer determine no curvature)."""
+    xs = np.linspace(min(x), max(x), 100)
+    for kind in kinds:
+        if kind == "poly":
+            if len(x) >= 3:
+                ax.plot(xs, np.polyval(np.polyfit(x, y, 2), xs), ":", color=color, label="quadratic fit")
+            continue
+        shape, name = SHAPES[kind]
+        c = fit_scale(x, y, shape)
+        ax.plot(xs, c * shape(xs), "--", color=color, lw=1, label=f"{name} fit, c = {c:.3g}")
+
+
+def finish(ax, xlabel, ylabel, legend=True):
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(alpha=0.3)
+    if legend and ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8)
+
+
+def label_densities(ax, x, y, densities):
+    for xi, yi, d in zip(x, y, densities):
+        ax.annotate(f"{d:g}", (xi, yi), textcoords="offset points", xytext=(3, 4), fontsize=7)
+
+
+@dataclasses.dataclass
+class Figure:
+    id: object  # thesis figure number, or a name for an extra
+    title: str
+    runs: tuple  # files or folders below RUNS, passed to draw in this order
+    draw: object  # draw(matplotlib figure, *run paths) -> None, or one line on what our run shows
+    quick_title: str = ""  # the title for reproduce.sh --quick's shortened runs, where they differ
+
+    @property
+    def name(self):
+        return f"fig{self.id}" if isinstance(self.id, int) else str(self.id)
+
+    @property
+    def caption(self):
+        return catalogue.CATALOGUE[self.id][0]
+
+    @property
+    def statement(self):
+        return catalogue.CATALOGUE[self.id][1]
+P = functools.partial
+POS = "position error (units)"
