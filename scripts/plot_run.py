@@ -110,26 +110,26 @@ def plot_top_view(run, colour):
     if view.empty:
         return None
     fig, ax = plt.subplots(figsize=(9, 7))
+    # As `relslam render` draws each half from above: point worlds z right, x up; planar worlds
+    # x right, z up. Both are rotations of the world, never its mirror image.
+    h, v = ("x", "z") if view.walls is not None else ("z", "x")
     if view.truth_points is not None:
-        ax.scatter(view.truth_points["x"], view.truth_points["z"], s=4, c="0.7", label="true landmarks")
+        ax.scatter(view.truth_points[h], view.truth_points[v], s=4, c="0.7", label="true landmarks")
     if view.walls is not None:
         for i, wall in enumerate(view.walls.itertuples(index=False)):
             ax.plot([wall.a_x, wall.b_x], [wall.a_z, wall.b_z], color="0.5", lw=3, alpha=0.6,
                     label="true walls" if i == 0 else None)
     for name, points in view.maps.items():
-        ax.scatter(points["x"], points["z"], s=6, color=colour[name], alpha=0.7, marker="x",
+        ax.scatter(points[h], points[v], s=6, color=colour[name], alpha=0.7, marker="x",
                    label=f"{algorithm_label(name)} map")
     for name, path in view.paths:
         truth = name == "truth"
-        ax.plot(path["x"], path["z"], lw=1.6 if truth else 1, ls="--" if truth else "-",
+        ax.plot(path[h], path[v], lw=1.6 if truth else 1, ls="--" if truth else "-",
                 color=TRUTH_COLOUR if truth else colour[name], label="true path" if truth else algorithm_label(name))
-    ax.set_xlabel("x (units)")
-    ax.set_ylabel("z (units)")
-    # Seen from above with y up, z points down the page; inverting the axis keeps the view a
-    # rotation of the world rather than its mirror image (as scripts/plot/simulation.py does).
-    ax.invert_yaxis()
+    ax.set_xlabel(f"{h} (units)")
+    ax.set_ylabel(f"{v} (units)")
     ax.set_aspect("equal", adjustable="datalim")
-    ax.legend(fontsize=8, loc="best")
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1))  # beside the map, never over it
     ax.set_title(f"{run.name}: top view")
     return fig
 

@@ -48,7 +48,7 @@ def plane_overlay(ax, run, groups=False, title=None):
             ax.annotate(f"X{gid}", (gx, gz), ha="center", va="center", fontsize=8, zorder=4,
                         bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "grey", "lw": 0.5})
     ax.set_aspect("equal", adjustable="datalim")
-    finish(ax, "x (units)", "z (units)")
+    finish(ax, "x (units)", "z (units)", legend="beside")
     if title:
         ax.set_title(title, fontsize=9)
 

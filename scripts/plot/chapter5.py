@@ -31,7 +31,7 @@ def frame_points(ax, points, title):
     ax.scatter(points[:, 0], points[:, 2], label=f"{len(points)} points (x, z)", **POINTS)
     draw_robot(ax)
     ax.set_aspect("equal", adjustable="datalim")
-    finish(ax, "x, robot frame (units)", "z, robot frame (units)")
+    finish(ax, "x, robot frame (units)", "z, robot frame (units)", legend="beside")
     ax.set_title(title, fontsize=9)
 
 
@@ -45,7 +45,7 @@ def em_planes_vs_visible(ax, run, iteration, points, ids, title):
     ax.scatter(points[:, 0], points[:, 2], **{**POINTS, "alpha": 0.25})
     draw_robot(ax)
     ax.set_aspect("equal", adjustable="datalim")
-    finish(ax, "x, robot frame (units)", "z, robot frame (units)")
+    finish(ax, "x, robot frame (units)", "z, robot frame (units)", legend="beside")
     ax.set_title(title, fontsize=9)
 
 
@@ -115,7 +115,7 @@ def bench_picture(ax, run, scene, variant, seed, extractor, truth_only=False):
                     label=f"{label} ({len(rows)})" if i == 0 else None, **style)
     draw_robot(ax)
     ax.set_aspect("equal", adjustable="datalim")
-    finish(ax, "x (units)", "z (units)")
+    finish(ax, "x (units)", "z (units)", legend="beside")
     ax.legend(fontsize=7)
 
 

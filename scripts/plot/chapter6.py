@@ -3,9 +3,11 @@ import os
 
 import matplotlib.pyplot as plt
 import numpy as np
+import pandas as pd
 
-from draw import Figure, LE, MS, P, POS, SMOOTH, draw_fits, finish, label_densities
+from draw import Figure, LE, MS, P, POS, SMOOTH, draw_fits, finish, label_densities, readable
 from measures.common import ALG, algorithms, iterations, line_fit, steady, sweep_series
+from measures.compare import side_by_side
 from measures.points import COMPONENTS, density_table, vp_benchmarks, vp_landmarks
 import relslam_plot as rp
 
@@ -39,7 +41,7 @@ def single_series(fig, run, column, ylabel, stride=1, zero=False):
     """One relative_point column against the iteration (Figs 130, 132, 134, 167-171)."""
     d = iterations(run, [column])
     ax = fig.subplots()
-    label = ALG if stride == 1 else f"{ALG} (every {stride}th iteration)"
+    label = readable(ALG) if stride == 1 else f"{readable(ALG)} (every {stride}th iteration)"
     ax.plot(d["iteration"][::stride], d[column][::stride], lw=0.8, label=label)
     if zero:
         ax.axhline(0, color="grey", lw=0.6)
@@ -53,7 +55,8 @@ def location(fig, run, axis):
     n = min(len(truth[axis]), len(d["iteration"]))
     ax = fig.subplots()
     ax.plot(truth["iteration"][:n], truth[axis][:n], lw=1.5, label=f"true {axis}")
-    ax.plot(d["iteration"][:n], truth[axis][:n] + d["e" + axis][:n], lw=0.8, label=f"estimated {axis} ({ALG})")
+    ax.plot(d["iteration"][:n], truth[axis][:n] + d["e" + axis][:n], lw=0.8,
+            label=f"estimated {axis} ({readable(ALG)})")
     finish(ax, "iteration", f"{axis} location (units)")
 
 
@@ -66,21 +69,39 @@ def compare_runs(fig, *runs, column, ylabel, labels):
     finish(ax, "iteration", ylabel)
 
 
-def compare_algorithms(fig, run, column, ylabel, logy=False):
-    """Every algorithm of one run on the same stream (Figs 146-152)."""
-    ax = fig.subplots()
+def draw_algorithms(ax, run, column):
+    """Every algorithm of one run on the same stream; returns {algorithm: DataFrame of iteration, column}."""
+    frames = {}
     for algorithm in algorithms(run):
         d = iterations(run, [column], algorithm)
-        ax.plot(d["iteration"], d[column], lw=0.9, label=algorithm)
+        ax.plot(d["iteration"], d[column], lw=0.9, label=readable(algorithm))
+        frames[algorithm] = pd.DataFrame({"iteration": d["iteration"], column: d[column]})
+    return frames
+
+
+def side_by_side_text(frames, column, statistic="mean"):
+    """One line on what a comparison figure shows (compare.side_by_side), with each algorithm's name."""
+    rows, shared = side_by_side(frames, column, statistic)
+    cells = [f"{readable(a)} {statistic} {v:.3g}, last {last:.3g} ({n} iterations)" for a, n, v, last in rows]
+    ratio = f"; ratio {rows[0][2] / rows[1][2]:.3g}" if len(rows) == 2 and rows[1][2] else ""
+    return f"over the {shared} iterations all ran: " + "; ".join(cells) + ratio
+
+
+def compare_algorithms(fig, run, column, ylabel, logy=False):
+    """Every algorithm of one run on the same stream (Figs 146-152), and what it shows."""
+    ax = fig.subplots()
+    frames = draw_algorithms(ax, run, column)
     if logy:
         ax.set_yscale("log")  # the EKF is orders of magnitude slower (thesis Fig 148)
     finish(ax, "iteration", ylabel)
-    return ax
+    return side_by_side_text(frames, column, "median" if column == "runtime_ms" else "mean")
 
 
 def point_count(fig, run):
     """Fig 149: map sizes, plus the true landmarks seen so far when observations.csv was written."""
-    ax = compare_algorithms(fig, run, "landmarks_in_map", "landmarks on the map")
+    ax = fig.subplots()
+    frames = draw_algorithms(ax, run, "landmarks_in_map")
+    shows = side_by_side_text(frames, "landmarks_in_map")
     path = os.path.join(run, "observations.csv")
     if os.path.exists(path):
         obs = rp.read_table(path, ["iteration", "true_id"])
@@ -88,7 +109,9 @@ def point_count(fig, run):
         first_seen = np.sort(obs["iteration"][first])
         it = np.unique(obs["iteration"])
         ax.plot(it, np.searchsorted(first_seen, it, side="right"), "k:", lw=1, label="true points seen so far")
-        ax.legend(fontsize=8)
+        shows += f"; {len(first_seen)} true points seen by the last iteration"
+    finish(ax, "iteration", "landmarks on the map")
+    return shows
 
 
 def runtime_difference(fig, a, b, label, trend=False):
@@ -114,7 +137,8 @@ def runtime_trend(fig, run):
     it, t = steady(d["iteration"]), steady(d["runtime_ms"])
     slope, intercept = line_fit(it, t)
     ax = fig.subplots()
-    ax.plot(it, rp.moving_average(t, SMOOTH), lw=0.8, label=f"{ALG}, {SMOOTH}-iteration moving average")
+    ax.plot(it, rp.moving_average(t, SMOOTH), lw=0.8,
+            label=f"{readable(ALG)}, {SMOOTH}-iteration moving average")
     ax.plot(it, slope * it + intercept, "r--", label=f"linear regression, slope {slope * 1000:.3g} ms per 1000 it.")
     finish(ax, "iteration", MS)
 
@@ -242,12 +266,13 @@ def vp_map(fig, run):
         if algorithm != ALG and not os.path.isdir(os.path.join(run, algorithm)):
             continue
         path = rp.read_table(os.path.join(run, algorithm, "trajectory_gps_frame.csv"), ["x", "y"])
-        ax.plot(path["x"], path["y"], color=colour, lw=1, label=f"{algorithm} trajectory")
+        ax.plot(path["x"], path["y"], color=colour, lw=1, label=f"{readable(algorithm)} trajectory")
         lm = vp_landmarks(run, algorithm)
-        ax.plot(lm["x"], lm["y"], marker, color=colour, mfc="none", ls="none", label=f"{algorithm} landmarks")
+        ax.plot(lm["x"], lm["y"], marker, color=colour, mfc="none", ls="none",
+                label=f"{readable(algorithm)} landmarks")
     vp_gps(ax, run, color="black", ms=3)
     ax.set_aspect("equal", adjustable="datalim")
-    finish(ax, "x (m, GPS frame)", "y (m, GPS frame)")
+    finish(ax, "x (m, GPS frame)", "y (m, GPS frame)", legend="beside")
 
 
 def vp_overlay(fig, run):
@@ -263,14 +288,14 @@ def vp_overlay(fig, run):
     ax = fig.subplots()
     fitted = os.path.exists(os.path.join(run, ALG, VP_FITTED))
     ref, rel = vp_landmarks(run, "ekf2d"), vp_landmarks(run, ALG, VP_FITTED if fitted else "landmarks_gps_frame.csv")
-    ax.plot(ref["x"], ref["y"], "o", ms=11, mfc="gold", mec="black", ls="none", label="ekf2d reference map")
+    ax.plot(ref["x"], ref["y"], "o", ms=11, mfc="gold", mec="black", ls="none", label=f"{readable('ekf2d')} reference map")
     ax.plot(rel["x"], rel["y"], "s", ms=5, color="blue", ls="none",
-            label=f"{ALG} ({'after the similarity fit' if fitted else 'rigid GPS fit of its trajectory'}): "
+            label=f"{readable(ALG)} ({'after the similarity fit' if fitted else 'rigid GPS fit of its trajectory'}): "
                   f"{fit['matched'][row]:.0f} of {fit['landmarks'][row]:.0f} matched, similarity-fit RMS "
                   f"{fit['rms'][row]:.3g} m, scale {fit['scale'][row]:.4g}")
     vp_gps(ax, run, color="lightgrey", ms=2)
     ax.set_aspect("equal", adjustable="datalim")
-    finish(ax, "x (m, GPS frame)", "y (m, GPS frame)")
+    finish(ax, "x (m, GPS frame)", "y (m, GPS frame)", legend="beside")
 
 
 def vp_timing(fig, path):
@@ -297,7 +322,8 @@ def _axis_figures():
                                                                  zero=True)),
                 Figure(location_fig, f"{axis} location", ("s-f8",), P(location, axis=axis)),
                 Figure(forty_fig, f"{axis} error over 40 loops", ("s-40",),
-                       P(single_series, column="e" + axis, ylabel=ylabel, stride=10, zero=True))]
+                       P(single_series, column="e" + axis, ylabel=ylabel, stride=10, zero=True),
+                       quick_title=f"{axis} error over {{loops}} loops (quick; the thesis ran 40)")]
     return out
 
 
@@ -305,12 +331,12 @@ def _binning(number, title, column, ylabel, heuristic, **kw):
     return Figure(number, title, ("s-bin",), P(binning_lines, column=column, ylabel=ylabel, heuristic=heuristic, **kw))
 
 
-def _variants(number, title, sweep, columns, ylabels, **kw):
-    return Figure(number, title, (sweep,), P(variant_lines, columns=columns, ylabels=ylabels, **kw))
+def _variants(number, title, sweep, columns, ylabels, quick_title="", **kw):
+    return Figure(number, title, (sweep,), P(variant_lines, columns=columns, ylabels=ylabels, **kw), quick_title)
 
 
-def _compare(number, title, run, column, ylabel, **kw):
-    return Figure(number, title, (run,), P(compare_algorithms, column=column, ylabel=ylabel, **kw))
+def _compare(number, title, run, column, ylabel, quick_title="", **kw):
+    return Figure(number, title, (run,), P(compare_algorithms, column=column, ylabel=ylabel, **kw), quick_title)
 
 
 def _density(number, title, column, fits):
@@ -363,7 +389,8 @@ FIGURES = [
     _variants(125, "NextGroupMin 1", "s-f8-2l-const", ["landmark_error"], [LE],
               emphasis=("next1", "next1-lb90", "next1-prevmax50"),
               only=("baseline", "next1", "next1-lb90", "next1-prevmax50")),
-    _variants(126, "seven loops, three settings", "s-f8-7l-const", ["landmark_error"], [LE]),
+    _variants(126, "seven loops, three settings", "s-f8-7l-const", ["landmark_error"], [LE],
+              quick_title="{loops} loops, three settings (quick; the thesis ran 7)"),
     *_axis_figures(),
     Figure(136, "run time from iteration 200, double-size figure eight", ("s-f8-2x",), runtime_trend),
     _density(137, "run time against point density", "runtime_ms", ("n", "nlogn", "poly")),
@@ -377,19 +404,28 @@ FIGURES = [
            P(density_pair, labels=("quads (default cell)", "small quads (cell 1.5)"), fits=("nlogn", "poly"))),
     Figure(145, "small quads, octree from density 400", ("s-dens-qs", "s-dens-o"),
            P(density_pair, labels=("small quads", "octree"), fits=("n", "nlogn"))),
-    _compare(146, "figure-eight landmark error", "s-ekf-f8", "landmark_error", LE),
-    _compare(147, "figure-eight position error", "s-ekf-f8", "position_error", POS),
-    _compare(148, "figure-eight run time", "s-ekf-f8", "runtime_ms", MS, logy=True),
-    Figure(149, "figure-eight point count", ("s-ekf-f8",), point_count),
-    _compare(150, "straight-line landmark error", "s-line", "landmark_error", LE),
-    _compare(151, "straight-line position error", "s-line", "position_error", POS),
-    _compare(152, "stationary landmark error", "s-stat", "landmark_error", LE),
+    _compare(146, "figure-eight landmark error", "s-ekf-f8", "landmark_error", LE,
+             quick_title="figure-eight landmark error, first {iterations} iterations (quick)"),
+    _compare(147, "figure-eight position error", "s-ekf-f8", "position_error", POS,
+             quick_title="figure-eight position error, first {iterations} iterations (quick)"),
+    _compare(148, "figure-eight run time", "s-ekf-f8", "runtime_ms", MS, logy=True,
+             quick_title="figure-eight run time, first {iterations} iterations (quick)"),
+    Figure(149, "figure-eight point count", ("s-ekf-f8",), point_count,
+           quick_title="figure-eight point count, first {iterations} iterations (quick)"),
+    _compare(150, "straight-line landmark error", "s-line", "landmark_error", LE,
+             quick_title="straight-line landmark error, first {iterations} iterations (quick)"),
+    _compare(151, "straight-line position error", "s-line", "position_error", POS,
+             quick_title="straight-line position error, first {iterations} iterations (quick)"),
+    _compare(152, "stationary landmark error", "s-stat", "landmark_error", LE,
+             quick_title="stationary landmark error, first {iterations} iterations (quick)"),
     Figure(163, "Victoria Park, scans 1181-1642", ("vp-1181",), vp_map),
     Figure(164, "Victoria Park 1181-1642 over the ekf2d map", ("vp-1181",), vp_overlay),
     Figure(165, "Victoria Park, scans 4220-4634", ("vp-4220",), vp_map),
     Figure(166, "Victoria Park 4220-4634 over the ekf2d map", ("vp-4220",), vp_overlay),
     Figure(167, "landmark error over 40 loops", ("s-40",), P(single_series, column="landmark_error", ylabel=LE,
-                                                                stride=10)),
+                                                                stride=10),
+           quick_title="landmark error over {loops} loops (quick; the thesis ran 40)"),
     Figure(168, "position error over 40 loops", ("s-40",), P(single_series, column="position_error", ylabel=POS,
-                                                                stride=10)),
+                                                                stride=10),
+           quick_title="position error over {loops} loops (quick; the thesis ran 40)"),
 ]

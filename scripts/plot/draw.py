@@ -7,6 +7,7 @@ import numpy as np
 
 import catalogue
 from measures.common import SHAPES, fit_scale
+from relslam_data.names import algorithm_label as readable  # the one table of readable names: ekf6d -> "EKF (MRPT, 6D)"
 
 
 FIGSIZE, DPI = (10, 6), 100  # 1000 x 600 pixels; plot_test.sh checks it
@@ -30,11 +31,16 @@ def draw_fits(ax, x, y, kinds, color=None):
 
 
 def finish(ax, xlabel, ylabel, legend=True):
+    """Axis labels, a light grid and the legend: legend="beside" puts it right of the axes, for maps
+    and top views, whose every corner may hold data."""
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.grid(alpha=0.3)
     if legend and ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=8)
+        if legend == "beside":
+            ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1), borderaxespad=0)
+        else:
+            ax.legend(fontsize=8)
 
 
 def label_densities(ax, x, y, densities):
@@ -48,7 +54,7 @@ class Figure:
     title: str
     runs: tuple  # files or folders below RUNS, passed to draw in this order
     draw: object  # draw(matplotlib figure, *run paths) -> None, or one line on what our run shows
-    quick_title: str = ""  # the title for reproduce.sh --quick's shortened runs, where they differ
+    quick_title: str = ""  # for reproduce.sh --quick's shortened runs: "{loops}", "{iterations}" from the run
 
     @property
     def name(self):

@@ -27,6 +27,7 @@ import chapter5
 import chapter6
 import relslam_plot as rp
 from draw import DPI, FIGSIZE, Figure
+from measures.common import ALG, read_json
 
 
 def chapter_of(figure):
@@ -55,6 +56,30 @@ class Result:
     shows: str = ""  # what our run shows, measured from its files
 
 
+def what_was_run(run):
+    """{loops, iterations} of a simulated run folder (a sweep: its first cell), from its manifest and
+    iterations.csv, for a quick-mode title; empty where the folder has neither."""
+    for folder in [run] + sorted(os.path.join(root, d) for root, dirs, _ in os.walk(run) for d in dirs):
+        path = os.path.join(folder, "manifest.json")
+        if os.path.isfile(path) and os.path.isfile(os.path.join(folder, "summary.csv")):
+            sim = read_json(path).get("scenario", {}).get("sim", {})
+            it = os.path.join(folder, ALG, "iterations.csv")
+            n = sum(1 for _ in open(it)) - 1 if os.path.isfile(it) else sim.get("iterations")
+            return {"loops": sim.get("loops"), "iterations": n}
+    return {}
+
+
+def title(figure, runs, quick):
+    """The figure's title; in quick mode the one that says what was run, where the figure has one."""
+    if not (quick and figure.quick_title):
+        return figure.title
+    facts = what_was_run(os.path.join(runs, figure.runs[0]))
+    try:
+        return figure.quick_title.format(**facts)
+    except (KeyError, ValueError):
+        return figure.title + " (quick run)"
+
+
 def render(figure, runs, out, quick=False):
     """Draws one figure into OUT/<name>.png, or says why not. quick: the runs are reproduce.sh's
     shortened ones, so the title says what was run (Figure.quick_title) rather than the thesis's run."""
@@ -69,7 +94,7 @@ def render(figure, runs, out, quick=False):
         return Result(figure, "error", str(e))
     prefix = (f"Fig. {figure.id} — " if isinstance(figure.id, int)
               else f"Paper Fig. {figure.id[5:]} — " if str(figure.id).startswith("paper") else "Extra — ")
-    fig.suptitle(prefix + (figure.quick_title if quick and figure.quick_title else figure.title))
+    fig.suptitle(prefix + title(figure, runs, quick))
     shows = shows if isinstance(shows, str) else ""  # helpers such as compare_algorithms return their axes
     return Result(figure, "ok", rp.save_png(fig, os.path.join(out, figure.name + ".png"), DPI), shows)
 

@@ -11,6 +11,8 @@ import sys
 
 import matplotlib
 
+# The run-folder loader and the name table (python/relslam_data) are shared with plot_run.py.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 matplotlib.use("Agg")  # headless: CI and servers have no display
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402

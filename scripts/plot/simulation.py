@@ -45,18 +45,17 @@ def main():
     fig, ax = plt.subplots(figsize=(10, 5))
     static = landmarks[landmarks["dynamic"] == 0]
     moving = landmarks[landmarks["dynamic"] == 1]
-    ax.scatter(static["x"], static["z"], s=2, c="0.6", label="landmarks")
+    # Seen from above as `relslam render` draws it (z right, x up): a rotation of the world, not its
+    # mirror image, and the same orientation as the renders next to these plots.
+    ax.scatter(static["z"], static["x"], s=2, c="0.6", label="landmarks")
     if len(moving):
-        ax.scatter(moving["x"], moving["z"], s=12, c="tab:red", label="dynamic landmarks (at iteration 0)")
-    ax.plot(path["x"], path["z"], "b-", lw=1, label="robot path")
+        ax.scatter(moving["z"], moving["x"], s=12, c="tab:red", label="dynamic landmarks (at iteration 0)")
+    ax.plot(path["z"], path["x"], "b-", lw=1, label="robot path")
     ax.plot([0], [0], "ko", label="start (world origin)")
-    ax.set_xlabel("x (units)")
-    ax.set_ylabel("z (units)")
-    # Seen from above with y up, z points down the page; inverting the axis keeps the view a
-    # rotation of the world rather than its mirror image (the robot's left is +x).
-    ax.invert_yaxis()
+    ax.set_xlabel("z (units)")
+    ax.set_ylabel("x (units)")
     ax.set_aspect("equal")
-    ax.legend(loc="upper right", fontsize=8)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=8)  # beside the map, never over it
     ax.set_title(f"{name}: top view of path and landmarks")
     written.append(rp.save(fig, out, "sim_top_view"))
 

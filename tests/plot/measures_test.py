@@ -51,6 +51,14 @@ class Compare(unittest.TestCase):
         self.assertEqual((verdict, n), ("does not hold", 0))
         self.assertTrue(math.isnan(r))
 
+    def test_side_by_side_takes_the_statistic_over_shared_iterations(self):
+        frames = {"relative_point": iterations([1.0, 3.0, 5.0, 7.0]), "ekf6d": iterations([2.0, 4.0])}
+        rows, shared = compare.side_by_side(frames, "position_error", "mean")
+        self.assertEqual(shared, 2)
+        self.assertEqual(rows, [("relative_point", 4, 2.0, 7.0), ("ekf6d", 2, 3.0, 4.0)])
+        rows, _ = compare.side_by_side(frames, "position_error", "median")
+        self.assertEqual(rows[0][2], 2.0)
+
     def test_faster_verdict(self):
         self.assertEqual(compare.faster_verdict(1000.0, 100), "holds")
         self.assertEqual(compare.faster_verdict(5.0, 100), "partly")

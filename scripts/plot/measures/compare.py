@@ -75,3 +75,20 @@ def faster_verdict(speedup, at_least):
     if not math.isfinite(speedup):
         return "does not hold"
     return "holds" if speedup >= at_least else "partly" if speedup > 1 else "does not hold"
+
+
+def side_by_side(frames, column, statistic="mean"):
+    """What a figure of several algorithms' `column` shows: [(algorithm, iterations it ran, statistic
+    over the iterations all of them ran, its last value)], in the frames' order. frames: {algorithm:
+    DataFrame with iteration and column}."""
+    shared = None
+    for d in frames.values():
+        its = set(d["iteration"][d[column].notna()])
+        shared = its if shared is None else shared & its
+    out = []
+    for name, d in frames.items():
+        both = d[d["iteration"].isin(shared or set())][column].to_numpy(dtype=float)
+        value = float(np.median(both) if statistic == "median" else np.mean(both)) if len(both) else float("nan")
+        last = d[column].dropna()
+        out.append((name, len(d), value, float(last.iloc[-1]) if len(last) else float("nan")))
+    return out, len(shared or ())
