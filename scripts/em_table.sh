@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The plane-extraction table of README "Plane extraction" (issue 14 §6): EM2, EM1 and the Open3D
+# The plane-extraction table of README "Plane extraction": EM2, EM1 and the Open3D
 # baseline on the identical point frames of p-em-office-noise (E24: Map D, small frustum) and
 # p-em-room-noise (E26: Map E, large frustum), σ_pt 0.05, seed 1, and the whole pipeline's time
 # (extraction plus Relative Plane with parts 2-3 per iteration, simulator excluded).

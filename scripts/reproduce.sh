@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Runs the thesis's Chapter 4 (Relative Plane), Chapter 5 (EM plane extraction) and Chapter 6
 # (Relative Point) experiments and
-# writes the report: each figure next to its thesis
-# number and caption (report/index.html) and the thesis's numbers next to ours (report/claims.md).
+# writes the report: a summary page (report/index.html: Relative Point against the EKF and the other
+# baselines, every thesis claim with its verdict), one page per chapter with each figure next to its
+# thesis number and caption, and the thesis's numbers next to ours (report/claims.md).
 #   scripts/reproduce.sh [--quick] [--out DIR] [--report DIR] [--binary PATH] [--jobs N]
-#     --quick    shortened runs (fewer iterations and loops; about 16 minutes on two shared cores, measured 16 min 26 s)
+#     --quick    shortened runs (fewer iterations and loops; minutes rather than hours: docs/figures.md)
 #     --out      run folders (default runs/reproduce, or runs/reproduce-quick with --quick)
 #     --report   report folder (default report)
 #     --binary   use this relslam and skip installing and building (as the long CTest does)
@@ -68,7 +69,7 @@ set_each() { local a=(); for kv in "$@"; do a+=(--set "$kv"); done; echo "${a[@]
 
 echo "reproduce: thesis Chapters 4 and 6 into $out ($([ $quick -eq 1 ] && echo quick || echo full) mode); log in $log"
 
-# 4.2 - 4.3: the Relative Plane experiments (spec relative_plane_em.md §6.1: E01-E22, E31, E32).
+# 4.2 - 4.3: the Relative Plane experiments (E01-E22, E31, E32).
 # Seconds each, so quick mode runs them in full; the variant files go through sweep.
 step p-e01-invariance    run p-e01-invariance p-e01-invariance
 step p-four-planes       run p-four-planes p-four-planes
@@ -80,7 +81,7 @@ step p-e31-chain-order   sweep p-e31-chain-order
 step p-office            run p-office p-office
 step p-e21-completed-map run p-e21-completed-map p-e21-completed-map
 step p-e10-rule21-22     sweep p-e10-rule21-22
-# issue 13 experiments (Relative Plane part 2: E02, E07-E09, E12, E15, E18, E32). Seconds each too;
+# experiments (Relative Plane part 2: E02, E07-E09, E12, E15, E18, E32). Seconds each too;
 # quick mode runs fewer noise seeds, and E32 (whose times are the result: one run at a time) 1 and 2 loops.
 seeds() { if [ $quick -eq 1 ]; then echo "--seeds 2"; else echo "--seeds 5"; fi; }
 step p-e02-key-point-pairs run p-e02-key-point-pairs p-e02-key-point-pairs
@@ -90,14 +91,14 @@ step p-e09-plane5        sweep p-e09-plane5
 step p-e12-rule28        sweep p-e12-rule28
 step p-e15-loop-closure-map-e sweep p-e15-loop-closure-map-e $(seeds)
 step p-e18-collinear     run p-e18-collinear p-e18-collinear
-# issue 15 (part 3): E19's save system needs the 1200-slot store to wrap (Map D at a quarter speed,
+# (part 3): E19's save system needs the 1200-slot store to wrap (Map D at a quarter speed,
 # about a minute on two cores, so quick mode runs it whole); E20: Rule 37 on Map E, two loops.
 step p-e19-save-system   sweep p-e19-save-system
 step p-e20-pseudo-merge  sweep p-e20-pseudo-merge $(seeds)
 step p-e32-runtime       relslam sweep scenarios/p-e32-runtime.json --out "$out/p-e32-runtime" --force -q --jobs 1 \
                            $([ $quick -eq 1 ] && echo "--param planar.loops=1,2")
 step p-room              run p-room p-room
-# issue 15 experiments (Relative Plane part 3): E16 (Rule 29), E17 (Rules 31-34: interval checks,
+# experiments (Relative Plane part 3): E16 (Rule 29), E17 (Rules 31-34: interval checks,
 # hints and roll-back); the motion model's E11 (Map E1's first corner), E13 (Rule 23's growth
 # threshold), E14 (frustum shape) and E22 (one partial plane in view). Seconds each.
 step p-e16-rule29        sweep p-e16-rule29
@@ -107,7 +108,7 @@ step p-e13-grow-threshold sweep p-e13-grow-threshold $(seeds)
 step p-e14-frustum-shape sweep p-e14-frustum-shape
 step p-e22-one-partial-plane run p-e22-one-partial-plane p-e22-one-partial-plane
 
-# Chapter 5 and the companion paper (spec relative_plane_em.md §6.1, E23-E30): points -> EM ->
+# Chapter 5 and the companion paper (E23-E30): points -> EM ->
 # Relative Plane (Figs 46, 105-108, paper Figs 6-8; E23's w_ma variants, the E28 noise sweep), the EM
 # test bench (Figs 55-61) and EM1 vs EM2 on identical frames (E29). E27 times EM and the algorithm per
 # iteration: one run at a time.
@@ -152,7 +153,8 @@ step s-dyn3              run s-dyn3 s-dyn3
 step s-dyn3-no-binning   run s-dyn3-no-binning s-dyn3 --set relative_point.final_group.binning=false
 
 # 6.7: against MRPT's 6D EKF (the slow part: the EKF's cost grows with its map).
-step s-ekf-f8            run s-ekf-f8 s-ekf-f8 $(set_each $(short sim.iterations=2000))
+# Quick mode keeps S-EKF-F8's loop closure (iteration 3800): Figs 146-149 are about what happens there.
+step s-ekf-f8            run s-ekf-f8 s-ekf-f8 $(set_each $(short sim.iterations=4200))
 step s-line              run s-line s-line $(set_each $(short sim.iterations=2000))
 step s-stat              run s-stat s-stat $(set_each $(short sim.iterations=2000))
 step s-dyn               run s-dyn s-dyn $(set_each $(short sim.iterations=2000))
@@ -178,6 +180,10 @@ step s-40                run s-40 s-40 $(set_each $(short sim.loops=5))
 # Renders (Figs 127-129, 153-162): the runs replayed by relslam render.
 render_figures() {
   local r="$out/renders"
+  # renders.csv: which run, algorithm and iteration (empty: the last) each render draws, so that the
+  # report can say what the run shows there.
+  printf 'figure,run,algorithm,iteration,view\n' > "$r/renders.csv"
+  printf '%s\n' 127,s-f8,relative_point,,top 128,s-f8,relative_point,,side 129,s-f8,relative_point,,top >> "$r/renders.csv"
   # (errexit does not reach into a function called from `if`: each command returns on failure)
   relslam render "$out/s-f8" --out "$r/fig127.png" -q || return 1
   relslam render "$out/s-f8" --view side --out "$r/fig128.png" -q || return 1
@@ -205,11 +211,13 @@ PY
   local fig=153
   for k in "$1" "$2" "$3" "$4"; do
     relslam render "$out/s-dyn" --algorithm ekf6d --iteration "$k" --fit robot --out "$r/fig$fig.png" -q || return 1
+    echo "$fig,s-dyn,ekf6d,$k,top" >> "$r/renders.csv"
     fig=$((fig + 1))
   done
   shift 4
   for k in "$@"; do
     relslam render "$out/s-dyn" --iteration "$k" --fit robot --labels on --out "$r/fig$fig.png" -q || return 1
+    echo "$fig,s-dyn,relative_point,$k,top" >> "$r/renders.csv"
     fig=$((fig + 1))
   done
 }

@@ -23,6 +23,7 @@ packages=(
   python3 python3-matplotlib python3-pandas python3-numpy
   parallel
   mkdocs mkdocs-material
+  chromium
 )
 if [ $fuzz -eq 1 ]; then
   # Debian's clang 14 builds the fuzz targets with libstdc++ 12; libFuzzer and the sanitizer

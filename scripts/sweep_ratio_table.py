@@ -4,7 +4,7 @@
 Each run's summary.csv has a row "relative_point/ekf6d" (the ratio on the same stream);
 aggregate.csv gives its mean and 95 % confidence interval over the seeds of each cell. This
 prints them per cell for ATE, mean landmark error (final) and median time per iteration, and
-marks the cells where the ATE ratio's mean exceeds the goal (issue 16: 1.5).
+marks the cells where the ATE ratio's mean exceeds the goal (1.5).
 
     python3 scripts/sweep_ratio_table.py runs/sweep16/aggregate.csv [--goal 1.5]
 """

@@ -1,9 +1,8 @@
-"""Thesis figure captions and what the thesis says about each: Chapter 4 (spec relative_plane_em.md
-§6, with the companion paper's figures) and Chapter 6 (spec relative_point.md §8).
+"""Thesis figure captions and what the thesis says about each: Chapter 4 (with the companion paper's
+figures), Chapter 5 and Chapter 6.
 
 Captions are the thesis's own (shortened where they run on; the paper's caption follows where the
-paper shows the same figure); statements quote or paraphrase the thesis text around the figure, or
-the spec's "thesis statements to check" column. figures.py and report.py read this table, so a
+paper shows the same figure); statements quote or paraphrase the thesis text around the figure. figures.py and report.py read this table, so a
 caption is written once.
 
 Usage: import catalogue; caption, statement = catalogue.CATALOGUE[146]
@@ -25,18 +24,18 @@ CATALOGUE = {
          "and b, but not rotational invariant as seen in viewpoint c and d",
          "Thesis 4.2.1 / 4.3.1 (Rule 3): the relative location of two planes is translation invariant but not "
          "rotation invariant; rotating both planes so plane 1 is at 0° makes the offset \"consistent regardless of "
-         "the angle plane 1 is viewed by the robot\". Spec E01: the raw midpoint difference changes with the "
+         "the angle plane 1 is viewed by the robot\". Experiment E01: the raw midpoint difference changes with the "
          "heading, the Rule 3 offset is constant up to noise."),
     67: ("A completed map. Paper Fig. 2: A completed map. The lines from the planes signify which grouping the "
          "plane belongs to",
          "Paper §II.B: the RltPlanes are drawn in blue with lines to every grouping they are part of, the groupings "
-         "labelled X and a number; the group centroid is for display only (§II.D). Spec E21 (Map D, one loop): "
+         "labelled X and a number; the group centroid is for display only (§II.D). Experiment E21 (Map D, one loop): "
          "the completed map, every plane linked to its groups."),
     68: ("Showing two planes inside of a viewing frustum. Paper Fig. 4: The viewing frustums are the trapezoid "
          "shapes. There are two planes inside both only partially visible. Extending the plane from the corner "
          "points (left figure) yields two correct midpoints (circle) and two incorrect ones (triangles). This forms "
          "4 comparison pairs (right figure) with one is green being the correct pair",
-         "Thesis 4.2.3 / paper §II.C (spec E02): of the four assumed-midpoint pairs, the one built from the two "
+         "Thesis 4.2.3 / paper §II.C (experiment E02): of the four assumed-midpoint pairs, the one built from the two "
          "static corners has the lowest standard deviation; that corner is the key point."),
     70: ("The four planes problem",
          "Thesis 4.3.1 (E03): with Rules 1-5 \"the four planes problem is solved\"; the blue mapped planes sit next "
@@ -157,10 +156,10 @@ CATALOGUE = {
                   "0.296 ms, 0.40 ms and 0.57 ms per scan (2.15 s, 2.9 s and 4.13 s for 7249 scans) on an "
                   "AMD Athlon 64 3400+."),
     "vp-bridged": ("Victoria Park's whole log, the Relative Point algorithm bridged by dead reckoning (beyond the "
-                   "thesis, issue 19; not a thesis figure)",
+                   "thesis; not a thesis figure)",
                    "The thesis ran two windows only: 381 scans have fewer than three trees. Here dead reckoning "
                    "bridges them and checks every registration (scenarios/victoria-park-bridged.json)."),
-    # issue 14 Chapter 5: EM plane extraction (thesis 3.5, 5.2) and the companion paper's demo.
+    # Chapter 5: EM plane extraction (thesis 3.5, 5.2) and the companion paper's demo.
     46: ("The simulated points and lines seen in the bottom left. The bottom right has the results of the EM "
          "algorithm",
          "Thesis 3.5: a simulator produces 3D points for the robot's viewpoint and the EM algorithm finds the planes "
@@ -207,7 +206,7 @@ CATALOGUE = {
                "map is still good; with more noise EM has trouble finding planes (E27, σ_pt 0.05)."),
     "e27-timing": ("Run time per iteration of EM and of the Relative Plane algorithm (E27; not a paper figure)",
                    "Paper §III: the simulation including EM runs in real time, 30 iterations a second on an AMD 64 "
-                   "3400+ (spec §6.3: well below 33 ms per iteration)."),
+                   "3400+ (well below 33 ms per iteration)."),
     "e29-em-compare": ("EM1 against EM2 on identical point frames (E29; not a thesis figure)",
                        "Thesis 3.5.4: EM algorithm 2 is about twice as fast as EM algorithm 1, with similar quality."),
     "e23-w-ma": ("Map error per iteration with Rule 18's moving-average window changed (E23, E24; not a thesis "
@@ -222,7 +221,7 @@ CATALOGUE = {
                         "with d_in = max(0.05, 3 σ_pt), σ_pt 0 to 0.2]."),
 }
 
-# issue 13 experiments: Relative Plane part 2 (thesis 4.3.3-4.3.7.1; spec E02, E07-E10, E12, E15, E18, E32).
+# experiments: Relative Plane part 2 (thesis 4.3.3-4.3.7.1; experiments E02, E07-E10, E12, E15, E18, E32).
 CATALOGUE.update({
     74: ("Using the minimum RltXPoint interval for calculations",
          "Thesis 4.3.3 (E07): each pair compared over the interval in which every plane of the group is visible: "
@@ -293,13 +292,13 @@ CATALOGUE.update({
           "Thesis 4.3.7.4 (E20, Rule 37): one-way links from each plane in view to the RltXPoints of its global "
           "duplicates, used for charting only, make the right RltXPoint current [ours: the final maps, Rule 37 off "
           "and on]."),
-    "e32-runtime": ("Run time per iteration against the map size (spec E32; thesis 4.2.2, 4.3.8 text, no figure)",
+    "e32-runtime": ("Run time per iteration against the map size (experiment E32; thesis 4.2.2, 4.3.8 text, no figure)",
                     "Thesis 4.2.2 / 4.3.8: the time per iteration depends on the planes in view, not on the size "
                     "of the map; only the reordering of Rule 30 is O(n²)."),
 })
 
-# issue 15 experiments: Relative Plane part 3, the motion model and its artefacts (thesis 4.2.4, 4.3.6-4.3.7.3;
-# spec E11, E13, E14, E16, E17, E19, E22).
+# experiments: Relative Plane part 3, the motion model and its artefacts (thesis 4.2.4, 4.3.6-4.3.7.3;
+# experiments E11, E13, E14, E16, E17, E19, E22).
 CATALOGUE.update({
     69: ("Only one partial plane is visible (seen in red in the top right). Paper Fig. 5: Note in the top right only "
          "one partial plane is seen. The part of the plane that is shaded red is the only part visible in the "

@@ -16,7 +16,7 @@ from measures.planes import (EVENT_JUMP, EVENT_SETTLED, GROWN_TOP, HEAL_ITERATIO
 import relslam_plot as rp
 
 
-MAP_ERROR = "map error per plane (units)"  # mean e_ends, spec §7.2
+MAP_ERROR = "map error per plane (units)"  # mean e_ends
 
 
 WALL = {"color": "gold", "lw": 5, "solid_capstyle": "butt", "zorder": 1}  # the thesis draws true walls yellow
@@ -26,7 +26,7 @@ MAPPED = {"color": "blue", "lw": 1.6, "zorder": 3}  # and mapped planes blue (Fi
 
 
 def plane_overlay(ax, run, groups=False, title=None):
-    """Top-down map (spec §6.0): true walls yellow, mapped planes blue, true path orange, estimated
+    """Top-down map (as thesis Fig. 67): true walls yellow, mapped planes blue, true path orange, estimated
     path blue; with `groups` each group's X label and a line from it to each member plane."""
     w = true_walls(run)
     for i, (ax_, az, bx, bz) in enumerate(zip(w["a_x"], w["a_z"], w["b_x"], w["b_z"])):
@@ -441,7 +441,7 @@ def runtime_figure(fig, sweep):
 E09, E15 = ("p-e09-plane5",), ("p-e15-loop-closure-map-e",)
 
 
-FRUSTUMS = {"small": (30.0, 7.0), "large": (35.0, 30.0)}  # spec §3.3 presets: half angle (degrees), far distance
+FRUSTUMS = {"small": (30.0, 7.0), "large": (35.0, 30.0)}  # thesis 6.3.2 presets: half angle (degrees), far distance
 
 
 VIEWED = {"color": "red", "lw": 3.5, "solid_capstyle": "butt", "zorder": 5}  # the part in view (Fig 69, paper Fig 5)

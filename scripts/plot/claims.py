@@ -1,6 +1,5 @@
-"""The thesis's numbers (spec relative_point.md §10) and the Relative Plane facts it states (spec
-relative_plane_em.md §6.1, §6.3: E01-E22, E31, E32) next to ours, computed from the
-run folders.
+"""The thesis's numbers and the Relative Plane facts it states (experiments E01-E22, E31, E32) next
+to ours, computed from the run folders, each with its verdict (holds, partly, does not hold).
 
 Each row names the thesis value, our value and the files it came from; a row whose run folder is
 missing says "not run" and no number is ever filled in by hand. report.py writes the table as
@@ -23,7 +22,7 @@ from relslam_data.names import algorithm_label
 
 P = functools.partial
 
-HOLDS, PARTLY, DOES_NOT, NOT_JUDGED = "holds", "partly", "does not hold", "not judged"
+HOLDS, PARTLY, DOES_NOT, NOT_JUDGED, NOT_RUN = "holds", "partly", "does not hold", "not judged", "not run"
 
 
 class Judged(str):
@@ -204,8 +203,7 @@ def vp_level(run, level):
 # ---- Chapter 4, the Relative Plane half ------------------------------------------------------
 # The thesis states these as facts, not numbers ("the map is correct", "no drift"), so the verdicts
 # need thresholds of our own [R]: a map is correct when every wall seen is mapped, none twice, and the
-# final mean e_ends is under CORRECT_MAP units, ten times the plane position noise σ_p = 0.01 (spec
-# §3.8); a last loop whose mean map error exceeds the first's by DRIFT_RATIO counts as drift.
+# final mean e_ends is under CORRECT_MAP units, ten times the plane position noise σ_p = 0.01; a last loop whose mean map error exceeds the first's by DRIFT_RATIO counts as drift.
 CORRECT_MAP = 0.1
 DRIFT_RATIO = 1.25
 
@@ -330,7 +328,7 @@ def e31(run):
     return f"{'identical' if worst <= 1e-9 else 'different'} maps: {len(a['id'])} planes, largest difference {worst:.2g}"
 
 
-# issue 13 experiments: Relative Plane part 2 (spec E02, E07-E10, E12, E15, E18, E32). The numbers come
+# experiments: Relative Plane part 2 (E02, E07-E10, E12, E15, E18, E32). The numbers come
 # from the figures' own helpers (figures.py), so a figure and its claim cannot disagree.
 
 def e02(run):
@@ -473,7 +471,7 @@ def e32(run):
                      f"RltPlanes" for k, v in planes.runtime_by_size(run.path).items())
 
 
-# issue 15: Relative Plane part 3: the motion model (Rules 23-27, 29: E11, E13, E14, E16, E22) and the interval
+# Relative Plane part 3: the motion model (Rules 23-27, 29: E11, E13, E14, E16, E22) and the interval
 # checks, hints and roll-back (Rules 31-34: E17).
 
 def e17(run):
@@ -629,7 +627,7 @@ ISSUE13_CLAIMS = [
      "(4.2.2, 4.3.8)", ["p-e32-runtime"], e32),
 ]
 
-# ---- issue 14 Chapter 5: points -> EM -> Relative Plane --------------------------------------
+# ---- Chapter 5: points -> EM -> Relative Plane --------------------------------------
 EM_TROUBLE = 0.95  # EM "has trouble finding planes" once its frame-mean recall is under this [R]
 
 
@@ -785,9 +783,9 @@ CLAIMS = [
      "(4.2.2, 4.6)", ["p-e21-completed-map"], e21),
     ("E10 Rules 21 and 22 on Map D (Fig 82)", "21 groups without Rule 21, 30 with it; a cap reduces the count; "
      "Rule 22 about 5 % less time while revisiting (4.3.5)", ["p-e10-rule21-22"], e10),
-    ("E31 Rule 2: chain order, noise-free", "the same map whatever the chain order (spec E31: <= 1e-9)",
+    ("E31 Rule 2: chain order, noise-free", "the same map whatever the chain order (experiment E31: <= 1e-9)",
      ["p-e31-chain-order"], e31),
-    # issue 14 Chapter 5
+    # Chapter 5
     ("E23 Map D, points, EM2, small frustum, no noise (Fig 105)", "appears correct, a slight error from one turn "
      "(5.2)", ["p-em-office"], em_map),
     ("E24 E23 with point noise (Fig 106)", "works as intended, not fully accurate (5.2)", ["p-em-office-noise"],
@@ -831,7 +829,7 @@ def verdict_of(quantity, thesis, ours):
     """HOLDS, PARTLY, DOES_NOT or NOT_JUDGED for one claim's text (Judged text carries its own)."""
     if isinstance(ours, Judged):
         return ours.verdict
-    if ours == "not run" or ours.startswith("error:"):
+    if ours.startswith("error:"):
         return NOT_JUDGED
     if quantity.startswith(COUNTS):
         r = compare.ratio(first_number(ours), first_number(thesis))
@@ -856,7 +854,7 @@ def rows(runs):
     for quantity, thesis, names, claim in CLAIMS:
         missing = [n for n in names if not os.path.exists(os.path.join(runs, n))]
         if missing:
-            out.append((quantity, thesis, "not run", NOT_JUDGED, f"missing {', '.join(missing)}"))
+            out.append((quantity, thesis, "not run", NOT_RUN, f"missing {', '.join(missing)}"))
             continue
         folders = [Run(runs, n) for n in names]
         try:

@@ -7,7 +7,8 @@ import numpy as np
 
 import catalogue
 from measures.common import SHAPES, fit_scale
-from relslam_data.names import algorithm_label as readable  # the one table of readable names: ekf6d -> "EKF (MRPT, 6D)"
+# The one table of readable names (ekf6d -> "EKF (MRPT, 6D)"), for every chapter's legends.
+from relslam_data.names import algorithm_label as readable  # noqa: F401
 
 
 FIGSIZE, DPI = (10, 6), 100  # 1000 x 600 pixels; plot_test.sh checks it

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""E28's table (spec relative_plane_em.md §6, paper §III): noise_sweep.csv of a `relslam sweep` over the
+"""E28's table (paper §III): noise_sweep.csv of a `relslam sweep` over the
 point noise (scenarios/p-em-noise-sweep.json), one row per cell, aggregated over the seeds.
 
 Per cell (the sweep's axis columns, e.g. `variant`): σ_pt and EM's d_in from the runs' manifest.json;

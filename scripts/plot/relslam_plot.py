@@ -1,6 +1,6 @@
 """Shared helpers for the plot scripts: read run-folder CSVs by column name, save figures.
 
-Plots read only CSV and manifest.json (style.md 2.10); they never rerun C++.
+Plots read only CSV and manifest.json; they never rerun C++.
 
 Usage: import relslam_plot as rp; rp.read_table("runs/f8/relative_point/iterations.csv", ["iteration"])
 """

@@ -40,14 +40,16 @@ COMPARISONS = [("s-ekf-f8", "figure eight, density 25 (thesis 6.7.1)", 147),
                ("s-dyn", "dynamic points (6.7.3)", 153), ("vp-1181", "Victoria Park, scans 1181-1642 (6.8)", 163),
                ("vp-4220", "Victoria Park, scans 4220-4634 (6.8)", 165)]
 VERDICT_CLASS = {claims.HOLDS: "holds", claims.PARTLY: "partly", claims.DOES_NOT: "fails",
-                 claims.NOT_JUDGED: "unjudged"}
+                 claims.NOT_JUDGED: "unjudged", claims.NOT_RUN: "unjudged"}
+OURS_CHARS = 160  # the summary's "ours" column is cut here; claims.md has the whole text
 STYLE = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:0 1em}img{max-width:100%}"
          "nav{position:sticky;top:0;background:#fff;border-bottom:1px solid #ccc;padding:.4em 0;z-index:1}"
          "nav a{margin-right:1.2em}.missing{color:#a00}.pending{color:#864}.shows{background:#eef6ee;padding:.3em}"
          ".quick{background:#ffd;padding:.5em;border:1px solid #cc9}section{border-top:1px solid #ccc;margin-top:1em}"
          "table{border-collapse:collapse;font-size:90%;margin:.5em 0}td,th{border:1px solid #ccc;padding:.2em .5em;"
          "vertical-align:top}td.num{text-align:right}.holds{background:#dfd}.partly{background:#ffd}"
-         ".fails{background:#fdd}.unjudged{color:#666}.pair{display:flex;gap:1em}.pair img{width:50%}")
+         ".fails{background:#fdd}.unjudged{color:#666}.pair{display:flex;gap:1em}.pair img{width:50%}"
+         ".headline{font-size:110%;background:#eef;padding:.5em;border:1px solid #99c}")
 
 
 def chapter_of_number(number):
@@ -56,8 +58,8 @@ def chapter_of_number(number):
 
 
 def page(title, body, quick):
-    nav = " ".join([f'<a href="index.html">Summary</a>'] +
-                   [f'<a href="{f}">{html.escape(t)}</a>' for _, t, f in CHAPTERS] + ['<a href="claims.md">claims.md</a>'])
+    links = [("index.html", "Summary")] + [(f, t) for _, t, f in CHAPTERS] + [("claims.md", "claims.md")]
+    nav = " ".join(f'<a href="{f}">{html.escape(t)}</a>' for f, t in links)
     notes = f'<p class="quick">{QUICK}</p>' if quick else ""
     return (f'<!DOCTYPE html>\n<html><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
             f'<style>{STYLE}</style></head><body>\n<nav>{nav}</nav>\n<h1>{html.escape(title)}</h1>\n{notes}\n{body}'
@@ -206,16 +208,48 @@ def claim_figure(quantity, thesis, sources, ids):
 
 def claims_table(rows, ids):
     counts = {v: sum(r[3] == v for r in rows) for v in VERDICT_CLASS}
-    out = ["<p>" + ", ".join(f'<span class="{VERDICT_CLASS[v]}">{n} {v}</span>' for v, n in counts.items()) +
+    out = ["<p>" + ", ".join(f'<span class="{VERDICT_CLASS[v]}">{n} {v}</span>' for v, n in counts.items() if n) +
            f' of {len(rows)} claims. The full numbers and the files each came from: <a href="claims.md">claims.md'
-           "</a>.</p>", "<table><tr><th>thesis claim</th><th>the thesis</th><th>verdict</th><th>figure</th></tr>"]
+           "</a>.</p>",
+           "<table><tr><th>thesis claim</th><th>the thesis</th><th>ours</th><th>verdict</th><th>figure</th></tr>"]
     for quantity, thesis, ours, verdict, sources in rows:
         link = claim_figure(quantity, thesis, sources, ids)
         figure = f'<a href="{link[0]}">{html.escape(link[1])}</a>' if link else ""
-        out.append(f"<tr><td>{html.escape(quantity)}</td><td>{html.escape(thesis)}</td>"
-                   f'<td class="{VERDICT_CLASS[verdict]}" title="{html.escape(ours)}">{html.escape(verdict)}</td>'
-                   f"<td>{figure}</td></tr>")
+        short = ours if len(ours) <= OURS_CHARS else ours[:OURS_CHARS].rsplit(" ", 1)[0] + " …"
+        out.append(f"<tr><td>{html.escape(quantity)}</td><td>{html.escape(thesis)}</td><td>{html.escape(short)}</td>"
+                   f'<td class="{VERDICT_CLASS[verdict]}">{html.escape(verdict)}</td><td>{figure}</td></tr>')
     return "\n".join(out) + "</table>\n"
+
+
+def headline(runs, rows):
+    """The first lines: how Relative Point compares with the EKF on the figure eight, and the count of
+    claims that hold."""
+    said = []
+    path = os.path.join(runs, COMPARISONS[0][0])
+    if os.path.isdir(path):
+        try:
+            r = compare.algorithm_rows(load_run(path).summary)
+        except DataError:
+            r = None
+        if r is not None and {"relative_point", "ekf6d"} <= set(r.index):
+            rel, ekf = r.loc["relative_point"], r.loc["ekf6d"]
+            said.append(f"On the figure eight (thesis 6.7.1) Relative Point takes "
+                        f"{number(rel['runtime_median_ms'])} ms per iteration (median) against {number(ekf['runtime_median_ms'])} ms for MRPT's 6D EKF "
+                        f"({number(compare.times_faster(r, 'relative_point', 'ekf6d'))}× faster); its final position "
+                        f"error is {number(rel['final_position_error'])} against "
+                        f"{number(ekf['final_position_error'])}, "
+                        f"its final landmark error per landmark {number(rel['final_mean_landmark_error'])} against "
+                        f"{number(ekf['final_mean_landmark_error'])}.")
+    for quantity, _, ours, verdict, _ in rows:
+        if quantity.startswith("Relative vs EKF position error, figure eight"):
+            said.append(f"The thesis calls the two position errors comparable (Fig 147): that <b>{verdict}</b> here "
+                        f"({html.escape(ours.split(': ', 1)[-1])}).")
+    counts = {v: sum(r[3] == v for r in rows) for v in VERDICT_CLASS}
+    said.append(f"Of {len(rows)} thesis claims, {counts[claims.HOLDS]} hold, {counts[claims.PARTLY]} partly hold and "
+                f"{counts[claims.DOES_NOT]} do not; {counts[claims.NOT_JUDGED]} are not judged (times on the thesis's "
+                f"2004 hardware, or pictures to compare by eye: read them in the table) and {counts[claims.NOT_RUN]} "
+                "were not run.")
+    return f'<p class="headline">{" ".join(said)}</p>\n'
 
 
 def summary_body(runs, results, renders, claim_rows):
@@ -228,7 +262,8 @@ def summary_body(runs, results, renders, claim_rows):
     key += [f'<a href="chapter6.html#fig{n}"><img src="figures/fig{n}.png" alt="Figure {n}"></a></div>'
             for n in (148,) if n in ids and key]
     chapters = "".join(f'<li><a href="{f}">{html.escape(t)}</a></li>' for _, t, f in CHAPTERS)
-    return (f"<h2>Relative Point against the EKF and the other baselines</h2>\n{comparison_table(runs)}"
+    return (f"{headline(runs, claim_rows)}<h2>Relative Point against the EKF and the other baselines</h2>\n"
+            f"{comparison_table(runs)}"
             f"{''.join(key)}\n<h2>The thesis's claims: do they hold in our runs?</h2>\n"
             f"{claims_table(claim_rows, ids)}\n<h2>Figures by chapter</h2>\n<ul>{chapters}</ul>\n"
             f"<p>{made} of {total} figures produced from <code>{html.escape(runs)}</code>.</p>\n" +
@@ -260,9 +295,9 @@ def write_claims(path, runs, claim_rows, quick):
               f"{compare.PARTLY:g} partly; maps: every variant as the thesis says holds); *not judged* where the "
               "claim is a time on other hardware or a picture to compare by eye.", "",
               "| quantity | thesis | ours | verdict | source file |", "|---|---|---|---|---|"]
-    lines += ["| " + " | ".join(cell.replace("|", "\\|") for cell in (q, t, o, f"**{v}**" if v != claims.NOT_JUDGED
-                                                                          else f"*{v}*", s)) + " |"
-              for q, t, o, v, s in claim_rows]
+    for q, t, o, v, src in claim_rows:
+        mark = f"*{v}*" if v in (claims.NOT_JUDGED, claims.NOT_RUN) else f"**{v}**"
+        lines.append("| " + " | ".join(cell.replace("|", "\\|") for cell in (q, t, o, mark, src)) + " |")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     return sum(row[2].startswith("error:") for row in claim_rows)

@@ -65,7 +65,7 @@ make_run p-e06-rule12 sweep scenarios/p-e06-rule12.json --set planar.iterations=
 make_run p-e31-chain-order sweep scenarios/p-e31-chain-order.json --set planar.iterations=300
 make_run p-e21-completed-map run scenarios/p-e21-completed-map.json --set planar.iterations=400
 make_run p-e10-rule21-22 sweep scenarios/p-e10-rule21-22.json --set planar.iterations=400
-# issue 13 experiments (Relative Plane part 2), shortened the same way.
+# experiments (Relative Plane part 2), shortened the same way.
 make_run p-e02-key-point-pairs run scenarios/p-e02-key-point-pairs.json --set planar.iterations=600
 make_run p-e07-interval-mode sweep scenarios/p-e07-interval-mode.json --set planar.iterations=300 --seeds 2
 make_run p-e08-bad-key-points sweep scenarios/p-e08-bad-key-points.json --set planar.iterations=400
@@ -76,7 +76,7 @@ make_run p-e18-collinear run scenarios/p-e18-collinear.json --set planar.iterati
 make_run p-e32-runtime sweep scenarios/p-e32-runtime.json --set planar.iterations=300
 make_run p-e19-save-system sweep scenarios/p-e19-save-system.json --set planar.iterations=300
 make_run p-e20-pseudo-merge sweep scenarios/p-e20-pseudo-merge.json --set planar.iterations=300
-# issue 15 experiments (Relative Plane part 3): E17's interval checks, hints and roll-back; the motion
+# experiments (Relative Plane part 3): E17's interval checks, hints and roll-back; the motion
 # model's E11 (whole, Map E1 is 351 iterations), E13, E14 (whole), E16 and E22 (the second corner is on
 # the shortened run's second "loop").
 make_run p-e17-interval-check sweep scenarios/p-e17-interval-check.json --set planar.iterations=400
@@ -87,9 +87,9 @@ make_run p-e16-rule29 sweep scenarios/p-e16-rule29.json --set planar.iterations=
 make_run p-e22-one-partial-plane run scenarios/p-e22-one-partial-plane.json --set planar.iterations=600
 
 expected=(64 65 66 67 70 71 72 73)  # Chapter 4
-expected+=(68 $(seq 74 82) 87 90 91 92 97 e32-runtime)  # issue 13 experiments
-expected+=(94 98 99 101 102)  # issue 15: E17, E19, E20
-expected+=(69 83 84 85 86 88 89 93 95 96 100)  # issue 15: E22, E11, E13, E14, E16, E17, E19
+expected+=(68 $(seq 74 82) 87 90 91 92 97 e32-runtime)  # experiments
+expected+=(94 98 99 101 102)  # E17, E19, E20
+expected+=(69 83 84 85 86 88 89 93 95 96 100)  # E22, E11, E13, E14, E16, E17, E19
 
 # Chapter 5 (points -> EM -> Relative Plane): short runs of E23-E27, the test bench, E29.
 make_run p-em-office run scenarios/p-em-office.json --set planar.iterations=150

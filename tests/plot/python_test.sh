@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Python side of issue 35: the relslam_data package (python/) and the two plot commands
+# The Python side of bring-your-own-data: the relslam_data package (python/) and the two plot commands
 # (scripts/plot_run.py, scripts/plot_sweep.py; and scripts/plot/run.py, simulation.py, which read
 # through it) on a tiny simulated run, a tiny planar run and a
 # tiny sweep made by the relslam binary: every promised PNG is written and non-trivial, the

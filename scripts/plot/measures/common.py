@@ -10,7 +10,7 @@ import relslam_plot as rp
 ALG = "relative_point"
 
 
-STEADY_FROM = 200  # spec §8: density means are over iterations 200..end (Fig 136 also starts there)
+STEADY_FROM = 200  # thesis 6: density means are over iterations 200..end (Fig 136 also starts there)
 
 
 def iterations(run, columns, algorithm=ALG):

@@ -82,7 +82,7 @@ def count_summary(run):
 
 def rltplane_rows(run, wall=0, first=6):
     """Rows of one plane's untransformed observations (thesis Fig 65: iteration, location, orientation;
-    paper Fig 1 adds the plane equation's d): midpoint m, normal n = tangent turned +90° (spec §2.2)
+    paper Fig 1 adds the plane equation's d): midpoint m, normal n = tangent turned +90° (thesis 4.2.1)
     as (nx, ny, nz) with ny = 0 (2½D), d = −n·m, robot frame."""
     o = rp.read_table(os.path.join(run, "plane_observations.csv"),
                       ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
@@ -102,7 +102,7 @@ def rltplane_rows(run, wall=0, first=6):
 
 def invariance(run):
     """E01: per iteration with both walls, the raw midpoint difference m2 − m1 and the Rule 3 offset
-    Rot(−θ1)(m2 − m1), θ1 = plane 1's direction a→b (spec §2.4), with the robot's true heading; plus
+    Rot(−θ1)(m2 − m1), θ1 = plane 1's direction a→b (thesis 4.3.1), with the robot's true heading; plus
     the offset the true walls give."""
     o = rp.read_table(os.path.join(run, "plane_observations.csv"),
                       ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
@@ -336,7 +336,7 @@ def size_mismatches(run):
     return int(np.sum((e["valid"] == 1) & (gap > 0.02))), len(gap), float(np.max(gap, initial=0.0))
 
 
-OFF_LINE = 1e-6  # noise-free: a plane further than this from its wall's line is misplaced (spec §8's bound)
+OFF_LINE = 1e-6  # noise-free: a plane further than this from its wall's line is misplaced ('s bound)
 
 
 def misplaced(run):

@@ -12,7 +12,7 @@ COMPONENTS = ["t_init_ms", "t_load_ms", "t_compute_ms", "t_create_ms"]  # thesis
 
 def density_table(sweep):
     """Per density, ascending: steady-state means of run time, visible points and components, averaged
-    over the seeds (the thesis's density.csv, spec §7.2)."""
+    over the seeds (the thesis's density.csv)."""
     columns = ["runtime_ms", "visible_points", *COMPONENTS]
     per_density = {}
     for value, folder in sweep_runs(sweep, "sim.density"):
