@@ -2,8 +2,8 @@
 figures), Chapter 5 and Chapter 6.
 
 Captions are the thesis's own (shortened where they run on; the paper's caption follows where the
-paper shows the same figure); statements quote or paraphrase the thesis text around the figure. figures.py and report.py read this table, so a
-caption is written once.
+paper shows the same figure); statements quote or paraphrase the thesis text around the figure.
+figures.py and report.py read this table, so a caption is written once.
 
 Usage: import catalogue; caption, statement = catalogue.CATALOGUE[146]
 """

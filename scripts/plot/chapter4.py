@@ -1,4 +1,5 @@
-"""Chapter 4's figures (Relative Plane, Figs 64-102, the paper's Figs 1-5): drawing only; the numbers come from measures.planes."""
+"""Chapter 4's figures (Relative Plane, Figs 64-102, the paper's Figs 1-5): drawing only; the numbers
+come from measures.planes."""
 import os
 
 import numpy as np

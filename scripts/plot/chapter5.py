@@ -1,4 +1,5 @@
-"""Chapter 5's figures (EM plane extraction, Figs 46, 55-61, 105-108, the paper's Figs 6-8): drawing only; the numbers come from measures.em."""
+"""Chapter 5's figures (EM plane extraction, Figs 46, 55-61, 105-108, the paper's Figs 6-8): drawing
+only; the numbers come from measures.em."""
 import os
 
 import numpy as np

@@ -288,7 +288,8 @@ def vp_overlay(fig, run):
     ax = fig.subplots()
     fitted = os.path.exists(os.path.join(run, ALG, VP_FITTED))
     ref, rel = vp_landmarks(run, "ekf2d"), vp_landmarks(run, ALG, VP_FITTED if fitted else "landmarks_gps_frame.csv")
-    ax.plot(ref["x"], ref["y"], "o", ms=11, mfc="gold", mec="black", ls="none", label=f"{readable('ekf2d')} reference map")
+    ax.plot(ref["x"], ref["y"], "o", ms=11, mfc="gold", mec="black", ls="none",
+            label=f"{readable('ekf2d')} reference map")
     ax.plot(rel["x"], rel["y"], "s", ms=5, color="blue", ls="none",
             label=f"{readable(ALG)} ({'after the similarity fit' if fitted else 'rigid GPS fit of its trajectory'}): "
                   f"{fit['matched'][row]:.0f} of {fit['landmarks'][row]:.0f} matched, similarity-fit RMS "

@@ -20,6 +20,8 @@ from measures import em as em_measures
 from relslam_data import DataError, load_run
 from relslam_data.names import algorithm_label
 
+ALG, PLANE = common.ALG, common.PLANE
+
 P = functools.partial
 
 HOLDS, PARTLY, DOES_NOT, NOT_JUDGED, NOT_RUN = "holds", "partly", "does not hold", "not judged", "not run"
@@ -46,7 +48,7 @@ class Run:
         self.read.append(os.path.relpath(path, self.runs))
         return path
 
-    def iterations(self, columns, algorithm=common.ALG):
+    def iterations(self, columns, algorithm=ALG):
         self.file(algorithm, "iterations.csv")
         return common.iterations(self.path, columns, algorithm)
 
@@ -57,7 +59,7 @@ class Run:
 
     def density(self):
         self.file("sweep.csv")
-        self.read.append(os.path.join(os.path.relpath(self.path, self.runs), "*", "seed-*", common.ALG, "iterations.csv"))
+        self.read.append(os.path.join(os.path.relpath(self.path, self.runs), "*", "seed-*", ALG, "iterations.csv"))
         return points.density_table(self.path)
 
 
@@ -138,7 +140,7 @@ def dense_total_points(run, wanted=550.0):
     density, note = pick_density(run.density()["density"], wanted)
     folder = dict((float(v), f) for v, f in common.sweep_runs(run.path, "sim.density"))[density]
     d = common.iterations(folder, ["landmarks_in_map"])
-    run.read.append(os.path.relpath(os.path.join(folder, common.ALG, "iterations.csv"), run.runs))
+    run.read.append(os.path.relpath(os.path.join(folder, ALG, "iterations.csv"), run.runs))
     return f"{d['landmarks_in_map'][-1]:.0f} landmarks on the map{note}"
 
 
@@ -154,7 +156,7 @@ EKF_SPEEDUP = 100  # "≈1 ms vs > 1 s": we call the claim held at two orders of
 
 def relative_vs_ekf(run):
     s = run.summary(["status", "runtime_mean_ms", "runtime_max_ms"])
-    rel, ekf = s.get(common.ALG), s.get("ekf6d")
+    rel, ekf = s.get(ALG), s.get("ekf6d")
     if rel is None or ekf is None:
         return "the run lacks relative_point or ekf6d"
     speedup = compare.ratio(ekf["runtime_mean_ms"], rel["runtime_mean_ms"])
@@ -170,14 +172,14 @@ def ekf_comparable(run, column, baseline="ekf6d"):
         loaded = load_run(run.path)
     except DataError as e:
         raise rp.DataError(str(e)) from None
-    run.file(common.ALG, "iterations.csv")
+    run.file(ALG, "iterations.csv")
     run.file(baseline, "iterations.csv")
-    if common.ALG not in loaded.algorithms or baseline not in loaded.algorithms:
-        return Judged(f"the run lacks {common.ALG} or {baseline}", DOES_NOT)
-    rel, ekf = loaded.algorithms[common.ALG].iterations, loaded.algorithms[baseline].iterations
+    if ALG not in loaded.algorithms or baseline not in loaded.algorithms:
+        return Judged(f"the run lacks {ALG} or {baseline}", DOES_NOT)
+    rel, ekf = loaded.algorithms[ALG].iterations, loaded.algorithms[baseline].iterations
     verdict, r, n = compare.comparable(rel, ekf, column)
     x, y = compare.common_iterations(rel, ekf, column)
-    return Judged(f"mean {column.replace('_', ' ')} over the {n} iterations both ran: {algorithm_label(common.ALG)} "
+    return Judged(f"mean {column.replace('_', ' ')} over the {n} iterations both ran: {algorithm_label(ALG)} "
                   f"{np.mean(x):.3g}, {algorithm_label(baseline)} {np.mean(y):.3g} (ratio {r:.2f}; comparable = "
                   f"within a factor {compare.COMPARABLE:g})", verdict)
 
@@ -203,7 +205,8 @@ def vp_level(run, level):
 # ---- Chapter 4, the Relative Plane half ------------------------------------------------------
 # The thesis states these as facts, not numbers ("the map is correct", "no drift"), so the verdicts
 # need thresholds of our own [R]: a map is correct when every wall seen is mapped, none twice, and the
-# final mean e_ends is under CORRECT_MAP units, ten times the plane position noise σ_p = 0.01; a last loop whose mean map error exceeds the first's by DRIFT_RATIO counts as drift.
+# final mean e_ends is under CORRECT_MAP units, ten times the plane position noise σ_p = 0.01; a last
+# loop whose mean map error exceeds the first's by DRIFT_RATIO counts as drift.
 CORRECT_MAP = 0.1
 DRIFT_RATIO = 1.25
 
@@ -216,9 +219,9 @@ def plane_summary(run, *parts):
     if parts:
         t = rp.read_table(run.file(*parts, "summary.csv"), ["algorithm", *columns], text=("algorithm",))
         row = {a: {c: t[c][i] for c in columns} for i, a in enumerate(t["algorithm"])}
-    if common.PLANE not in row:
-        raise rp.DataError(f"{os.path.join(run.path, *parts, 'summary.csv')}: column algorithm: no {common.PLANE} row")
-    return row[common.PLANE]
+    if PLANE not in row:
+        raise rp.DataError(f"{os.path.join(run.path, *parts, 'summary.csv')}: column algorithm: no {PLANE} row")
+    return row[PLANE]
 
 
 def verdict(s):
@@ -241,7 +244,7 @@ def rule3_invariance(run):
 
 def no_drift(run):
     run.file("manifest.json")
-    run.file(common.PLANE, "iterations.csv")
+    run.file(PLANE, "iterations.csv")
     loops = planes.loop_means(run.path, "mean_map_error")
     pose = planes.loop_means(run.path, "position_error")
     first, last = loops[0][2], loops[-1][2]
@@ -256,10 +259,10 @@ def map_correct(run):
 
 
 def hallway(run):
-    links = rp.read_table(run.file(common.PLANE, "links.csv"), ["from", "linking_planes"], text=("linking_planes",))
+    links = rp.read_table(run.file(PLANE, "links.csv"), ["from", "linking_planes"], text=("linking_planes",))
     counts = [len([p for p in planes.split(";") if p]) for f, planes in zip(links["from"], links["linking_planes"])
               if np.isfinite(f)]
-    groups = rp.read_table(run.file(common.PLANE, "groups.csv"), ["group_id"])["group_id"]
+    groups = rp.read_table(run.file(PLANE, "groups.csv"), ["group_id"])["group_id"]
     return (f"{len(groups)} groups, {len(counts)} links with {'/'.join(map(str, counts))} linking planes; "
             + verdict(plane_summary(run)))
 
@@ -269,7 +272,7 @@ def variant_folder(run, prefix):
     names = ["variant", "folder", "algorithm"]
     t = rp.read_table(run.file("sweep.csv"), names, text=names)
     for v, f, a in zip(t["variant"], t["folder"], t["algorithm"]):
-        if a == common.PLANE and v.startswith(prefix):
+        if a == PLANE and v.startswith(prefix):
             return v, f
     raise rp.DataError(f"{os.path.join(run.path, 'sweep.csv')}: column variant: none starts with {prefix!r}")
 
@@ -289,7 +292,7 @@ def e06(run):
     cells = []
     for prefix in ("rule12_on", "rule12_off"):
         name, folder = variant_folder(run, prefix)
-        links = rp.read_table(run.file(folder, common.PLANE, "links.csv"), ["from", "to"])
+        links = rp.read_table(run.file(folder, PLANE, "links.csv"), ["from", "to"])
         pairs = [f"X{f:.0f}→X{t:.0f}" for f, t in zip(links["from"], links["to"]) if np.isfinite(f)]
         cells.append(f"{name}: links {' '.join(pairs) or 'none'}; " + verdict(plane_summary(run, folder)))
     return " — ".join(cells)
@@ -298,7 +301,7 @@ def e06(run):
 def e21(run):
     """A completed map: walls mapped, pose exactness and the key points claimed, noise-free."""
     s = plane_summary(run)
-    kp = run.summary(["key_point_accuracy", "wrong_key_point_iterations"])[common.PLANE]
+    kp = run.summary(["key_point_accuracy", "wrong_key_point_iterations"])[PLANE]
     return (f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, {s['duplicates']:.0f} duplicate(s) "
             f"(a wall first seen in part, kept apart as in Fig 90), max position error "
             f"{s['max_position_error']:.2g}, pose valid {100 * s['pose_valid_fraction']:.1f} % of iterations; "
@@ -310,7 +313,7 @@ def e10(run):
     """Rule 21's group counts (planes.group_counts, as Fig 82 shows them); Rule 22's time is the next row."""
     run.file("sweep.csv")
     for (name,), folders in planes.plane_sweep(run.path):
-        run.file(os.path.relpath(folders[0], run.path), common.PLANE, "iterations.csv")
+        run.file(os.path.relpath(folders[0], run.path), PLANE, "iterations.csv")
     return "; ".join(f"{name}: {n} groups" for name, n in planes.group_counts(run.path).items()) + \
         " (Rule 22's time while revisiting: the row 'E10 Rule 22')"
 
@@ -320,7 +323,7 @@ def e31(run):
     maps = []
     for prefix in ("creation", "reversed"):
         name, folder = variant_folder(run, prefix)
-        maps.append(rp.read_table(run.file(folder, common.PLANE, "planes.csv"), ["id", "kp1_x", "kp1_z", "kp2_x", "kp2_z"]))
+        maps.append(rp.read_table(run.file(folder, PLANE, "planes.csv"), ["id", "kp1_x", "kp1_z", "kp2_x", "kp2_z"]))
     a, b = maps
     if len(a["id"]) != len(b["id"]):
         return f"different maps: {len(a['id'])} vs {len(b['id'])} planes"
@@ -332,8 +335,8 @@ def e31(run):
 # from the figures' own helpers (figures.py), so a figure and its claim cannot disagree.
 
 def e02(run):
-    run.file(common.PLANE, "pairs.csv")
-    run.file(common.PLANE, "pair_sigma.csv")
+    run.file(PLANE, "pairs.csv")
+    run.file(PLANE, "pair_sigma.csv")
     run.file("plane_observations.csv")
     series, sig, chosen, right = planes.key_point_pair(run.path)
     others = [s for k, s in enumerate(sig["sigma"]) if k != chosen]
@@ -360,8 +363,8 @@ def e08(run):
     for (name,), folders in planes.plane_sweep(run.path):
         events = quick = never = episodes = longest = 0
         for folder in folders:
-            run.file(os.path.relpath(folder, run.path), common.PLANE, "iterations.csv")
-            run.file(os.path.relpath(folder, run.path), common.PLANE, "keypoints.csv")
+            run.file(os.path.relpath(folder, run.path), PLANE, "iterations.csv")
+            run.file(os.path.relpath(folder, run.path), PLANE, "keypoints.csv")
             n, q, nv, _ = planes.event_healing(folder)
             k, _, _, lg = planes.healing(folder)
             events, quick, never, episodes, longest = events + n, quick + q, never + nv, episodes + k, max(longest, lg)
@@ -377,7 +380,7 @@ def per_variant(run, names, name_file, describe):
     cells = []
     for name in names:
         folder = planes.variant_folder_of(run.path, name)
-        run.file(os.path.relpath(folder, run.path), common.PLANE, name_file)
+        run.file(os.path.relpath(folder, run.path), PLANE, name_file)
         cells.append(f"{name}: " + describe(folder))
     return "; ".join(cells)
 
@@ -393,7 +396,7 @@ def e10_rule22(run):
     times = {}
     for name in ("rule21_capped", "rule22_off"):
         folder = planes.variant_folder_of(run.path, name)
-        run.file(os.path.relpath(folder, run.path), common.PLANE, "iterations.csv")
+        run.file(os.path.relpath(folder, run.path), PLANE, "iterations.csv")
         run.file(os.path.relpath(folder, run.path), "ground_truth_path.tum")
         times[name] = planes.revisit_time(folder)
     on, off = times["rule21_capped"], times["rule22_off"]
@@ -416,7 +419,7 @@ def e15(run):
         rel = os.path.relpath(folders[0], run.path)
         s = plane_summary(run, rel)
         t = rp.read_table(run.file(rel, "summary.csv"), ["algorithm", "key_point_accuracy"], text=("algorithm",))
-        acc = t["key_point_accuracy"][list(t["algorithm"]).index(common.PLANE)]
+        acc = t["key_point_accuracy"][list(t["algorithm"]).index(PLANE)]
         cells.append(f"{name}: {s['duplicates']:.0f} duplicate(s), final mean map error "
                      f"{s['final_mean_map_error']:.3g}, key points right {100 * acc:.1f} %")
     return "; ".join(cells)
@@ -424,7 +427,7 @@ def e15(run):
 
 def e18(run):
     for name in ("iterations.csv", "keypoints.csv", "edges.csv"):
-        run.file(common.PLANE, name)
+        run.file(PLANE, name)
     d, first_bad, claims_tied, edges_tied = planes.collinear_run(run.path)
     s = plane_summary(run)
     until = "throughout" if first_bad is None else f"until iteration {first_bad}"
@@ -451,13 +454,13 @@ def e20(run):
         raise rp.DataError(f"{os.path.join(run.path, 'sweep.csv')}: column variant: needs rule37_on and rule37_off")
     cells = []
     for on, off in zip(variants[("rule37_on",)], variants[("rule37_off",)]):
-        it = [rp.read_table(run.file(os.path.relpath(f, run.path), common.PLANE, "iterations.csv"),
+        it = [rp.read_table(run.file(os.path.relpath(f, run.path), PLANE, "iterations.csv"),
                             ["current_group", "oneway_links"], text=("current_group",)) for f in (on, off)]
         n = min(len(it[0]["current_group"]), len(it[1]["current_group"]))
         differ = sum(it[0]["current_group"][k] != it[1]["current_group"][k] for k in range(n))
         plane1 = []
         for f in (on, off):
-            t = rp.read_table(run.file(os.path.relpath(f, run.path), common.PLANE, "planes.csv"), ["id", "e_ends"])
+            t = rp.read_table(run.file(os.path.relpath(f, run.path), PLANE, "planes.csv"), ["id", "e_ends"])
             hit = np.nonzero(t["id"] == 1)[0]
             plane1.append(f"{t['e_ends'][hit[0]]:.3g}" if len(hit) else "not mapped")
         cells.append(f"{os.path.basename(on)}: {int(np.nansum(it[0]['oneway_links']))} one-way link(s), current group "
@@ -482,7 +485,7 @@ def e17(run):
         s = plane_summary(run, rel)
         t = rp.read_table(run.file(rel, "summary.csv"), ["algorithm", "hints", "rollbacks", "replayed_iterations"],
                           text=("algorithm",))
-        i = list(t["algorithm"]).index(common.PLANE)
+        i = list(t["algorithm"]).index(PLANE)
         cells.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, final mean map error "
                      f"{s['final_mean_map_error']:.3g}, final position error {s['final_position_error']:.3g}, "
                      f"{t['rollbacks'][i]:.0f} roll-back(s) from {t['hints'][i]:.0f} hint(s), "
@@ -490,7 +493,7 @@ def e17(run):
     return "; ".join(cells)
 
 
-PLANE_FILES = (os.path.join(common.PLANE, "iterations.csv"), os.path.join(common.PLANE, "planes.csv"))
+PLANE_FILES = (os.path.join(PLANE, "iterations.csv"), os.path.join(PLANE, "planes.csv"))
 
 
 def seed_folders(run, names=PLANE_FILES):
@@ -508,7 +511,7 @@ def e11(run):
     """Pooled over the seeds: where the motion model starts and ends, the end wall's growth, wrong key
     points inside and outside it, and the map-error events."""
     starts, ends, grown, inside, outside, events, quick, joined, longest = [], [], [], [0, 0], [0, 0], 0, 0, 0, 0
-    folders = seed_folders(run, PLANE_FILES + (os.path.join(common.PLANE, "keypoints.csv"),))
+    folders = seed_folders(run, PLANE_FILES + (os.path.join(PLANE, "keypoints.csv"),))
     for folder in folders:
         e, before, heading = planes.first_corner(folder)
         starts.append(before)
@@ -538,14 +541,14 @@ def e13(run):
     stats = planes.grown_lengths(run.path)
     cells = []
     for (name,), folders in planes.plane_sweep(run.path):
-        lost = [int(np.sum(common.iterations(f, ["position_error"], common.PLANE)["position_error"] > LOST)) for f in folders]
+        lost = [int(np.sum(common.iterations(f, ["position_error"], PLANE)["position_error"] > LOST)) for f in folders]
         cells.append(planes.grown_text(name, stats[name]) + f"; position error above {LOST:g} in "
                      f"{', '.join(map(str, lost))} iterations (per seed)")
     return "; ".join(cells)
 
 
 def e14(run):
-    seed_folders(run, (os.path.join(common.PLANE, "planes.csv"), "plane_observations.csv", "ground_truth_path.tum"))
+    seed_folders(run, (os.path.join(PLANE, "planes.csv"), "plane_observations.csv", "ground_truth_path.tum"))
     cells = []
     for name, (frustum, shape, wall, seen, mapped, true) in planes.frustum_turns(run.path).items():
         k = int(np.argmax(seen["length"]))
@@ -560,7 +563,7 @@ def e16(run):
     for name in ("rule29_on", "rule29_off"):
         folder = planes.variant_folder_of(run.path, name)
         for file in ("iterations.csv", "groups.csv", "planes.csv"):
-            run.file(os.path.relpath(folder, run.path), common.PLANE, file)
+            run.file(os.path.relpath(folder, run.path), PLANE, file)
         n, back, groups = planes.motion_model_exits(folder)
         s = plane_summary(run, os.path.relpath(folder, run.path))
         cells.append(f"{name}: {groups} groups; {back} of {n} motion models ended in a group made before them; "
@@ -570,10 +573,10 @@ def e16(run):
 
 
 def e22(run):
-    run.file(common.PLANE, "iterations.csv")
+    run.file(PLANE, "iterations.csv")
     run.file("plane_observations.csv")
     k, first, last = planes.one_plane_iteration(run.path)
-    d = run.iterations(["mm_active", "visible_planes", "position_error"], common.PLANE)
+    d = run.iterations(["mm_active", "visible_planes", "position_error"], PLANE)
     loops, n = planes.run_loops(run.path)
     last_loop = d["iteration"] >= n * (loops - 1) / loops
     single = last_loop & (d["visible_planes"] == 1)
@@ -652,7 +655,7 @@ def e27_real_time(run):
     run.file("sweep.csv")
     cells = []
     for variant, (em, rplane) in em_measures.demo_times(run.path).items():
-        run.read.append(os.path.join(os.path.relpath(em_measures.sweep_cell(run.path, variant), run.runs), common.PLANE,
+        run.read.append(os.path.join(os.path.relpath(em_measures.sweep_cell(run.path, variant), run.runs), PLANE,
                                      "iterations.csv"))
         total = em + rplane
         cells.append(f"{variant}: EM {np.median(em):.3g} + RP {np.median(rplane):.3g} ms median, together p95 "

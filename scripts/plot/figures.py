@@ -54,6 +54,7 @@ class Result:
     status: str  # "ok", "missing" or "error"
     detail: str  # the PNG path, the missing runs, or the error message
     shows: str = ""  # what our run shows, measured from its files
+    title: str = ""  # the title drawn (in quick mode the one that says what was run)
 
 
 def what_was_run(run):
@@ -94,9 +95,10 @@ def render(figure, runs, out, quick=False):
         return Result(figure, "error", str(e))
     prefix = (f"Fig. {figure.id} — " if isinstance(figure.id, int)
               else f"Paper Fig. {figure.id[5:]} — " if str(figure.id).startswith("paper") else "Extra — ")
-    fig.suptitle(prefix + title(figure, runs, quick))
-    shows = shows if isinstance(shows, str) else ""  # helpers such as compare_algorithms return their axes
-    return Result(figure, "ok", rp.save_png(fig, os.path.join(out, figure.name + ".png"), DPI), shows)
+    drawn = title(figure, runs, quick)
+    fig.suptitle(prefix + drawn)
+    shows = shows if isinstance(shows, str) else ""  # a drawing helper may return its axes instead
+    return Result(figure, "ok", rp.save_png(fig, os.path.join(out, figure.name + ".png"), DPI), shows, drawn)
 
 
 def render_all(runs, out, ids=None, log=print, quick=False):

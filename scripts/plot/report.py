@@ -141,7 +141,7 @@ def chapter_sections(results, renders, render_notes):
         problem = {"missing": f"missing run {r.detail}", "error": r.detail}.get(r.status, "")
         image = f"figures/{r.figure.name}.png" if r.status == "ok" else None
         entries[fg.chapter_of(r.figure)].append((fg.order(r.figure), section(
-            r.figure.id, r.figure.title, image, problem, ", ".join(r.figure.runs), r.shows)))
+            r.figure.id, r.title or r.figure.title, image, problem, ", ".join(r.figure.runs), r.shows)))
     for number, image in renders.items():
         problem = f"no renders/fig{number}.png in the runs folder (relslam render makes it)"
         title = "render: " + catalogue.CATALOGUE[number][0].split(".")[0]
@@ -234,7 +234,8 @@ def headline(runs, rows):
         if r is not None and {"relative_point", "ekf6d"} <= set(r.index):
             rel, ekf = r.loc["relative_point"], r.loc["ekf6d"]
             said.append(f"On the figure eight (thesis 6.7.1) Relative Point takes "
-                        f"{number(rel['runtime_median_ms'])} ms per iteration (median) against {number(ekf['runtime_median_ms'])} ms for MRPT's 6D EKF "
+                        f"{number(rel['runtime_median_ms'])} ms per iteration (median) against "
+                        f"{number(ekf['runtime_median_ms'])} ms for MRPT's 6D EKF "
                         f"({number(compare.times_faster(r, 'relative_point', 'ekf6d'))}× faster); its final position "
                         f"error is {number(rel['final_position_error'])} against "
                         f"{number(ekf['final_position_error'])}, "
