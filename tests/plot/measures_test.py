@@ -79,6 +79,22 @@ class Common(unittest.TestCase):
 
 
 class Planes(unittest.TestCase):
+    def test_means_per_loop_cut_the_run_into_equal_loops(self):
+        d = pd.DataFrame({"iteration": np.arange(10), "map_error": [1.0] * 5 + [3.0, float("nan"), 3.0, 3.0, 3.0]})
+        self.assertEqual(planes.means_per_loop(d, "map_error", 2, 10), [(0, 4, 1.0), (5, 9, 3.0)])
+        empty = pd.DataFrame({"iteration": np.arange(4), "map_error": [float("nan")] * 4})
+        self.assertTrue(all(math.isnan(m) for _, _, m in planes.means_per_loop(empty, "map_error", 2, 4)))
+
+    def test_error_events_find_a_jump_and_when_it_heals(self):
+        error = [0.0] * 8 + [1.0, 0.9, 0.5, 0.1, 0.0, 0.0]  # a jump of 1 at iteration 8, back under 0.25 after 3
+        planes_in_map = [3] * 8 + [4] * 6
+        d = pd.DataFrame({"iteration": np.arange(len(error)), "map_error": error, "planes_in_map": planes_in_map})
+        self.assertEqual(planes.error_events(d), [(8, 1.0, 3, True)])
+        never = d.assign(map_error=[0.0] * 8 + [1.0] * 6)
+        self.assertEqual(planes.error_events(never), [(8, 1.0, None, True)])
+        small = d.assign(map_error=[0.0] * 8 + [planes.EVENT_JUMP / 2] * 6)
+        self.assertEqual(planes.error_events(small), [])
+
     def test_wrap_deg_is_in_the_half_open_circle(self):
         for angle, want in [(0, 0), (190, -170), (-190, 170), (360, 0), (540, -180), (180, -180)]:
             self.assertAlmostEqual(float(planes.wrap_deg(angle)), want)

@@ -45,12 +45,18 @@ def loop_means(run, column):
     loops, n = run_loops(run)
     if loops < 1:
         raise rp.DataError(f"{os.path.join(run, 'manifest.json')}: scenario.planar.loops is {loops}: no loops")
-    d = iterations(run, [column], PLANE)
+    return means_per_loop(iterations(run, [column], PLANE), column, loops, n)
+
+
+def means_per_loop(d, column, loops, n):
+    """loop_means on a table (a DataFrame or {column: array}) of `iteration` and `column`: n iterations
+    cut into `loops` equal parts, the mean of each part's finite values (NaN where it has none)."""
+    it, values = np.asarray(d["iteration"], dtype=float), np.asarray(d[column], dtype=float)
     edges = np.linspace(0, n, loops + 1).round().astype(int)
     out = []
     for lo, hi in zip(edges[:-1], edges[1:]):
-        values = d[column][(d["iteration"] >= lo) & (d["iteration"] < hi)]
-        out.append((lo, hi - 1, float(np.nanmean(values)) if np.isfinite(values).any() else float("nan")))
+        part = values[(it >= lo) & (it < hi)]
+        out.append((int(lo), int(hi - 1), float(np.nanmean(part)) if np.isfinite(part).any() else float("nan")))
     return out
 
 
@@ -259,15 +265,21 @@ EVENT_FROM = 5  # the first iterations build the map from nothing: no events the
 def map_error_events(run):
     """Iterations where a plane joins the map with a large error (thesis Figs 76-79: a plane just come
     into view, compared over a tiny interval): [(iteration, jump, iterations until healed or None)]."""
-    d = iterations(run, ["map_error", "planes_in_map"], PLANE)
-    e, n = d["map_error"], d["planes_in_map"]
+    return error_events(iterations(run, ["map_error", "planes_in_map"], PLANE))
+
+
+def error_events(d):
+    """map_error_events on a table (a DataFrame or {column: array}) of iteration, map_error and
+    planes_in_map: [(iteration, jump, iterations until healed or None, a plane joined the map)]."""
+    e, n = np.asarray(d["map_error"], dtype=float), np.asarray(d["planes_in_map"], dtype=float)
+    it = np.asarray(d["iteration"])
     events = []
     for k in range(max(1, EVENT_FROM), len(e)):
         jump = e[k] - e[k - 1]
         if not jump >= EVENT_JUMP:
             continue
         healed = next((h for h in range(1, len(e) - k) if e[k + h] - e[k - 1] <= EVENT_SETTLED * jump), None)
-        events.append((int(d["iteration"][k]), float(jump), healed, bool(n[k] > n[k - 1])))
+        events.append((int(it[k]), float(jump), healed, bool(n[k] > n[k - 1])))
     return events
 
 
