@@ -18,7 +18,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-scripts/setup.sh
+scripts/setup.sh --demo
 cmake -S . -B build -DCMAKE_BUILD_TYPE="${RELSLAM_BUILD_TYPE:-Release}" >/dev/null
 cmake --build build -j "$(nproc)" --target relslam
 echo
