@@ -19,7 +19,8 @@ PlanarExperiment::PlanarExperiment(const LoadedScenario& loaded, PlaneFrameSourc
   const PlaneAlgorithmContext context{loaded.scenario, source.start()};
   for (const std::string& name : loaded.scenario.algorithms)
     recorders_.push_back(
-        std::make_unique<PlaneRecorder>(make_plane_algorithm(name, context), source, out / name));
+        std::make_unique<PlaneRecorder>(make_plane_algorithm(name, context), source.walls(),
+                                        source.frame_columns(), out / name));
 }
 
 ExperimentResult PlanarExperiment::run(bool progress) {

@@ -34,16 +34,15 @@ const std::vector<std::string>& PlaneRecorder::score_columns() {
   return columns;
 }
 
-PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const PlaneFrameSource& source,
-                             const std::filesystem::path& dir)
+PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const std::vector<PlaneObject>& walls,
+                             const std::vector<std::string>& source_columns, const std::filesystem::path& dir)
     : algorithm_(std::move(algorithm)),
-      source_(source),
-      walls_(source.walls()),
+      walls_(walls),
       dir_(created(dir)),
       iterations_(dir_ / "iterations.csv",
                   with_own(with_own(with_own(score_columns(), algorithm_->iteration_columns()),
                                     {"kp_checked", "kp_wrong"}),
-                           source.frame_columns())),
+                           source_columns)),
       trajectory_(dir_ / "trajectory.tum") {
   if (algorithm_->claims_key_points())
     keypoints_.emplace(dir_ / "keypoints.csv",
@@ -51,7 +50,8 @@ PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const Pl
                                                 "interval_start", "interval_end", "truth_correct"});
 }
 
-void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& truth) {
+void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& truth,
+                         const std::vector<CsvField>& measured) {
   digest_.add(observation);
   if (!running()) return;  // failed: the rest of the stream is not processed
   const int k = observation.iteration;
@@ -113,7 +113,7 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   key_points_wrong_ += wrong;
   wrong_key_point_iterations_ += wrong > 0;
   fields_.insert(fields_.end(), {CsvField{checked}, CsvField{wrong}});
-  source_.frame_fields(fields_);
+  fields_.insert(fields_.end(), measured.begin(), measured.end());
   iterations_.row_fields(fields_);
 }
 

@@ -16,9 +16,9 @@ template <class Source, class Recorders>
 std::optional<int> stream_to_recorders(Source& source, Recorders& recorders, Progress& bar) {
   int next = 0;
   try {
-    source.stream([&](const auto& observation, const auto& truth) {
+    source.stream([&](const auto& observation, const auto&... with) {  // the truth, what was measured
       stop_if_interrupted();
-      for (auto& recorder : recorders) recorder->step(observation, truth);
+      for (auto& recorder : recorders) recorder->step(observation, with...);
       next = observation.iteration + 1;
       bar.update(next);
     });
