@@ -6,6 +6,7 @@
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/algorithm_recorder.hpp"
 #include "relslam/eval/experiments/plane_recorder.hpp"
+#include "relslam/eval/metrics/summary_columns.hpp"
 #include "relslam/eval/sources/frame_source.hpp"
 #include "relslam/eval/sources/plane_frame_source.hpp"
 
@@ -26,6 +27,8 @@ struct PointFamily {
   // The Relative Point / EKF ratio row, over the iterations both processed, when both ran.
   static std::optional<SummaryRow> ratio(const std::vector<std::unique_ptr<Recorder>>& recorders,
                                          const std::vector<SummaryRow>& rows);
+  // summary.csv's columns before the algorithms' own.
+  static const std::vector<SummaryColumn>& summary_columns() { return point_summary_columns(); }
 };
 
 // The plane half: plane frames, scored against the true walls (thesis Chapter 4).
@@ -39,6 +42,7 @@ struct PlaneFamily {
                                          const std::vector<SummaryRow>&) {
     return std::nullopt;
   }
+  static const std::vector<SummaryColumn>& summary_columns() { return plane_summary_columns(); }
 };
 
 }  // namespace relslam::eval

@@ -44,7 +44,7 @@ class RunSkeleton {
     for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
     if (stopped_at) mark_interrupted(result.rows, *stopped_at);
     result.ratio = Family::ratio(recorders_, result.rows);
-    write_summary(out_ / "summary.csv", result.rows, result.ratio);
+    write_summary(out_ / "summary.csv", Family::summary_columns(), result.rows, result.ratio);
     bar.finish();
     result.iterations = static_cast<int>(source_.frames());
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
