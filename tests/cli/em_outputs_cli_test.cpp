@@ -6,7 +6,7 @@
 #include "test_support.hpp"
 
 #include "relslam/core/planar_pose.hpp"
-#include "relslam/eval/sources/plane_extractor.hpp"
+#include "relslam/eval/sources/make_plane_extractor.hpp"
 
 #include <gtest/gtest.h>
 

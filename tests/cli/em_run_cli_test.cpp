@@ -4,7 +4,7 @@
 // noise-free frames, the noise-free pipeline's map, determinism, and a bad extractor name.
 #include "test_support.hpp"
 
-#include "relslam/eval/sources/plane_extractor.hpp"
+#include "relslam/eval/sources/make_plane_extractor.hpp"
 
 #include <gtest/gtest.h>
 

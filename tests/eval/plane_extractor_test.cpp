@@ -2,7 +2,7 @@
 // on bad input (issue 14 §5): an empty frame, collinear points and NaN points give a clear
 // outcome (no planes, or the planes of the finite points), never a crash; one wall is one
 // plane; the same seed gives the same planes.
-#include "relslam/eval/sources/plane_extractor.hpp"
+#include "relslam/eval/sources/make_plane_extractor.hpp"
 
 #include <gtest/gtest.h>
 

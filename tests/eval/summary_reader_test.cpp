@@ -1,5 +1,6 @@
 // summary.csv read back: what write_summary wrote comes back to the same values, so tables
 // made from run folders (relslam sweep --aggregate) equal those made from the runs in memory.
+#include "relslam/eval/metrics/summary_columns.hpp"
 #include "relslam/eval/metrics/summary_reader.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
@@ -48,7 +49,7 @@ TEST(SummaryReader, PointRowsAndTheRatioRowReadBackToTheSameFile) {
   failed.status = RunStatus::failed(17, "diverged, \"badly\"");
   failed.final_position_error = std::numeric_limits<double>::quiet_NaN();
   const std::vector<SummaryRow> rows = {row("relative_point", 1), failed};
-  write_summary(dir / "a.csv", rows, ratio_row(rows[0], rows[1]));
+  write_summary(dir / "a.csv", point_summary_columns(), rows, ratio_row(rows[0], rows[1]));
   const std::vector<SummaryRow> back = read_summary(dir / "a.csv");
   ASSERT_EQ(back.size(), 3u);
   EXPECT_EQ(back[0].final_mean_landmark_error, rows[0].final_mean_landmark_error);
@@ -56,7 +57,7 @@ TEST(SummaryReader, PointRowsAndTheRatioRowReadBackToTheSameFile) {
   EXPECT_EQ(back[1].status.text(), failed.status.text());
   EXPECT_TRUE(std::isnan(back[1].final_position_error));
   EXPECT_EQ(back[2].status.kind, RunStatus::Kind::Ratio);
-  write_summary(dir / "b.csv", {back[0], back[1]}, back[2]);
+  write_summary(dir / "b.csv", point_summary_columns(), {back[0], back[1]}, back[2]);
   EXPECT_EQ(test::read_file(dir / "b.csv"), test::read_file(dir / "a.csv"));
 }
 
@@ -64,7 +65,7 @@ TEST(SummaryReader, PlanarColumnsAreReadInTheirPlanarSpelling) {
   test::ScratchDir dir;
   SummaryRow r = row("relative_plane", 1);
   r.planar = PlanarScores{1.5, 0.25, 0.75, 6, 7};
-  write_summary(dir / "a.csv", {r});
+  write_summary(dir / "a.csv", plane_summary_columns(), {r});
   ASSERT_NE(test::read_file(dir / "a.csv").find("final_map_error"), std::string::npos);
   const std::vector<SummaryRow> back = read_summary(dir / "a.csv");
   ASSERT_EQ(back.size(), 1u);
@@ -72,13 +73,13 @@ TEST(SummaryReader, PlanarColumnsAreReadInTheirPlanarSpelling) {
   EXPECT_EQ(back[0].planar->walls_seen, 7);
   EXPECT_EQ(back[0].final_landmark_error, r.final_landmark_error);
   EXPECT_EQ(back[0].landmarks_on_map, 42);
-  write_summary(dir / "b.csv", back);
+  write_summary(dir / "b.csv", plane_summary_columns(), back);
   EXPECT_EQ(test::read_file(dir / "b.csv"), test::read_file(dir / "a.csv"));
 }
 
 TEST(SummaryReader, ABadFieldNamesFileLineAndColumn) {
   test::ScratchDir dir;
-  write_summary(dir / "a.csv", {row("relative_point", 1)});
+  write_summary(dir / "a.csv", point_summary_columns(), {row("relative_point", 1)});
   std::string text = test::read_file(dir / "a.csv");
   text.replace(text.find(",200,"), 5, ",two hundred,");
   test::write_file(dir / "a.csv", text);
@@ -96,7 +97,7 @@ TEST(SummaryReader, ABadFieldNamesFileLineAndColumn) {
 TEST(SummaryReader, NonFiniteOrAbsurdNumbersAreRefusedAtTheirField) {
   for (const char* damage : {"inf", "nan", "-infinity", "1e308"}) {
     test::ScratchDir dir;
-    write_summary(dir / "a.csv", {row("relative_point", 1)});
+    write_summary(dir / "a.csv", point_summary_columns(), {row("relative_point", 1)});
     std::string text = test::read_file(dir / "a.csv");
     const std::string ate = ",2.5,";  // ate_rmse_aligned
     text.replace(text.find(ate), ate.size(), std::string(",") + damage + ",");

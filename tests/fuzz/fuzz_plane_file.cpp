@@ -18,7 +18,8 @@ using relslam::fuzz::require_finite;
 
 void check(relslam::eval::PlaneFileSource& source) {
   long long next = 0;
-  source.stream([&](const relslam::PlaneFrame& observation, const relslam::PlaneTruthFrame& truth) {
+  source.stream([&](const relslam::PlaneFrame& observation, const relslam::PlaneTruthFrame& truth,
+                    const std::vector<relslam::eval::CsvField>&) {
     require(observation.iteration == next && truth.iteration == next, "frames out of iteration order");
     require(truth.planes.size() == observation.planes.size(), "not one truth entry per plane");
     require(!truth.pose_known, "a pose known without a truth path");

@@ -3,6 +3,7 @@
 #include "relslam/spatial/global_index.hpp"
 #include "relslam/spatial/incremental_ovlp_quadtree.hpp"
 #include "relslam/spatial/local_index.hpp"
+#include "relslam/spatial/make_local_index.hpp"
 
 #include "seeded_random.hpp"
 

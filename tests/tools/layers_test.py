@@ -40,15 +40,6 @@ INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
 # Includes inside a layer that close a circle, allowed for now: (layer, includer, included) by
 # concept (path under include/relslam/<...>/ or src/, no extension) -> why it stays.
 ALLOWED_CIRCLES = {
-    ("libslam/spatial", "local_index", "kd_tree_index"):
-        "make_local_index, the factory of the LocalIndex interface, lives in local_index.cpp and builds "
-        "both implementations, which implement that interface: the factory would move to its own file "
-        "and header, and every caller of make_local_index with it",
-    ("libslam/spatial", "local_index", "ovlp_quadtree"): "as local_index -> kd_tree_index",
-    ("eval/sources", "plane_extractor", "extractors"):
-        "make_plane_extractor (plane_extractor.cpp) picks among the extractors that extractors.hpp "
-        "declares, which derive from PlaneExtractor in plane_extractor.hpp: the factory would move to "
-        "its own file and header, and its callers with it",
 }
 
 

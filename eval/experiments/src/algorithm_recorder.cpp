@@ -106,7 +106,7 @@ void AlgorithmRecorder::step(const ObservationFrame& observation, const TruthFra
       estimate, truth, changed, [&](int id) { return algorithm_->position(id); }, runtime_ms);
   own_fields_.clear();
   algorithm_->iteration_fields(own_fields_);
-  iterations_.row(k, s, runtime_ms, observation.points.size(), own_fields_);
+  iterations_.row({k, s, runtime_ms, observation.points.size()}, own_fields_);
   trajectory_.write(observation.time_s.value_or(static_cast<double>(k)), estimate);
   check_budget(k, runtime_ms);
 }

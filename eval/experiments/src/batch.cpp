@@ -1,7 +1,7 @@
 #include "relslam/eval/experiments/batch.hpp"
 
 #include "relslam/eval/config/scenario_loading.hpp"
-#include "relslam/eval/experiments/experiment.hpp"
+#include "relslam/eval/experiments/source_registry.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/experiments/require_algorithms.hpp"
 #include "relslam/eval/io/progress.hpp"

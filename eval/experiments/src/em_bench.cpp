@@ -3,7 +3,7 @@
 #include "relslam/core/split_mix.hpp"
 #include "relslam/em/em_random.hpp"
 #include "relslam/eval/io/csv_writer.hpp"
-#include "relslam/eval/sources/plane_extractor.hpp"
+#include "relslam/eval/sources/make_plane_extractor.hpp"
 #include "relslam/sim/point_sensor.hpp"
 
 #include <chrono>

@@ -2,6 +2,7 @@
 
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/sources/planar_simulation_source.hpp"
+#include "relslam/eval/sources/make_plane_extractor.hpp"
 #include "relslam/eval/sources/point_extraction.hpp"
 
 #include <algorithm>

@@ -1,78 +1,19 @@
 #include "relslam/eval/experiments/experiment.hpp"
 
-#include "stream_to_recorders.hpp"
-
-#include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/point_bounds.hpp"
 #include "relslam/eval/experiments/ekf_log_settings.hpp"
-#include "relslam/eval/experiments/interruption.hpp"
-#include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/experiments/rawlog_defaults.hpp"
 #include "relslam/eval/experiments/require_algorithms.hpp"
-#include "relslam/eval/io/progress.hpp"
 #include "relslam/eval/io/run_folder.hpp"
-#include "relslam/eval/sources/simulation_source.hpp"
 #include "relslam/point/noise_estimate.hpp"
 #include "relslam/point/rlt_mapper.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <optional>
 #include <sstream>
 
 namespace relslam::eval {
-
-Experiment::Experiment(const LoadedScenario& loaded, FrameSource& source, const std::filesystem::path& out)
-    : source_(source), out_(out) {
-  require_algorithms(loaded);
-  const AlgorithmContext context{loaded.scenario, source.sensor()};
-  for (const std::string& name : loaded.scenario.algorithms)
-    recorders_.push_back(
-        std::make_unique<AlgorithmRecorder>(make_algorithm(name, context), source.truth(), out / name));
-}
-
-ExperimentResult Experiment::run(bool progress) {
-  const auto start = std::chrono::steady_clock::now();
-  Progress bar(source_.label(), source_.frames(), progress);
-  ExperimentResult result;
-  // Interrupted, the run finishes with the frames processed so far, every row says where it was
-  // cut, and the command marks the manifest "interrupted".
-  const std::optional<int> stopped_at = stream_to_recorders(source_, recorders_, bar);
-  result.interrupted = stopped_at.has_value();
-  for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
-  if (stopped_at) mark_interrupted(result.rows, *stopped_at);
-  // The Relative Point / EKF ratios, over the iterations both processed: against the 6D EKF,
-  // or else the planar one with odometry.
-  auto index_of = [&](const char* name) {
-    for (std::size_t i = 0; i < recorders_.size(); ++i)
-      if (recorders_[i]->name() == name) return static_cast<int>(i);
-    return -1;
-  };
-  const int rp = index_of("relative_point");
-  int ekf = index_of("ekf6d");
-  if (ekf < 0) ekf = index_of("ekf2d");
-  if (rp >= 0 && ekf >= 0) {
-    const int common = std::min(result.rows[rp].iterations, result.rows[ekf].iterations);
-    if (common > 0)
-      result.ratio = ratio_row(recorders_[rp]->summary_over(common), recorders_[ekf]->summary_over(common));
-  }
-  write_summary(out_ / "summary.csv", result.rows, result.ratio);
-  bar.finish();
-  result.iterations = static_cast<int>(source_.frames());
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.source = source_.describe();
-  return result;
-}
-
-ExperimentResult simulate_and_run(const LoadedScenario& loaded, const std::filesystem::path& out, bool progress) {
-  if (loaded.scenario.kind == ScenarioKind::Planar) return simulate_planar_and_run(loaded, out, progress);
-  require_algorithms(loaded);
-  SimulationSource source(loaded);
-  source.record_into(out);
-  Experiment experiment(loaded, source, out);
-  return experiment.run(progress);
-}
 
 namespace {
 

@@ -27,23 +27,38 @@ bool finite(const PlaneObject& p) { return p.a.allFinite() && p.b.allFinite(); }
 
 }  // namespace
 
-const std::vector<std::string>& PlaneRecorder::score_columns() {
-  static const std::vector<std::string> columns = {
-      "iteration",  "map_error",    "mean_map_error", "position_error", "heading_error_deg",
-      "ex",         "ez",           "runtime_ms",     "planes_in_map",  "visible_planes"};
+const std::vector<ScoreColumn<PlaneIterationRow>>& plane_iteration_columns() {
+  using R = PlaneIterationRow;
+  static const std::vector<ScoreColumn<R>> columns = {
+      {"iteration", "", "the frame's iteration k", [](const R& r) { return csv_field(r.iteration); }},
+      {"map_error", "world", "sum over the mapped planes of the key-point error e_ends against their walls",
+       [](const R& r) { return csv_field(r.map_error.sum); }},
+      {"mean_map_error", "world", "map_error per scored plane; empty when none is scored",
+       [](const R& r) { return r.map_error.scored > 0 ? csv_field(r.map_error.mean) : CsvField{}; }},
+      {"position_error", "world", "distance of the estimated position from the true one",
+       [](const R& r) { return r.pose_error ? csv_field(r.pose_error->position) : CsvField{}; }},
+      {"heading_error_deg", "deg", "estimated - true heading",
+       [](const R& r) { return r.pose_error ? csv_field(r.pose_error->heading_rad * kDeg) : CsvField{}; }},
+      {"ex", "world", "estimate - truth, world x",
+       [](const R& r) { return r.pose_error ? csv_field(r.pose_error->axes.x()) : CsvField{}; }},
+      {"ez", "world", "estimate - truth, world z",
+       [](const R& r) { return r.pose_error ? csv_field(r.pose_error->axes.y()) : CsvField{}; }},
+      {"runtime_ms", "ms", "wall-clock time of the algorithm's step", [](const R& r) { return csv_field(r.runtime_ms); }},
+      {"planes_in_map", "", "planes on the map", [](const R& r) { return csv_field(r.planes_in_map); }},
+      {"visible_planes", "", "plane observations in the frame", [](const R& r) { return csv_field(r.visible_planes); }},
+  };
   return columns;
 }
 
-PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const PlaneFrameSource& source,
-                             const std::filesystem::path& dir)
+PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const std::vector<PlaneObject>& walls,
+                             const std::vector<std::string>& source_columns, const std::filesystem::path& dir)
     : algorithm_(std::move(algorithm)),
-      source_(source),
-      walls_(source.walls()),
+      walls_(walls),
       dir_(created(dir)),
       iterations_(dir_ / "iterations.csv",
-                  with_own(with_own(with_own(score_columns(), algorithm_->iteration_columns()),
+                  with_own(with_own(with_own(column_names(plane_iteration_columns()), algorithm_->iteration_columns()),
                                     {"kp_checked", "kp_wrong"}),
-                           source.frame_columns())),
+                           source_columns)),
       trajectory_(dir_ / "trajectory.tum") {
   if (algorithm_->claims_key_points())
     keypoints_.emplace(dir_ / "keypoints.csv",
@@ -51,7 +66,8 @@ PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const Pl
                                                 "interval_start", "interval_end", "truth_correct"});
 }
 
-void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& truth) {
+void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& truth,
+                         const std::vector<CsvField>& measured) {
   digest_.add(observation);
   if (!running()) return;  // failed: the rest of the stream is not processed
   const int k = observation.iteration;
@@ -85,16 +101,9 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   truths_.push_back(truth.pose_known ? std::optional<PlanarPose>(truth.world_T_robot) : std::nullopt);
   runtimes_ms_.push_back(runtime_ms);
 
-  fields_ = {static_cast<long long>(k),
-             last_map_error_.sum,
-             last_map_error_.scored > 0 ? CsvField{last_map_error_.mean} : CsvField{},
-             pose_error ? CsvField{pose_error->position} : CsvField{},
-             pose_error ? CsvField{pose_error->heading_rad * kDeg} : CsvField{},
-             pose_error ? CsvField{pose_error->axes.x()} : CsvField{},
-             pose_error ? CsvField{pose_error->axes.y()} : CsvField{},
-             runtime_ms,
-             static_cast<long long>(map.size()),
-             static_cast<long long>(observation.planes.size())};
+  fields_.clear();
+  append_fields(plane_iteration_columns(), {k, last_map_error_, pose_error, runtime_ms, map.size(), observation.planes.size()},
+                fields_);
   algorithm_->iteration_fields(fields_);
   // Key-point correctness (spec §7.2): a claim is right when the ends it says are real are the
   // wall's real ends in this observation.
@@ -113,7 +122,7 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   key_points_wrong_ += wrong;
   wrong_key_point_iterations_ += wrong > 0;
   fields_.insert(fields_.end(), {CsvField{checked}, CsvField{wrong}});
-  source_.frame_fields(fields_);
+  fields_.insert(fields_.end(), measured.begin(), measured.end());
   iterations_.row_fields(fields_);
 }
 

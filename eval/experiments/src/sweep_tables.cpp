@@ -2,6 +2,7 @@
 
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/metrics/seed_statistics.hpp"
+#include "relslam/eval/metrics/summary_columns.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -2,6 +2,7 @@
 
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/io/csv_reader.hpp"
+#include "relslam/eval/metrics/summary_columns.hpp"
 
 #include <charconv>
 #include <cmath>

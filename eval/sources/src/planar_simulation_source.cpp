@@ -185,7 +185,7 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
                                     t.b_is_wall_end, p.y_lo, p.y_hi);
       }
     }
-    consume(frame.observation, frame.truth);
+    consume(frame.observation, frame.truth, measured());
   }
   summary_.visible_mean = frames_ > 0 ? static_cast<double>(summary_.observations) / frames_ : 0.0;
   if (recorder_) {
@@ -214,10 +214,9 @@ std::vector<std::string> PlanarSimulationSource::frame_columns() const {
   return {"t_extract_ms", "extracted_planes"};
 }
 
-void PlanarSimulationSource::frame_fields(std::vector<CsvField>& out) const {
-  if (!extraction_) return;
-  out.emplace_back(extraction_->last_ms());
-  out.emplace_back(static_cast<long long>(extraction_->last_score().planes));
+std::vector<CsvField> PlanarSimulationSource::measured() const {
+  if (!extraction_) return {};
+  return {CsvField{extraction_->last_ms()}, CsvField{static_cast<long long>(extraction_->last_score().planes)}};
 }
 
 }  // namespace relslam::eval

@@ -139,7 +139,7 @@ PlaneFileSource::PlaneFileSource(const PlaneFiles& files) : files_(files) {
 }
 
 void PlaneFileSource::stream(const Consumer& consume) {
-  for (const auto& [observation, truth] : frames_) consume(observation, truth);
+  for (const auto& [observation, truth] : frames_) consume(observation, truth, {});
 }
 
 nlohmann::json PlaneFileSource::describe() const {

@@ -1,5 +1,7 @@
 #include "relslam/eval/sources/point_extraction.hpp"
 
+#include "relslam/eval/sources/make_plane_extractor.hpp"
+
 #include "relslam/em/em_random.hpp"
 
 #include <algorithm>

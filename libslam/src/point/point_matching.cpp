@@ -1,6 +1,7 @@
 #include "relslam/point/point_matching.hpp"
 
 #include "relslam/point/rlt_icp.hpp"
+#include "relslam/spatial/make_local_index.hpp"
 
 #include <algorithm>
 #include <cmath>

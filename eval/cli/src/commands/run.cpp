@@ -4,11 +4,10 @@
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
-#include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/experiments/rawlog_defaults.hpp"
 #include "relslam/eval/experiments/require_algorithms.hpp"
+#include "relslam/eval/experiments/source_registry.hpp"
 #include "relslam/eval/io/run_folder.hpp"
-#include "relslam/eval/sources/plane_file_source.hpp"
 
 #include <cstdio>
 
@@ -58,18 +57,6 @@ void check_inputs(const RunArgs& args) {
   if (args.planes.empty() && !args.truth_walls.empty()) throw InputError("", 0, "--truth-walls", "goes with --planes");
 }
 
-// Plane frames from files through the scenario's plane algorithms.
-ExperimentResult run_on_planes(const LoadedScenario& loaded, const RunArgs& args) {
-  if (loaded.scenario.kind != ScenarioKind::Planar)
-    throw loaded.error("kind", "--planes feeds the planar half: the scenario must be of kind \"planar\"");
-  PlaneFiles files{args.planes, std::nullopt, std::nullopt};
-  if (!args.truth_path.empty()) files.truth_path = args.truth_path;
-  if (!args.truth_walls.empty()) files.truth_walls = args.truth_walls;
-  PlaneFileSource source(files);
-  PlanarExperiment experiment(loaded, source, args.out);
-  return experiment.run(!args.quiet);
-}
-
 RawlogFiles rawlog_files(const RunArgs& args) {
   RawlogFiles files{args.rawlog, std::nullopt, std::nullopt};
   if (!args.truth_path.empty()) files.truth_path = args.truth_path;
@@ -102,13 +89,8 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
 
   ExperimentResult result;
   try {
-    if (!args.planes.empty()) {
-      result = run_on_planes(loaded, args);
-    } else if (args.rawlog.empty()) {
-      result = simulate_and_run(loaded, args.out, !args.quiet);
-    } else {
-      result = run_on_rawlog(loaded, rawlog_files(args), args.out, !args.quiet);
-    }
+    const RunInputs inputs{args.rawlog, args.planes, args.truth_path, args.truth_landmarks, args.truth_walls};
+    result = run_from_source(loaded, inputs, args.out, !args.quiet);
   } catch (const std::exception& e) {
     record_failure(args.out, loaded.scenario, invocation, e);
     throw;

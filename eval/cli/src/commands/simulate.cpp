@@ -57,7 +57,7 @@ int simulate_into(const SimulateArgs& args, const LoadedScenario& loaded, const 
   const auto start = std::chrono::steady_clock::now();
   Progress progress("simulate " + scenario.name, source.frames(), !args.quiet);
   const bool interrupted = stream_until_interrupted(args, scenario, invocation, [&] {
-    source.stream([&](const auto& observation, const auto&) {
+    source.stream([&](const auto& observation, const auto&...) {
       stop_if_interrupted();
       progress.update(observation.iteration + 1);
     });

@@ -4,7 +4,6 @@
 
 #include <Eigen/Core>
 
-#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -35,7 +34,6 @@ enum class LocalIndexKind {
 std::string_view to_string(LocalIndexKind kind);
 std::optional<LocalIndexKind> parse_local_index(std::string_view name);
 
-// cell_size is the grid cell (quadtree, octree); radius the matching bound.
-std::unique_ptr<LocalIndex> make_local_index(LocalIndexKind kind, double cell_size, double radius);
+// make_local_index.hpp builds one.
 
 }  // namespace relslam::spatial

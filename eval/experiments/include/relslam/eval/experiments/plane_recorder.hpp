@@ -13,6 +13,7 @@
 #include "relslam/eval/io/tum_writer.hpp"
 #include "relslam/eval/metrics/plane_map_error.hpp"
 #include "relslam/eval/metrics/run_summary.hpp"
+#include "relslam/eval/metrics/score_column.hpp"
 #include "relslam/eval/sources/plane_frame_source.hpp"
 
 #include <filesystem>
@@ -23,18 +24,32 @@
 
 namespace relslam::eval {
 
+// What the shared columns of one plane iterations.csv row read.
+struct PlaneIterationRow {
+  int iteration = 0;
+  PlaneMapError map_error;
+  std::optional<PlanarPoseError> pose_error;  // none without a pose or a true pose
+  double runtime_ms = 0;
+  std::size_t planes_in_map = 0;
+  std::size_t visible_planes = 0;
+};
+
+// The shared columns of iterations.csv, before the algorithm's own: iteration, map_error,
+// mean_map_error, position_error, heading_error_deg, ex, ez, runtime_ms, planes_in_map,
+// visible_planes.
+const std::vector<ScoreColumn<PlaneIterationRow>>& plane_iteration_columns();
+
 class PlaneRecorder {
  public:
-  // Shared columns of iterations.csv, before the algorithm's own.
-  static const std::vector<std::string>& score_columns();
 
-  // The true walls (by id, world frame) and the source's own columns come from `source`, which
-  // must outlive the recorder. Writes into dir (created).
-  PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const PlaneFrameSource& source,
-                const std::filesystem::path& dir);
+  // walls: the true walls (by id, world frame), which must outlive the recorder; source_columns:
+  // the source's own columns (PlaneFrameSource::frame_columns), whose fields come with each
+  // frame. Writes into dir (created).
+  PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const std::vector<PlaneObject>& walls,
+                const std::vector<std::string>& source_columns, const std::filesystem::path& dir);
 
   const std::string& name() const { return algorithm_->name(); }
-  void step(const PlaneFrame& observation, const PlaneTruthFrame& truth);
+  void step(const PlaneFrame& observation, const PlaneTruthFrame& truth, const std::vector<CsvField>& measured);
   // Closes the files, writes planes.csv and the algorithm's tables; the row for summary.csv.
   SummaryRow finish();
   const PlaneAlgorithm& algorithm() const { return *algorithm_; }
@@ -46,7 +61,6 @@ class PlaneRecorder {
   bool running() const { return status_.kind == RunStatus::Kind::NotRun || status_.kind == RunStatus::Kind::Ok; }
 
   std::unique_ptr<PlaneAlgorithm> algorithm_;
-  const PlaneFrameSource& source_;
   const std::vector<PlaneObject>& walls_;
   std::filesystem::path dir_;
   CsvWriter iterations_;

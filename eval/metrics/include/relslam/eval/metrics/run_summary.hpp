@@ -87,18 +87,6 @@ struct SummaryRow {
   std::vector<CsvField> own_fields;
 };
 
-// One row per algorithm; planar rows (SummaryRow::planar) name their columns for planes
-// (final_map_error, planes_on_map, ...) and add the PlanarScores columns, then every row's own
-// columns. Then, when both relative_point and ekf6d ran, a row
-// "relative_point/ekf6d" (status "ratio") holding their ratios, compared over the iterations
-// both processed (the EKF may have stopped early): `ratio` is that row, computed by the caller.
-void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
-                   const std::optional<SummaryRow>& ratio = std::nullopt);
-// A summary column as planar runs name it ("final_landmark_error" -> "final_map_error",
-// "landmarks_on_map" -> "planes_on_map"), or as is for the point half. summary.csv, sweep.csv and
-// aggregate.csv all name their columns through it.
-std::string summary_column(std::string_view name, bool planar);
-
 // A signal stopped the frames before `iteration`: every row still "ok" becomes "interrupted at
 // iteration <iteration>", so no table counts a cut run as finished; failed and stopped rows keep
 // the reason they ended for.

@@ -58,7 +58,6 @@ class PlanarSimulationSource final : public PlaneFrameSource {
   nlohmann::json describe() const override;
   // With the point sensor: t_extract_ms and extracted_planes.
   std::vector<std::string> frame_columns() const override;
-  void frame_fields(std::vector<CsvField>& out) const override;
 
   const sim::PlanarMap& map() const { return map_; }
   const sim::PlanarSimulator& simulator() const { return simulator_; }
@@ -70,6 +69,8 @@ class PlanarSimulationSource final : public PlaneFrameSource {
 
  private:
   struct Recorder;
+  // The frame_columns() fields of the frame just extracted.
+  std::vector<CsvField> measured() const;
   std::string name_;
   std::filesystem::path map_file_;
   sim::PlanarMap map_;

@@ -1,9 +1,7 @@
 #pragma once
 // A plane extractor: one point frame in (robot frame), the planes the Relative Plane algorithm
 // takes out, each with the points behind it (thesis Chapter 5; spec relative_plane_em.md §4).
-// make_plane_extractor() is the one place that maps relative_plane.extractor to an
-// implementation: EM2 and EM1 of libslam, and the Open3D RANSAC baseline when relslam was
-// built with Open3D.
+// make_plane_extractor.hpp builds one.
 
 #include "relslam/core/planar_points.hpp"
 #include "relslam/em/options.hpp"
@@ -30,10 +28,5 @@ struct ExtractorSettings {
   em::EmOptions em;
   RansacOptions ransac;
 };
-
-// Whether this build has the extractor (ransac_open3d needs Open3D).
-bool extractor_available(PlaneExtractorKind kind);
-// The extractor; throws std::invalid_argument when this build does not have it.
-std::unique_ptr<PlaneExtractor> make_plane_extractor(PlaneExtractorKind kind, const ExtractorSettings& settings);
 
 }  // namespace relslam::eval

@@ -18,7 +18,11 @@ namespace relslam::eval {
 
 class PlaneFrameSource {
  public:
-  using Consumer = std::function<void(const PlaneFrame& observation, const PlaneTruthFrame& truth)>;
+  // `measured`: what the source measured while making this frame (such as the plane extraction's
+  // time), in the order of frame_columns(); it travels with the frame, so scoring never asks
+  // the source about a frame that has moved on.
+  using Consumer = std::function<void(const PlaneFrame& observation, const PlaneTruthFrame& truth,
+                                      const std::vector<CsvField>& measured)>;
 
   virtual ~PlaneFrameSource() = default;
   // What progress lines call it ("run p-four-planes").
@@ -35,9 +39,8 @@ class PlaneFrameSource {
   // What the frames were, for manifest.json's "source" (complete after stream()).
   virtual nlohmann::json describe() const = 0;
   // The source's own columns of every algorithm's iterations.csv (after the algorithm's), such
-  // as the plane extraction's time, and their fields for the frame being consumed.
+  // as the plane extraction's time: what each frame's `measured` fields are.
   virtual std::vector<std::string> frame_columns() const { return {}; }
-  virtual void frame_fields(std::vector<CsvField>&) const {}
 };
 
 }  // namespace relslam::eval

@@ -1,4 +1,4 @@
-#include "relslam/eval/sources/plane_extractor.hpp"
+#include "relslam/eval/sources/make_plane_extractor.hpp"
 
 #include "extractors.hpp"
 
