@@ -1,5 +1,6 @@
 #include "relslam/eval/experiments/planar_experiment.hpp"
 
+#include "reference_scores.hpp"
 #include "stream_to_recorders.hpp"
 
 #include "relslam/eval/algorithms/registry.hpp"
@@ -14,7 +15,7 @@ namespace relslam::eval {
 
 PlanarExperiment::PlanarExperiment(const LoadedScenario& loaded, PlaneFrameSource& source,
                                    const std::filesystem::path& out)
-    : source_(source), out_(out) {
+    : source_(source), out_(out), output_(loaded.scenario.output) {
   require_algorithms(loaded);
   const PlaneAlgorithmContext context{loaded.scenario, source.start()};
   for (const std::string& name : loaded.scenario.algorithms)
@@ -32,6 +33,7 @@ ExperimentResult PlanarExperiment::run(bool progress) {
   result.interrupted = stopped_at.has_value();
   for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
   if (stopped_at) mark_interrupted(result.rows, *stopped_at);
+  add_reference_scores(result.rows, recorders_, output_);
   write_summary(out_ / "summary.csv", result.rows);
   bar.finish();
   result.iterations = static_cast<int>(source_.frames());

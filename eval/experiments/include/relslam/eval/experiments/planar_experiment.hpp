@@ -25,6 +25,7 @@ class PlanarExperiment {
  private:
   PlaneFrameSource& source_;
   std::filesystem::path out_;
+  OutputOptions output_;  // the reference algorithm and revisits scored in summary.csv
   std::vector<std::unique_ptr<PlaneRecorder>> recorders_;
 };
 
