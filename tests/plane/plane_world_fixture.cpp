@@ -41,7 +41,7 @@ PathBuilder& PathBuilder::turn(double angle_rad, double step_rad) {
 
 PlaneFrame observe(const std::vector<Wall>& walls, const PlanarPose& world_T_robot, int iteration,
                    const Visibility& visibility, std::vector<int>* wall_ids) {
-  PlaneFrame frame{iteration, {}, nullptr};
+  PlaneFrame frame{iteration, {}, nullptr, {}};
   if (wall_ids) wall_ids->clear();
   for (int w = 0; w < static_cast<int>(walls.size()); ++w) {
     PlaneObject plane{world_T_robot.inverse_apply(walls[w].a), world_T_robot.inverse_apply(walls[w].b)};

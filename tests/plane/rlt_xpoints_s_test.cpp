@@ -411,8 +411,8 @@ TEST(RltXPointsS, SameInputGivesTheSameRun) {
 
 TEST(RltXPointsS, IterationsMustIncrease) {
   RltXPointsS slam;
-  slam.step(PlaneFrame{3, {}, nullptr});
-  EXPECT_THROW(slam.step(PlaneFrame{3, {}, nullptr}), std::logic_error);
+  slam.step(PlaneFrame{3, {}, nullptr, {}});
+  EXPECT_THROW(slam.step(PlaneFrame{3, {}, nullptr, {}}), std::logic_error);
 }
 
 TEST(RltXPointsS, InvalidOptionsAreABug) {

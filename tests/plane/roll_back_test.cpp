@@ -59,7 +59,7 @@ TEST(RltPlaneStorage, FindsTheNewestCheckpointBeforeATargetAndTrimsToTheReach) {
   RltPlaneStorage storage;
   RltXPointsState state;
   for (int k = 0; k <= 100; ++k) {
-    storage.record({k, {}, nullptr});
+    storage.record({k, {}, nullptr, {}});
     state.iteration_ = k;
     storage.checkpoint_if_due(k, state, 10);
   }

@@ -26,7 +26,8 @@ LIBSLAM = {"core": 0, "spatial": 1, "point": 2, "plane": 2, "em": 2, "relax": 3}
 SIM = {
     "random": 0, "checked": 0, "centerline": 0, "frustum": 0, "viewing_frustum": 0, "planar_world": 0,
     "options": 1, "figure_eight": 1, "straight_line": 1, "plane_noise": 1, "planar_path": 1,
-    "path": 2, "plane_sensor": 2,
+    "ray_cast": 1, "odometry_noise": 1,
+    "path": 2, "plane_sensor": 2, "laser_sensor": 2, "depth_camera": 2,
     "world": 3, "column_grid": 3, "planar_map": 3, "point_sensor": 3,
     "simulator": 4, "planar_simulator": 4,
     "planar_sight": 5,

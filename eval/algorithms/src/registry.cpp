@@ -2,6 +2,7 @@
 
 #include "ekf2d.hpp"
 #include "ekf6d.hpp"
+#include "icp_slam.hpp"
 #include "relative_plane.hpp"
 #include "relative_point.hpp"
 
@@ -45,6 +46,12 @@ const std::vector<PlaneAlgorithmEntry>& plane_algorithm_registry() {
       {"relative_plane",
        "Relative Plane: relative maps of wall groups, no odometry, pose from scratch each frame (thesis 4)",
        [](const PlaneAlgorithmContext& c) { return make_relative_plane(c.scenario.relative_plane, c.world_T_start); }},
+      {"icp_slam",
+       "MRPT's ICP-SLAM (CMetricMapBuilderICP) on laser scans, options icp_slam.* as its icp-slam_demo_classic.ini: "
+       "the scan-matching baseline; no planes",
+       [](const PlaneAlgorithmContext& c) { return make_icp_slam(c.scenario.icp_slam, c.world_T_start); }},
+      {"odometry", "dead reckoning: the start pose followed by every frame's odometry; no planes",
+       [](const PlaneAlgorithmContext& c) { return make_odometry(c.world_T_start); }},
   };
   return entries;
 }

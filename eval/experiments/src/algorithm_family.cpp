@@ -1,5 +1,7 @@
 #include "relslam/eval/experiments/algorithm_family.hpp"
 
+#include "reference_scores.hpp"
+
 #include "relslam/eval/algorithms/registry.hpp"
 
 #include <algorithm>
@@ -43,6 +45,11 @@ std::vector<std::unique_ptr<PlaneRecorder>> PlaneFamily::recorders(const LoadedS
     recorders.push_back(std::make_unique<PlaneRecorder>(make_plane_algorithm(name, context), source.walls(),
                                                         source.frame_columns(), out / name));
   return recorders;
+}
+
+void PlaneFamily::add_cross_scores(std::vector<SummaryRow>& rows, const std::vector<std::unique_ptr<Recorder>>& recorders,
+                                   const OutputOptions& output) {
+  add_reference_scores(rows, recorders, output);
 }
 
 }  // namespace relslam::eval

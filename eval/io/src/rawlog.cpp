@@ -6,11 +6,10 @@
 #include "relslam/eval/io/range_bearing.hpp"
 
 #include "mrpt_record_check.hpp"
+#include "rawlog_record_stream.hpp"
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -354,46 +353,25 @@ ObservationFrame observation_frame(const RawlogFrame& frame) {
 }
 
 struct RawlogWriter::Impl {
-  std::unique_ptr<mrpt::io::CStream> stream;
-  // Each record is serialised into memory first and written with one call: MRPT's archive
-  // issues one stream write per field, which is several times slower on a file stream.
-  mrpt::io::CMemoryStream record;
+  Impl(const std::filesystem::path& path, bool gzip) : stream(path, gzip) {}
+  RawlogRecordStream stream;
   RangeBearingSensor sensor;
-  std::string name;
 };
 
 RawlogWriter::RawlogWriter(const std::filesystem::path& path, const RangeBearingSensor& sensor, bool gzip)
-    : impl_(std::make_unique<Impl>()) {
+    : impl_(std::make_unique<Impl>(path, gzip)) {
   impl_->sensor = sensor;
-  impl_->name = path.string();
-  if (gzip) {
-    auto s = std::make_unique<mrpt::io::CFileGZOutputStream>();
-    if (!s->open(impl_->name, 1)) throw std::runtime_error(impl_->name + ": cannot create file");
-    impl_->stream = std::move(s);
-  } else {
-    auto s = std::make_unique<mrpt::io::CFileOutputStream>();
-    if (!s->open(impl_->name, mrpt::io::OpenMode::TRUNCATE))
-      throw std::runtime_error(impl_->name + ": cannot create file");
-    impl_->stream = std::move(s);
-  }
 }
 
 RawlogWriter::~RawlogWriter() = default;
 
 void RawlogWriter::write(const ObservationFrame& frame, const std::vector<int>& landmark_ids, double timestamp_s) {
-  if (!impl_->stream) throw std::logic_error(impl_->name + ": write after close");
   CSensoryFrame sf;
   sf.insert(bearing_range_observation(frame, landmark_ids, impl_->sensor, timestamp_s));
   // Action first: kf-slam then pairs step k with frame k. Empty without odometry.
-  const CActionCollection actions = odometry_actions(frame);
-  impl_->record.clear();
-  auto archive = mrpt::serialization::archiveFrom(impl_->record);
-  archive << actions << sf;
-  const auto bytes = static_cast<std::size_t>(impl_->record.getPosition());  // bytes written since clear()
-  if (impl_->stream->Write(impl_->record.getRawBufferData(), bytes) != bytes)
-    throw std::runtime_error(impl_->name + ": write failed (disk full?)");
+  impl_->stream.write(odometry_actions(frame), sf);
 }
 
-void RawlogWriter::close() { impl_->stream.reset(); }
+void RawlogWriter::close() { impl_->stream.close(); }
 
 }  // namespace relslam::eval

@@ -4,6 +4,8 @@
 #include "relslam/eval/sources/plane_frame_files.hpp"
 #include "relslam/sim/planar_sight.hpp"
 
+#include "range_sensor_frames.hpp"
+
 #include <algorithm>
 #include <limits>
 
@@ -141,6 +143,7 @@ PlanarSimulationSource::PlanarSimulationSource(const LoadedScenario& loaded)
   if (simulator_.has_point_sensor())
     extraction_ = std::make_unique<PointExtraction>(loaded, walls_, simulator_.point_sensor().options());
   point_frames_ = resolve_point_frames(loaded, frames_, extraction_ != nullptr);
+  range_ = RangeSensorFrames::make(loaded, map_.world);
 }
 
 PlanarSimulationSource::~PlanarSimulationSource() = default;
@@ -154,6 +157,7 @@ void PlanarSimulationSource::record_into(const fs::path& dir) {
   walls.close();
   recorder_ = std::make_unique<Recorder>(dir);
   if (extraction_) extraction_->record_into(dir, point_frames_);
+  if (range_) range_->record_into(dir);
 }
 
 sim::PlaneSimFrame PlanarSimulationSource::frame(int k) {
@@ -166,7 +170,11 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
   summary_.walls = static_cast<int>(map_.world.walls.size());
   summary_.visible_min = frames_ > 0 ? std::numeric_limits<int>::max() : 0;
   for (int k = 0; k < frames_; ++k) {
-    const sim::PlaneSimFrame frame = this->frame(k);
+    sim::PlaneSimFrame frame = this->frame(k);
+    if (range_)
+      range_->add(k, frame.truth.world_T_robot,
+                  k > 0 ? std::optional<PlanarPose>(simulator_.path().world_T_robot(k - 1)) : std::nullopt,
+                  frame.observation);
     const int seen = static_cast<int>(frame.observation.planes.size());
     summary_.observations += seen;
     summary_.visible_min = std::min(summary_.visible_min, seen);
@@ -194,10 +202,11 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
     recorder_->observations.close();
   }
   if (extraction_) extraction_->finish();
+  if (range_) range_->finish();
 }
 
 nlohmann::json PlanarSimulationSource::describe() const {
-  return {{"planar_simulation",
+  nlohmann::json out = {{"planar_simulation",
            {{"map", map_.name},
             {"map_file", map_file_.string()},
             {"iterations", summary_.iterations},
@@ -207,6 +216,8 @@ nlohmann::json PlanarSimulationSource::describe() const {
             {"distance_travelled", summary_.distance_travelled},
             {"sensor", std::string(to_string(extraction_ ? PlanarSensorKind::Points : PlanarSensorKind::Planes))},
             {"extraction", extraction_ ? extraction_->describe() : nlohmann::json()}}}};
+  if (range_) out["planar_simulation"]["range_sensor"] = range_->describe();
+  return out;
 }
 
 std::vector<std::string> PlanarSimulationSource::frame_columns() const {

@@ -18,7 +18,9 @@ void add_simulate(CLI::App& app, SimulateArgs& args) {
                        "and everything is written to one run folder: ground_truth_path.tum (evo reads it),\n"
                        "ground_truth_landmarks.csv, sim_iterations.csv, observations.csv, observations.rawlog (MRPT)\n"
                        "and manifest.json. A planar scenario (kind \"planar\": walls, thesis Chapter 4) writes\n"
-                       "ground_truth_walls.csv, ground_truth_path.tum, plane_observations.csv and manifest.json.\n"
+                       "ground_truth_walls.csv, ground_truth_path.tum, plane_observations.csv and manifest.json; with\n"
+                       "planar.sensor \"laser\" also laser.rawlog (2-D scans with odometry, for MRPT's icp-slam),\n"
+                       "with \"depth\" depth.rawlog (every planar.depth_record_every-th 640x480 depth image).\n"
                        "The same scenario and seed always give the same bytes.",
                        "scenarios/s-f8.json");
 }

@@ -5,6 +5,9 @@
 // (relslam/core/option_fields.hpp).
 
 #include "relslam/core/option_fields.hpp"
+#include "relslam/sim/depth_camera.hpp"
+#include "relslam/sim/laser_sensor.hpp"
+#include "relslam/sim/odometry_noise.hpp"
 
 #include <numbers>
 #include <string>
@@ -43,11 +46,20 @@ void describe(OptionsOf<PlanarNoiseSettings> auto& n, auto& f) {
 }
 
 // The sensor's output kind: plane observations (Chapter 4) or points on the walls, from which
-// relative_plane.extractor finds the planes (Chapter 5; spec §3.5, §4).
-enum class PlanarSensorKind { Planes, Points };
-inline constexpr PlanarSensorKind kPlanarSensorKinds[] = {PlanarSensorKind::Planes, PlanarSensorKind::Points};
+// relative_plane.extractor finds the planes (Chapter 5; spec §3.5, §4); or a range sensor ray
+// casting the walls (sim/laser_sensor.hpp, sim/depth_camera.hpp), whose frames carry the plane
+// sensor's planes at the same pose beside the raw scan or image.
+enum class PlanarSensorKind { Planes, Points, Laser, Depth };
+inline constexpr PlanarSensorKind kPlanarSensorKinds[] = {PlanarSensorKind::Planes, PlanarSensorKind::Points,
+                                                         PlanarSensorKind::Laser, PlanarSensorKind::Depth};
 inline std::string_view to_string(PlanarSensorKind kind) {
-  return kind == PlanarSensorKind::Points ? "points" : "planes";
+  switch (kind) {
+    case PlanarSensorKind::Points: return "points";
+    case PlanarSensorKind::Laser: return "laser";
+    case PlanarSensorKind::Depth: return "depth";
+    case PlanarSensorKind::Planes: break;
+  }
+  return "planes";
 }
 
 struct PlanarOptions {
@@ -69,6 +81,13 @@ struct PlanarOptions {
   bool backface_cull = true;
   PlanarSensorKind sensor = PlanarSensorKind::Planes;  // [T Chapter 4]
   PlanarNoiseSettings noise;
+  sim::LaserSensorOptions laser;  // planar.sensor "laser"
+  sim::DepthCameraOptions depth;  // planar.sensor "depth"
+  // The laser's and the depth camera's frames carry odometry with this noise [C].
+  sim::OdometryNoiseOptions odometry;
+  // The depth camera's rawlog of `relslam simulate` holds every n-th frame: a 640×480 frame is
+  // about 0.6 MB [C].
+  int depth_record_every = 30;
 };
 
 bool is_frustum_name(const std::string& name);        // map, small, large
@@ -91,8 +110,16 @@ void describe(OptionsOf<PlanarOptions> auto& o, auto& f) {
   f.field("visibility", o.visibility, "map, frustum, full_size, always_visible (Map A) or scripted (Map B)",
           holds(is_visibility_name(o.visibility), "expected map, frustum, full_size, always_visible or scripted"));
   f.field("backface_cull", o.backface_cull, "drop walls seen from behind (off: the early simulator of Fig 72)");
-  f.choice("sensor", o.sensor, "what the robot reports: planes, or points (planes found by relative_plane.extractor)", kPlanarSensorKinds);
+  f.choice("sensor", o.sensor,
+           "what the robot reports: planes, points (planes found by relative_plane.extractor), or a 2-D laser "
+           "scan or a depth image beside the plane sensor's planes",
+           kPlanarSensorKinds);
   f.nested("noise", o.noise);
+  f.nested("laser", o.laser);
+  f.nested("depth", o.depth);
+  f.nested("odometry", o.odometry);
+  f.field("depth_record_every", o.depth_record_every, "depth sensor: simulate writes every n-th frame to depth.rawlog",
+          at_least(1));
 }
 
 }  // namespace relslam::eval

@@ -5,6 +5,7 @@
 
 #include "relslam/eval/config/binning_bench_options.hpp"
 #include "relslam/eval/config/ekf2d_options.hpp"
+#include "relslam/eval/config/icp_slam_options.hpp"
 #include "relslam/eval/config/ekf6d_options.hpp"
 #include "relslam/eval/config/extraction_options.hpp"
 #include "relslam/eval/config/planar_options.hpp"
@@ -60,6 +61,11 @@ struct OutputOptions {
   // point_frames.csv, for the thesis's "points currently visible" views (Figs 46, 105-108,
   // paper Fig 6); negative counts from the end (-1: the last iteration). Empty: none [C].
   IterationList point_frames;
+  // Planar runs: the algorithm whose path scores the others where there is no ground truth
+  // (summary.csv's ate_vs_reference), and pairs of iterations at the same place whose gap each
+  // path leaves is scored (loop_gap_m, loop_gap_deg; the first pair) [C].
+  std::string reference_algorithm = "icp_slam";
+  IterationList revisit_frames;
 };
 
 // The scenario keys of OutputOptions (output.*).
@@ -73,6 +79,11 @@ void describe(OptionsOf<OutputOptions> auto& o, auto& f) {
   f.field("rawlog_gzip", o.rawlog_gzip, "gzip-compress the rawlog");
   f.field("point_frames", o.point_frames,
           "planar point sensor: iterations written to point_frames.csv (negative from the end, -1 the last)");
+  f.field("reference_algorithm", o.reference_algorithm,
+          "planar: the algorithm whose path the others are scored against (ate_vs_reference)");
+  f.field("revisit_frames", o.revisit_frames,
+          "planar: two iterations at the same place; summary.csv gives each path's gap between them",
+          holds(o.revisit_frames.empty() || o.revisit_frames.size() == 2, "needs two iterations (or none)"));
 }
 
 // One parameter of a sweep and the values it takes (read by `relslam sweep`).
@@ -108,6 +119,7 @@ struct Scenario {
   ExtractionOptions extraction;  // its plane extractor (planar.sensor points), keys relative_plane.*
   Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
   Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
+  IcpSlamOptions icp_slam;                 // MRPT's ICP-SLAM on laser scans (kind planar)
   VictoriaParkOptions victoria_park;       // kind victoria_park only
   BinningBenchOptions binning_bench;       // S-BIN only (kind binning_benchmark)
   OutputOptions output;

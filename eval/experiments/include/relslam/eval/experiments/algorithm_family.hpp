@@ -27,6 +27,9 @@ struct PointFamily {
   // The Relative Point / EKF ratio row, over the iterations both processed, when both ran.
   static std::optional<SummaryRow> ratio(const std::vector<std::unique_ptr<Recorder>>& recorders,
                                          const std::vector<SummaryRow>& rows);
+  // Scores of a row that need the other rows: none in this half.
+  static void add_cross_scores(std::vector<SummaryRow>&, const std::vector<std::unique_ptr<Recorder>>&,
+                               const OutputOptions&) {}
   // summary.csv's columns before the algorithms' own.
   static const std::vector<SummaryColumn>& summary_columns() { return point_summary_columns(); }
 };
@@ -42,6 +45,10 @@ struct PlaneFamily {
                                          const std::vector<SummaryRow>&) {
     return std::nullopt;
   }
+  // Scores against another algorithm's path, for runs without a true one: ate_vs_reference
+  // against output.reference_algorithm and the loop gap at output.revisit_frames.
+  static void add_cross_scores(std::vector<SummaryRow>& rows, const std::vector<std::unique_ptr<Recorder>>& recorders,
+                               const OutputOptions& output);
   static const std::vector<SummaryColumn>& summary_columns() { return plane_summary_columns(); }
 };
 

@@ -27,7 +27,7 @@ class RunSkeleton {
 
   // One recorder per algorithm of the scenario, writing into out/<name>/.
   RunSkeleton(const LoadedScenario& loaded, Source& source, const std::filesystem::path& out)
-      : source_(source), out_(out) {
+      : source_(source), out_(out), output_(loaded.scenario.output) {
     require_algorithms(loaded);
     recorders_ = Family::recorders(loaded, source, out);
   }
@@ -43,6 +43,7 @@ class RunSkeleton {
     result.interrupted = stopped_at.has_value();
     for (auto& recorder : recorders_) result.rows.push_back(recorder->finish());
     if (stopped_at) mark_interrupted(result.rows, *stopped_at);
+    Family::add_cross_scores(result.rows, recorders_, output_);
     result.ratio = Family::ratio(recorders_, result.rows);
     write_summary(out_ / "summary.csv", Family::summary_columns(), result.rows, result.ratio);
     bar.finish();
@@ -75,6 +76,7 @@ class RunSkeleton {
 
   Source& source_;
   std::filesystem::path out_;
+  OutputOptions output_;  // the reference algorithm and revisits scored across rows
   std::vector<std::unique_ptr<Recorder>> recorders_;
 };
 

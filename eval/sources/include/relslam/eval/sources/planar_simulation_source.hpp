@@ -16,6 +16,8 @@
 
 namespace relslam::eval {
 
+class RangeSensorFrames;
+
 // Where the scenario's planar.map points: an existing file (as given, or beside the scenario
 // file), or a name in the scenario folder's maps/ or the repository's scenarios/maps/.
 // InputError at planar.map, listing the known names, when there is none.
@@ -78,6 +80,7 @@ class PlanarSimulationSource final : public PlaneFrameSource {
   int frames_ = 0;
   std::vector<PlaneObject> walls_;
   std::unique_ptr<PointExtraction> extraction_;
+  std::unique_ptr<RangeSensorFrames> range_;  // planar.sensor laser or depth, else null
   std::vector<int> point_frames_;  // output.point_frames, resolved
   std::unique_ptr<Recorder> recorder_;
   PlanarSimulationSummary summary_;
