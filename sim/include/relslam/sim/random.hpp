@@ -24,6 +24,7 @@ enum class Stream : std::uint64_t {
   WallPointField = 8,
   WallPointNoise = 9,
   WallPointShuffle = 10,
+  MapLayout = 11,  // the generated maps' walls and paths (map_generator.hpp)
 };
 
 // A short random sequence that is a pure function of (seed, stream, a, b).
