@@ -13,15 +13,6 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-Vec left_of(const Vec& t) { return {-t.y(), t.x()}; }
-
-// Where the lines p + s·t and q + u·v meet (not parallel).
-Vec meet(const Vec& p, const Vec& t, const Vec& q, const Vec& v) {
-  const double det = t.x() * v.y() - t.y() * v.x();
-  const Vec d = q - p;
-  return p + ((d.x() * v.y() - d.y() * v.x()) / det) * t;
-}
-
 // How the corridor's sides are cut: one grid for both sides when mirrored, else one each.
 struct Cutter {
   RandomSequence& rng;

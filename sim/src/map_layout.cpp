@@ -64,10 +64,24 @@ void add_polygon_walls(Layout& layout, const std::vector<Vec>& corners) {
   }
 }
 
-std::vector<Vec> scaled_loop(const std::vector<Vec>& corners, double factor) {
+Vec meet(const Vec& p, const Vec& t, const Vec& q, const Vec& v) {
+  const double det = t.x() * v.y() - t.y() * v.x();
+  const Vec d = q - p;
+  return p + ((d.x() * v.y() - d.y() * v.x()) / det) * t;
+}
+
+std::vector<Vec> inset_loop(const std::vector<Vec>& corners, double distance, double least_edge) {
+  const std::size_t n = corners.size();
+  const auto edge = [&](std::size_t i) { return (corners[(i + 1) % n] - corners[i]).normalized(); };
   std::vector<Vec> loop;
-  for (const Vec& c : corners) loop.push_back(factor * c);
-  if (!loop.empty()) loop.push_back(loop.front());
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t before = (i + n - 1) % n;
+    const Vec tp = edge(before), t = edge(i);
+    loop.push_back(meet(corners[before] + distance * left_of(tp), tp, corners[i] + distance * left_of(t), t));
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if ((loop[(i + 1) % n] - loop[i]).dot(edge(i)) < least_edge) return {};
+  loop.push_back(loop.front());
   return loop;
 }
 

@@ -54,9 +54,15 @@ void add_pieces(Layout& layout, const Vec& origin, const Vec& direction,
 std::vector<Vec> convex_polygon(int n, double r, double min_gap, double max_gap, RandomSequence& rng);
 // Its edges as whole walls facing inwards.
 void add_polygon_walls(Layout& layout, const std::vector<Vec>& corners);
-// The polygon scaled by `factor` about the origin, closed (first corner again at the end): a loop
-// path inside a convex room.
-std::vector<Vec> scaled_loop(const std::vector<Vec>& corners, double factor);
+// The polygon moved inwards by `distance` from every edge, closed (first corner again at the
+// end): a loop path along the walls of a convex room, as Map D's robot drives 1.5 from its
+// walls, so that the small frustum sees the wall beside it and the next one ahead together.
+// Empty when an edge would be shorter than `least_edge`.
+std::vector<Vec> inset_loop(const std::vector<Vec>& corners, double distance, double least_edge = 1.0);
+// Where the lines p + s·t and q + u·v meet (not parallel).
+Vec meet(const Vec& p, const Vec& t, const Vec& q, const Vec& v);
+// The direction 90 degrees counter-clockwise from t.
+inline Vec left_of(const Vec& t) { return {-t.y(), t.x()}; }
 
 // The least distance from p to the segment a-b.
 double distance_to_segment(const Vec& p, const Vec& a, const Vec& b);

@@ -5,6 +5,7 @@
 // (relslam/core/option_fields.hpp).
 
 #include "relslam/core/option_fields.hpp"
+#include "relslam/sim/map_generator.hpp"
 
 #include <numbers>
 #include <string>
@@ -50,6 +51,25 @@ inline std::string_view to_string(PlanarSensorKind kind) {
   return kind == PlanarSensorKind::Points ? "points" : "planes";
 }
 
+// planar.generate: a map drawn by the seeded generator (sim/map_generator.hpp) instead of a map
+// file; exclusive with planar.map. `relslam simulate` and `relslam run` write it to the run folder
+// as generated_map.json, a map file like scenarios/maps/*.json.
+struct PlanarGenerateSettings {
+  sim::MapFamily family = sim::MapFamily::None;  // none: read planar.map
+  int seed = 1;                                  // the map's own seed (the scenario's drives the noise)
+  double clearance = sim::MapGeneratorOptions{}.clearance;  // units from the path to every wall [C]
+};
+
+void describe(OptionsOf<PlanarGenerateSettings> auto& g, auto& f) {
+  f.choice("family", g.family,
+           "generated map: none (read planar.map), convex_room, inner_walls, corridor, mirrored_corridor, office "
+           "or clutter",
+           sim::kMapFamilies);
+  f.field("seed", g.seed, "the generated map's own seed (the scenario's seed drives the sensor)", at_least(0));
+  f.field("clearance", g.clearance, "least distance from the generated path to every wall, units", at_least(0.2),
+          at_most(1.2));
+}
+
 struct PlanarOptions {
   // A map name from scenarios/maps/ (a_four_planes, b_hallway_unit, c_hallway_back,
   // d_office_loop, e_motion_room, e1_first_corner) or the path of a map file.
@@ -69,6 +89,7 @@ struct PlanarOptions {
   bool backface_cull = true;
   PlanarSensorKind sensor = PlanarSensorKind::Planes;  // [T Chapter 4]
   PlanarNoiseSettings noise;
+  PlanarGenerateSettings generate;
 };
 
 bool is_frustum_name(const std::string& name);        // map, small, large
@@ -93,6 +114,7 @@ void describe(OptionsOf<PlanarOptions> auto& o, auto& f) {
   f.field("backface_cull", o.backface_cull, "drop walls seen from behind (off: the early simulator of Fig 72)");
   f.choice("sensor", o.sensor, "what the robot reports: planes, or points (planes found by relative_plane.extractor)", kPlanarSensorKinds);
   f.nested("noise", o.noise);
+  f.nested("generate", o.generate);
 }
 
 }  // namespace relslam::eval
