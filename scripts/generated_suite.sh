@@ -3,8 +3,9 @@
 # every generator family x map seeds 1-10 x small and large frustum x {noise_free,
 # default_noise, em (points, sigma_pt 0.05)} x 3 seeds, then the table per family, frustum and
 # condition.
-# Usage: scripts/generated_suite.sh [--quick] [--out DIR] [--jobs N] [--table-only]
+# Usage: scripts/generated_suite.sh [--quick] [--maps N] [--seeds N] [--out DIR] [--jobs N] [--table-only]
 #   --quick       map seeds 1-2 and one seed (72 runs instead of 1080)
+#   --maps N      map seeds 1-N (default 10); --seeds N: seeds per map (default 3)
 #   --table-only  print the table of a finished (or partly finished) sweep folder again
 # Columns: valid_constrained_% = pose valid over the iterations with two walls more than 20
 # degrees apart in view (truth_wall_angle_deg, the noise-free sensor); carried_% = the share of the
@@ -17,34 +18,35 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 relslam="${RELSLAM:-$here/build/relslam}"
 out=runs/generated-suite
 jobs=2
-quick=0
+maps=10
+seeds=3
 table_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
-    --quick) quick=1 ;;
+    --quick) maps=2; seeds=1 ;;
+    --maps) maps="$2"; shift ;;
+    --seeds) seeds="$2"; shift ;;
     --out) out="$2"; shift ;;
     --jobs) jobs="$2"; shift ;;
     --table-only) table_only=1 ;;
-    *) echo "usage: $0 [--quick] [--out DIR] [--jobs N] [--table-only]" >&2; exit 2 ;;
+    *) echo "usage: $0 [--quick] [--maps N] [--seeds N] [--out DIR] [--jobs N] [--table-only]" >&2; exit 2 ;;
   esac
   shift
 done
 if [ "$table_only" = 0 ]; then
   scenario="$here/scenarios/gen-suite.json"
-  seeds=3
-  if [ "$quick" = 1 ]; then
-    mkdir -p "$out"
-    # The same suite with map seeds 1-2: a scenario file beside the runs, so the sweep's plan
-    # names what was run.
-    scenario="$(cd "$out" && pwd)/gen-suite-quick.json"
-    /usr/bin/python3 - "$here/scenarios/gen-suite.json" "$scenario" <<'PY'
+  if [ "$maps" != 10 ]; then
+    # The same suite with map seeds 1-N: a scenario file beside the sweep folder, so the
+    # sweep's plan names what was run.
+    mkdir -p "$(dirname "$out")"
+    scenario="$(cd "$(dirname "$out")" && pwd)/$(basename "$out")-scenario.json"
+    /usr/bin/python3 - "$here/scenarios/gen-suite.json" "$scenario" "$maps" <<'PY'
 import json, sys
 doc = json.load(open(sys.argv[1]))
-doc["sweep"]["planar.generate.seed"] = [1, 2]
-doc["description"] = "scripts/generated_suite.sh --quick: " + doc["description"]
+doc["sweep"]["planar.generate.seed"] = list(range(1, int(sys.argv[3]) + 1))
+doc["description"] = "scripts/generated_suite.sh --maps " + sys.argv[3] + ": " + doc["description"]
 json.dump(doc, open(sys.argv[2], "w"), indent=2)
 PY
-    seeds=1
   fi
   # A failed cell is a row of sweep.csv (exit 1); the table shows what finished.
   "$relslam" sweep "$scenario" --out "$out" --seeds "$seeds" --jobs "$jobs" || [ $? = 1 ]
