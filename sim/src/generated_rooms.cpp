@@ -43,30 +43,45 @@ bool keeps_apart(const Layout& l, const Vec& a, const Vec& b, double gap) {
   return true;
 }
 
-}  // namespace
+// A convex room of `least` to `least + choices - 1` walls on a circle of radius r_lo..r_hi, the
+// angles between neighbouring corners in min_gap..max_gap degrees, and its loop `inset` from the
+// walls, walked twice.
+struct RoomShape {
+  int least = 4, choices = 5;
+  double r_lo = 6.0, r_hi = 10.0;
+  double min_gap_deg = 30.0, max_gap_deg = 100.0;
+  double inset_lo = 1.8, inset_hi = 3.0;
+};
 
-Layout convex_room(RandomSequence& rng) {
-  Layout l;
-  const int n = 4 + static_cast<int>(rng.below(5));
-  const double r = rng.uniform(6.0, 10.0);
-  const std::vector<Vec> corners = convex_polygon(n, r, 30 * kDegree, 100 * kDegree, rng);
-  const double inset = rng.uniform(1.8, 3.0);
-  if (corners.empty()) return l;
-  add_polygon_walls(l, corners);
-  l.waypoints = inset_loop(corners, inset);
-  l.loops = 2;
-  l.description = describe_room("Generated convex room", n, r, inset);
-  return l;
+struct Room {
+  Layout layout;
+  std::vector<Vec> corners;  // empty when none was found
+  double r = 0.0;
+};
+
+Room draw_room(RandomSequence& rng, const RoomShape& shape, const char* what) {
+  Room room;
+  const int n = shape.least + static_cast<int>(rng.below(static_cast<std::uint64_t>(shape.choices)));
+  room.r = rng.uniform(shape.r_lo, shape.r_hi);
+  room.corners = convex_polygon(n, room.r, shape.min_gap_deg * kDegree, shape.max_gap_deg * kDegree, rng);
+  const double inset = rng.uniform(shape.inset_lo, shape.inset_hi);
+  if (room.corners.empty()) return room;
+  add_polygon_walls(room.layout, room.corners);
+  room.layout.waypoints = inset_loop(room.corners, inset);
+  room.layout.loops = 2;
+  room.layout.description = describe_room(what, n, room.r, inset);
+  return room;
 }
 
+}  // namespace
+
+Layout convex_room(RandomSequence& rng) { return draw_room(rng, {}, "Generated convex room").layout; }
+
 Layout inner_walls_room(RandomSequence& rng) {
-  Layout l;
-  const int n = 5 + static_cast<int>(rng.below(4));
-  const double r = rng.uniform(8.0, 11.0);
-  const std::vector<Vec> corners = convex_polygon(n, r, 30 * kDegree, 90 * kDegree, rng);
-  const double inset = rng.uniform(2.0, 2.8);
-  if (corners.empty()) return l;
-  add_polygon_walls(l, corners);
+  Room room = draw_room(rng, {5, 4, 8.0, 11.0, 30.0, 90.0, 2.0, 2.8}, "Generated room with an inner wall and pillars");
+  if (room.corners.empty()) return {};
+  Layout& l = room.layout;
+  const double r = room.r;
   // The inner wall near the centre, seen from both sides; then the pillars beside it.
   const Vec centre = 0.08 * r * Vec(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
   const auto [a, b] = segment_at(centre, rng.uniform(0.15, 0.3) * r, rng.uniform(0.0, std::numbers::pi));
@@ -80,22 +95,15 @@ Layout inner_walls_room(RandomSequence& rng) {
     add_pillar(l, c, side, rng.uniform(0.0, std::numbers::pi / 2));
     ++placed;
   }
-  l.waypoints = inset_loop(corners, inset);
-  l.loops = 2;
-  l.description = describe_room("Generated room with an inner wall and pillars", n, r, inset) +
-                  "; a two-sided inner wall and " + std::to_string(pillars) + " square pillar(s) near the centre";
+  l.description += "; a two-sided inner wall and " + std::to_string(pillars) + " square pillar(s) near the centre";
   return l;
 }
 
 Layout clutter_room(RandomSequence& rng, double clearance) {
-  Layout l;
-  const int n = 4 + static_cast<int>(rng.below(3));
-  const double r = rng.uniform(8.0, 11.0);
-  const std::vector<Vec> corners = convex_polygon(n, r, 40 * kDegree, 100 * kDegree, rng);
-  const double inset = rng.uniform(3.0, 3.6);
-  if (corners.empty()) return l;
-  add_polygon_walls(l, corners);
-  l.waypoints = inset_loop(corners, inset);
+  Room room = draw_room(rng, {4, 3, 8.0, 11.0, 40.0, 100.0, 3.0, 3.6}, "Generated room with clutter");
+  if (room.corners.empty()) return {};
+  Layout& l = room.layout;
+  const std::vector<Vec>& corners = room.corners;
   // Short two-sided walls at any angle in the band between the path and the room's walls.
   const int wanted = 6 + static_cast<int>(rng.below(5));
   int placed = 0;
@@ -103,16 +111,13 @@ Layout clutter_room(RandomSequence& rng, double clearance) {
     const std::size_t e = rng.below(corners.size());
     const Vec& p = corners[e];
     const Vec& q = corners[(e + 1) % corners.size()];
-    const Vec inward = Vec(-(q - p).y(), (q - p).x()).normalized();  // counter-clockwise corners
-    const Vec c = p + rng.uniform(0.15, 0.85) * (q - p) + rng.uniform(0.6, 1.6) * inward;
+    const Vec c = p + rng.uniform(0.15, 0.85) * (q - p) + rng.uniform(0.6, 1.6) * left_of(q - p).normalized();
     const auto [a, b] = segment_at(c, rng.uniform(0.6, 1.4), rng.uniform(0.0, std::numbers::pi));
     if (distance_to_path(a, b, l.waypoints) < clearance + 0.25 || !keeps_apart(l, a, b, 0.3)) continue;
     add_wall(l, a, b, Vec(0, 1), false);
     ++placed;
   }
-  l.loops = 2;
-  l.description = describe_room("Generated room with clutter", n, r, inset) + "; " + std::to_string(placed) +
-                  " short two-sided clutter walls between the path and the walls";
+  l.description += "; " + std::to_string(placed) + " short two-sided clutter walls between the path and the walls";
   return l;
 }
 

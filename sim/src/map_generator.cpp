@@ -98,7 +98,12 @@ PlanarMap map_of(const Layout& l, const MapGeneratorOptions& options) {
   PlanarMap map;
   map.name = "generated " + std::string(to_string(options.family)) + " " + std::to_string(options.seed);
   map.description = l.description;
-  map.world.walls = l.walls;
+  // Pieces cut short at corners and gaps are dropped; ids stay positions in the map.
+  for (const Wall& w : l.walls)
+    if (w.length() >= kMinGeneratedWall) {
+      map.world.walls.push_back(w);
+      map.world.walls.back().id = static_cast<int>(map.world.walls.size()) - 1;
+    }
   map.path = path_through(l);
   map.sensor.mode = PlaneVisibility::Frustum;
   map.sensor.frustum = ViewingFrustum::small();

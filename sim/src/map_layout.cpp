@@ -1,7 +1,5 @@
 #include "map_layout.hpp"
 
-#include "relslam/sim/map_generator.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -31,7 +29,7 @@ void add_pieces(Layout& layout, const Vec& origin, const Vec& direction,
                 const std::vector<std::pair<double, double>>& pieces, double lo, double hi, const Vec& facing) {
   for (const auto& [from, to] : pieces) {
     const double a = std::max(from, lo), b = std::min(to, hi);
-    if (b - a >= kMinGeneratedWall) add_wall(layout, origin + a * direction, origin + b * direction, facing);
+    if (b > a) add_wall(layout, origin + a * direction, origin + b * direction, facing);
   }
 }
 

@@ -45,7 +45,7 @@ struct PieceGrid {
 std::vector<std::pair<double, double>> piece_positions(double s0, double s1, const PieceGrid& grid,
                                                        RandomSequence& rng);
 // Adds the pieces of [s0, s1] on the line origin + s·direction that lie in [lo, hi], facing
-// `facing`; pieces shorter than the least wall length are dropped.
+// `facing` (the generator drops pieces shorter than kMinGeneratedWall).
 void add_pieces(Layout& layout, const Vec& origin, const Vec& direction,
                 const std::vector<std::pair<double, double>>& pieces, double lo, double hi, const Vec& facing);
 
