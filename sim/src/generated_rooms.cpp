@@ -1,6 +1,6 @@
 // The room families of the map generator (map_generator.hpp): convex rooms, rooms with an inner
 // wall and pillars, rooms with clutter. Each is a convex polygon on a circle, walked as a loop on
-// the same polygon scaled towards its centre, twice (the second loop closes it).
+// the same polygon moved inwards from its walls, twice (the second loop closes it).
 
 #include "map_layout.hpp"
 
@@ -77,25 +77,43 @@ Room draw_room(RandomSequence& rng, const RoomShape& shape, const char* what) {
 
 Layout convex_room(RandomSequence& rng) { return draw_room(rng, {}, "Generated convex room").layout; }
 
-Layout inner_walls_room(RandomSequence& rng) {
+// A point `inward` inside the loop from a random leg's middle part: where the small frustum
+// (half-angle 30 degrees, far 7), looking along the leg, sees what stands there (a wall 2 beside
+// the path is in view from 3.5 before it on).
+Vec beside_a_leg(RandomSequence& rng, const std::vector<Vec>& loop, double inward) {
+  const std::size_t leg = rng.below(loop.size() - 1);
+  const Vec& p = loop[leg];
+  const Vec& q = loop[leg + 1];
+  return p + rng.uniform(0.3, 0.7) * (q - p) + inward * left_of(q - p).normalized();
+}
+
+Layout inner_walls_room(RandomSequence& rng, double clearance) {
   Room room = draw_room(rng, {5, 4, 8.0, 11.0, 30.0, 90.0, 2.0, 2.8}, "Generated room with an inner wall and pillars");
-  if (room.corners.empty()) return {};
+  if (room.corners.empty() || room.layout.waypoints.empty()) return {};
   Layout& l = room.layout;
-  const double r = room.r;
-  // The inner wall near the centre, seen from both sides; then the pillars beside it.
-  const Vec centre = 0.08 * r * Vec(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
-  const auto [a, b] = segment_at(centre, rng.uniform(0.15, 0.3) * r, rng.uniform(0.0, std::numbers::pi));
-  add_wall(l, a, b, Vec(0, 1), false);
+  // The inner wall, seen from both sides, beside one leg; then the pillars beside others.
+  bool inner = false;
+  for (int tries = 0; !inner && tries < 20; ++tries) {
+    const Vec c = beside_a_leg(rng, l.waypoints, rng.uniform(1.6, 2.6));
+    const auto [a, b] = segment_at(c, rng.uniform(1.5, 3.0), rng.uniform(0.0, std::numbers::pi));
+    if (distance_to_path(a, b, l.waypoints) < clearance + 0.25 || !keeps_apart(l, a, b, 0.5)) continue;
+    add_wall(l, a, b, Vec(0, 1), false);
+    inner = true;
+  }
+  if (!inner) return {};
   const int pillars = 1 + static_cast<int>(rng.below(2));
-  for (int placed = 0, tries = 0; placed < pillars && tries < 20; ++tries) {
+  int placed = 0;
+  for (int tries = 0; placed < pillars && tries < 20; ++tries) {
     const double side = rng.uniform(0.8, 1.5);
-    const double angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
-    const Vec c = rng.uniform(0.15, 0.25) * r * Vec(std::cos(angle), std::sin(angle));
-    if (!keeps_apart(l, c, c, side + 1.0)) continue;
-    add_pillar(l, c, side, rng.uniform(0.0, std::numbers::pi / 2));
+    const Vec c = beside_a_leg(rng, l.waypoints, rng.uniform(1.3, 2.0) + 0.75 * side);
+    const double angle = rng.uniform(0.0, std::numbers::pi / 2);
+    // The pillar's corners are at most side/sqrt(2) from its centre.
+    if (distance_to_path(c, c, l.waypoints) < clearance + 0.25 + 0.75 * side || !keeps_apart(l, c, c, side + 0.5))
+      continue;
+    add_pillar(l, c, side, angle);
     ++placed;
   }
-  l.description += "; a two-sided inner wall and " + std::to_string(pillars) + " square pillar(s) near the centre";
+  l.description += "; a two-sided inner wall and " + std::to_string(placed) + " square pillar(s) beside the path";
   return l;
 }
 

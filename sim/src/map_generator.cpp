@@ -74,7 +74,7 @@ PathProgram path_through(const Layout& l) {
 Layout draw_layout(MapFamily family, RandomSequence& rng, double clearance) {
   switch (family) {
     case MapFamily::ConvexRoom: return layout::convex_room(rng);
-    case MapFamily::InnerWalls: return layout::inner_walls_room(rng);
+    case MapFamily::InnerWalls: return layout::inner_walls_room(rng, clearance);
     case MapFamily::Corridor: return layout::corridor(rng, clearance, false);
     case MapFamily::MirroredCorridor: return layout::corridor(rng, clearance, true);
     case MapFamily::Office: return layout::office(rng);

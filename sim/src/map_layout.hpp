@@ -75,7 +75,7 @@ double distance_to_path(const Vec& a, const Vec& b, const std::vector<Vec>& wayp
 // generated_office.cpp). Each draws from `rng` only and may return a layout that fails the
 // checks; map_generator.cpp then draws again.
 Layout convex_room(RandomSequence& rng);
-Layout inner_walls_room(RandomSequence& rng);
+Layout inner_walls_room(RandomSequence& rng, double clearance);
 Layout clutter_room(RandomSequence& rng, double clearance);
 Layout corridor(RandomSequence& rng, double clearance, bool mirrored);
 Layout office(RandomSequence& rng);
