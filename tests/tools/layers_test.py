@@ -31,6 +31,9 @@ SIM = {
     "world": 3, "column_grid": 3, "planar_map": 3, "point_sensor": 3,
     "simulator": 4, "planar_simulator": 4,
     "planar_sight": 5,
+    # The map generator: its shared pieces, the families, the generator that checks their maps.
+    "map_layout": 4, "generated_rooms": 5, "generated_corridors": 5, "generated_office": 5,
+    "map_generator": 6,
 }
 # eval: relslam/eval/<layer>/... or, for internal headers, "<layer>/x.hpp" under eval/src.
 EVAL = ["config", "io", "metrics", "sources", "algorithms", "experiments", "cli"]

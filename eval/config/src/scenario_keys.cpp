@@ -181,7 +181,9 @@ struct ChoiceCodec {
           out = value;
           return "";
         }
-    return expected("one of " + names(), v);
+    std::vector<std::string> spelled;
+    for (E value : values) spelled.emplace_back(to_string(value));
+    return expected("one of " + names(), v) + (v.is_string() ? did_you_mean(v.get<std::string>(), spelled) : "");
   }
   json show(const E& value) const { return std::string(to_string(value)); }
 };
@@ -385,6 +387,8 @@ nlohmann::json to_json(const Scenario& scenario) {
     std::replace(slashed.begin(), slashed.end(), '.', '/');
     out[nlohmann::json::json_pointer(slashed)] = key.read(scenario);
   }
+  // A generated map is the map: planar.map would contradict it (they exclude each other).
+  if (scenario.planar.generate.family != sim::MapFamily::None) out["planar"].erase("map");
   nlohmann::json sweep = nlohmann::json::object();
   for (const SweepAxis& axis : scenario.sweep) sweep[axis.key] = axis.values;
   out["sweep"] = sweep;

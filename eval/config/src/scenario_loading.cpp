@@ -170,6 +170,16 @@ void check_semantics(const LoadedScenario& loaded) {
                    first.problem() + "\n" + std::to_string(errors.size()) + " problems in all:" + all);
 }
 
+// A planar run's map comes from one place: a map file (planar.map) or the generator
+// (planar.generate), never both.
+void check_map_source(const LoadedScenario& loaded) {
+  if (loaded.scenario.planar.generate.family == sim::MapFamily::None || !loaded.origins.contains("planar.map")) return;
+  const KeyOrigin& map = loaded.origins.at("planar.map");
+  throw loaded.error("planar.generate.family",
+                     "set either planar.map or planar.generate, not both (planar.map at " + map.file +
+                         (map.line > 0 ? ":" + std::to_string(map.line) : "") + ")");
+}
+
 LoadedScenario build(const JsonDocument& doc, const std::vector<Override>& overrides) {
   LoadedScenario loaded;
   loaded.file = doc.file;
@@ -182,6 +192,7 @@ LoadedScenario build(const JsonDocument& doc, const std::vector<Override>& overr
     derive_point_bounds(loaded.scenario, simulated_noise(loaded.scenario.sim),
                         [&](const std::string& key) { return loaded.origins.contains(key); });
   check_semantics(loaded);
+  check_map_source(loaded);
   return loaded;
 }
 

@@ -310,4 +310,63 @@ sim::PlanarMap parse_planar_map(const std::string& text, const std::string& file
   return MapReader(parse_json(text, file)).read();
 }
 
+namespace {
+
+std::string numbers(std::initializer_list<double> values) {
+  std::string out;
+  for (double v : values) out += (out.empty() ? "" : ", ") + format_number(v);
+  return "[" + out + "]";
+}
+
+std::string step_text(const sim::PathOperation& op) {
+  switch (op.kind) {
+    case sim::PathOperationKind::Move: return "MOVE " + format_number(op.distance);
+    case sim::PathOperationKind::Turn: return "TURN " + format_number(op.angle_rad / kDegree);
+    case sim::PathOperationKind::Arc: return "ARC " + format_number(op.distance) + " " + format_number(op.angle_rad / kDegree);
+  }
+  return "";
+}
+
+std::string steps_text(const std::vector<sim::PathOperation>& ops) {
+  std::string out;
+  for (const sim::PathOperation& op : ops) out += (out.empty() ? "" : ", ") + json(step_text(op)).dump();
+  return "[" + out + "]";
+}
+
+// The preset's name when the frustum is one, else "" (the file then keeps the reader's default).
+std::string preset_name(const sim::ViewingFrustum& f) {
+  for (const char* name : {"small", "large"}) {
+    const sim::ViewingFrustum p = *sim::frustum_preset(name);
+    if (p.half_angle_rad == f.half_angle_rad && p.near == f.near && p.far == f.far) return name;
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string planar_map_text(const sim::PlanarMap& map) {
+  std::string out = "{\n  \"name\": " + json(map.name).dump() + ",\n  \"description\": " + json(map.description).dump() + ",\n";
+  if (!map.world.walls.empty()) out += "  \"wall_height\": " + format_number(map.world.walls.front().height) + ",\n";
+  out += "  \"walls\": [\n";
+  for (std::size_t i = 0; i < map.world.walls.size(); ++i) {
+    const sim::Wall& w = map.world.walls[i];
+    const Eigen::Vector2d n = w.normal();
+    out += "    {\"a\": " + numbers({w.a.x(), w.a.y()}) + ", \"b\": " + numbers({w.b.x(), w.b.y()}) +
+           ", \"facing\": " + numbers({n.x(), n.y()}) + (w.one_sided ? "" : ", \"one_sided\": false") + "}" +
+           (i + 1 < map.world.walls.size() ? ",\n" : "\n");
+  }
+  const sim::PathProgram& p = map.path;
+  out += "  ],\n  \"path\": {\n    \"start\": {\"x\": " + format_number(p.start.translation.x()) +
+         ", \"z\": " + format_number(p.start.translation.y()) +
+         ", \"heading_deg\": " + format_number(p.start.heading / kDegree) + "},\n";
+  out += "    \"speed\": " + format_number(p.speed) + ",\n    \"turn_rate_deg\": " +
+         format_number(p.turn_rate_rad / kDegree) + ",\n    \"loops\": " + std::to_string(p.loops) + ",\n";
+  out += "    \"steps\": " + steps_text(p.steps) + (p.then.empty() ? "" : ",\n    \"then\": " + steps_text(p.then)) + "\n  },\n";
+  const std::string preset = preset_name(map.sensor.frustum);
+  out += "  \"sensor\": {\"mode\": " + json(std::string(sim::to_string(map.sensor.mode))).dump() +
+         (preset.empty() ? "" : ", \"frustum\": \"" + preset + "\"") + ", \"noise\": " +
+         json(std::string(sim::to_string(map.sensor.noise.model))).dump() + "}\n}\n";
+  return out;
+}
+
 }  // namespace relslam::eval

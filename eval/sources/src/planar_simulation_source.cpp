@@ -7,6 +7,9 @@
 #include "range_sensor_frames.hpp"
 
 #include <algorithm>
+#include <fstream>
+#include <numbers>
+#include <tuple>
 #include <limits>
 
 namespace relslam::eval {
@@ -49,11 +52,13 @@ fs::path resolve_planar_map(const LoadedScenario& loaded) {
                                        known_map_names({beside / "maps", kRepositoryMaps}) + ")");
 }
 
-sim::PlanarMap build_planar_map(const LoadedScenario& loaded, const fs::path& file) {
-  if (loaded.scenario.kind != ScenarioKind::Planar)
-    throw loaded.error("kind", "this scenario is not a planar world (kind \"planar\")");
+namespace {
+
+// The scenario's planar.* settings applied to `map` (read from a file or generated), checked
+// that the robot sees two walls at once; `where` names the map in messages.
+sim::PlanarMap with_planar_settings(const LoadedScenario& loaded, sim::PlanarMap map, const std::string& where,
+                                    const std::string& key) {
   const PlanarOptions& o = loaded.scenario.planar;
-  sim::PlanarMap map = read_planar_map(file);
 
   if (o.loops > 0) map.path.loops = o.loops;
   map.path.speed *= o.speed_scale;
@@ -76,19 +81,55 @@ sim::PlanarMap build_planar_map(const LoadedScenario& loaded, const fs::path& fi
                      : sim::PlaneNoiseOptions{model, o.noise.position_sigma, o.noise.rotation_sigma_rad,
                                               o.noise.end_sigma};
 
-  const std::string where = file.string() + " with the scenario's planar settings";
   try {
     if (!sim::first_iteration_seeing(map, 2))
-      throw loaded.error("planar.map", where +
-                                           ": the robot never sees two walls at once along its path, so the "
-                                           "algorithm has nothing to relate (thesis Rule 7)");
+      throw loaded.error(key, where + " with the scenario's planar settings: the robot never sees two walls at once "
+                                      "along its path, so the algorithm has nothing to relate (thesis Rule 7)");
   } catch (const OptionError& e) {
-    throw loaded.error("planar.map", where + ": " + e.field() + ": " + e.problem());
+    throw loaded.error(key, where + " with the scenario's planar settings: " + e.field() + ": " + e.problem());
   }
   return map;
 }
 
+void require_planar(const LoadedScenario& loaded) {
+  if (loaded.scenario.kind != ScenarioKind::Planar)
+    throw loaded.error("kind", "this scenario is not a planar world (kind \"planar\")");
+}
+
+}  // namespace
+
+sim::PlanarMap build_planar_map(const LoadedScenario& loaded, const fs::path& file) {
+  require_planar(loaded);
+  return with_planar_settings(loaded, read_planar_map(file), file.string(), "planar.map");
+}
+
+sim::PlanarMap generated_planar_map(const LoadedScenario& loaded) {
+  require_planar(loaded);
+  const PlanarGenerateSettings& g = loaded.scenario.planar.generate;
+  try {
+    return sim::generate_map({g.family, static_cast<std::uint64_t>(g.seed), g.clearance});
+  } catch (const OptionError& e) {
+    throw loaded.error("planar.generate." + e.field(), e.problem());
+  }
+}
+
 namespace {
+
+bool generated(const LoadedScenario& loaded) { return loaded.scenario.planar.generate.family != sim::MapFamily::None; }
+
+// The truth of what is in view: the walls the noise-free sensor reports, and the largest angle
+// between two of them, degrees in [0, 90].
+std::pair<int, double> walls_in_view(const sim::PlaneSimFrame& noise_free, const sim::PlanarWorld& world) {
+  std::vector<Eigen::Vector2d> normals;
+  for (const PlaneTruth& t : noise_free.truth.planes)
+    for (const sim::Wall& w : world.walls)
+      if (w.id == t.wall_id) normals.push_back(w.normal());
+  double largest = 0;
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    for (std::size_t j = i + 1; j < normals.size(); ++j)
+      largest = std::max(largest, std::acos(std::min(1.0, std::abs(normals[i].dot(normals[j])))));
+  return {static_cast<int>(normals.size()), largest * 180.0 / std::numbers::pi};
+}
 
 // The simulator with the point sensor when the scenario asks for points.
 sim::PlanarSimulator planar_simulator(const LoadedScenario& loaded, const sim::PlanarMap& map) {
@@ -131,9 +172,17 @@ struct PlanarSimulationSource::Recorder {
 
 PlanarSimulationSource::PlanarSimulationSource(const LoadedScenario& loaded)
     : name_(loaded.scenario.name),
-      map_file_(resolve_planar_map(loaded)),
-      map_(build_planar_map(loaded, map_file_)),
+      map_file_(generated(loaded) ? fs::path() : resolve_planar_map(loaded)),
+      generated_(generated(loaded) ? std::optional<sim::PlanarMap>(generated_planar_map(loaded)) : std::nullopt),
+      map_(generated_ ? with_planar_settings(loaded, *generated_, "the generated map \"" + generated_->name + "\"",
+                                             "planar.generate.family")
+                      : build_planar_map(loaded, map_file_)),
       simulator_(planar_simulator(loaded, map_)) {
+  if (generated_) {
+    sim::PlaneSensorOptions noise_free = map_.sensor;
+    noise_free.noise = sim::PlaneNoiseOptions::none();
+    truth_sensor_.emplace(noise_free, loaded.scenario.seed);
+  }
   const int limit = loaded.scenario.planar.iterations;
   frames_ = limit > 0 ? std::min(limit, simulator_.iterations()) : simulator_.iterations();
   int max_id = -1;
@@ -155,6 +204,11 @@ void PlanarSimulationSource::record_into(const fs::path& dir) {
     walls.row(w.id, w.a.x(), w.a.y(), w.b.x(), w.b.y(), w.length(), w.height, w.normal().x(), w.normal().y(),
               w.one_sided);
   walls.close();
+  if (generated_) {
+    std::ofstream out(dir / kGeneratedMapFile);
+    out << planar_map_text(*generated_);
+    if (!out) throw std::runtime_error((dir / kGeneratedMapFile).string() + ": write failed");
+  }
   recorder_ = std::make_unique<Recorder>(dir);
   if (extraction_) extraction_->record_into(dir, point_frames_);
   if (range_) range_->record_into(dir);
@@ -193,6 +247,9 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
                                     t.b_is_wall_end, p.y_lo, p.y_hi);
       }
     }
+    if (truth_sensor_)
+      std::tie(truth_walls_, truth_angle_deg_) =
+          walls_in_view(truth_sensor_->observe(map_.world, frame.truth.world_T_robot, k), map_.world);
     consume(frame.observation, frame.truth, measured());
   }
   summary_.visible_mean = frames_ > 0 ? static_cast<double>(summary_.observations) / frames_ : 0.0;
@@ -206,6 +263,12 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
 }
 
 nlohmann::json PlanarSimulationSource::describe() const {
+  nlohmann::json d = describe_run();
+  if (generated_) d["planar_simulation"]["generated_map"] = kGeneratedMapFile;
+  return d;
+}
+
+nlohmann::json PlanarSimulationSource::describe_run() const {
   nlohmann::json out = {{"planar_simulation",
            {{"map", map_.name},
             {"map_file", map_file_.string()},
@@ -221,13 +284,23 @@ nlohmann::json PlanarSimulationSource::describe() const {
 }
 
 std::vector<std::string> PlanarSimulationSource::frame_columns() const {
-  if (!extraction_) return {};
-  return {"t_extract_ms", "extracted_planes"};
+  std::vector<std::string> columns;
+  if (extraction_) columns = {"t_extract_ms", "extracted_planes"};
+  if (truth_sensor_) columns.insert(columns.end(), {"truth_walls_in_view", "truth_wall_angle_deg"});
+  return columns;
 }
 
 std::vector<CsvField> PlanarSimulationSource::measured() const {
-  if (!extraction_) return {};
-  return {CsvField{extraction_->last_ms()}, CsvField{static_cast<long long>(extraction_->last_score().planes)}};
+  std::vector<CsvField> out;
+  if (extraction_) {
+    out.emplace_back(extraction_->last_ms());
+    out.emplace_back(static_cast<long long>(extraction_->last_score().planes));
+  }
+  if (truth_sensor_) {
+    out.emplace_back(static_cast<long long>(truth_walls_));
+    out.emplace_back(truth_angle_deg_);
+  }
+  return out;
 }
 
 }  // namespace relslam::eval

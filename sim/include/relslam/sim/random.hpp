@@ -24,9 +24,10 @@ enum class Stream : std::uint64_t {
   WallPointField = 8,
   WallPointNoise = 9,
   WallPointShuffle = 10,
-  LaserRange = 11,   // the simulated 2-D laser's range noise (laser_sensor.hpp)
-  DepthPixel = 12,   // the simulated depth camera's noise and missing returns (depth_camera.hpp)
-  Odometry = 13,     // the range sensors' runs' odometry noise (odometry_noise.hpp)
+  MapLayout = 11,    // the generated maps' walls and paths (map_generator.hpp)
+  LaserRange = 12,   // the simulated 2-D laser's range noise (laser_sensor.hpp)
+  DepthPixel = 13,   // the simulated depth camera's noise and missing returns (depth_camera.hpp)
+  Odometry = 14,     // the range sensors' runs' odometry noise (odometry_noise.hpp)
 };
 
 // A short random sequence that is a pure function of (seed, stream, a, b).

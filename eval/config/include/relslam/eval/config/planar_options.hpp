@@ -8,6 +8,7 @@
 #include "relslam/sim/depth_camera.hpp"
 #include "relslam/sim/laser_sensor.hpp"
 #include "relslam/sim/odometry_noise.hpp"
+#include "relslam/sim/map_generator.hpp"
 
 #include <numbers>
 #include <string>
@@ -62,6 +63,25 @@ inline std::string_view to_string(PlanarSensorKind kind) {
   return "planes";
 }
 
+// planar.generate: a map drawn by the seeded generator (sim/map_generator.hpp) instead of a map
+// file; exclusive with planar.map. `relslam simulate` and `relslam run` write it to the run folder
+// as generated_map.json, a map file like scenarios/maps/*.json.
+struct PlanarGenerateSettings {
+  sim::MapFamily family = sim::MapFamily::None;  // none: read planar.map
+  int seed = 1;                                  // the map's own seed (the scenario's drives the noise)
+  double clearance = sim::MapGeneratorOptions{}.clearance;  // units from the path to every wall [C]
+};
+
+void describe(OptionsOf<PlanarGenerateSettings> auto& g, auto& f) {
+  f.choice("family", g.family,
+           "generated map: none (read planar.map), convex_room, inner_walls, corridor, mirrored_corridor, office "
+           "or clutter",
+           sim::kMapFamilies);
+  f.field("seed", g.seed, "the generated map's own seed (the scenario's seed drives the sensor)", at_least(0));
+  f.field("clearance", g.clearance, "least distance from the generated path to every wall, units", at_least(0.2),
+          at_most(1.2));
+}
+
 struct PlanarOptions {
   // A map name from scenarios/maps/ (a_four_planes, b_hallway_unit, c_hallway_back,
   // d_office_loop, e_motion_room, e1_first_corner) or the path of a map file.
@@ -88,6 +108,7 @@ struct PlanarOptions {
   // The depth camera's rawlog of `relslam simulate` holds every n-th frame: a 640×480 frame is
   // about 0.6 MB [C].
   int depth_record_every = 30;
+  PlanarGenerateSettings generate;
 };
 
 bool is_frustum_name(const std::string& name);        // map, small, large
@@ -120,6 +141,7 @@ void describe(OptionsOf<PlanarOptions> auto& o, auto& f) {
   f.nested("odometry", o.odometry);
   f.field("depth_record_every", o.depth_record_every, "depth sensor: simulate writes every n-th frame to depth.rawlog",
           at_least(1));
+  f.nested("generate", o.generate);
 }
 
 }  // namespace relslam::eval

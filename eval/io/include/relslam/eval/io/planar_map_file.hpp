@@ -26,4 +26,11 @@ sim::PlanarMap read_planar_map(const std::filesystem::path& file);
 // The same from JSON text; `file` names it in messages.
 sim::PlanarMap parse_planar_map(const std::string& text, const std::string& file);
 
+// The map as map-file text, one wall a line as in scenarios/maps/: each wall's facing as its
+// front normal [x, z], the path's steps in degrees, the sensor's mode, frustum preset (when it is
+// one) and noise model. Read back it gives the same walls bit for bit and the same path up to the
+// rounding of degrees to radians (a generated map written by relslam simulate, reused with
+// planar.map).
+std::string planar_map_text(const sim::PlanarMap& map);
+
 }  // namespace relslam::eval

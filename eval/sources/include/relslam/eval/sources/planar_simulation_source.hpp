@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 namespace relslam::eval {
 
@@ -27,6 +28,13 @@ std::filesystem::path resolve_planar_map(const LoadedScenario& loaded);
 // noise). Throws InputError naming the map file or the key at fault, also when the robot would
 // never see two walls at once (the algorithm would have nothing to relate, Rule 7).
 sim::PlanarMap build_planar_map(const LoadedScenario& loaded, const std::filesystem::path& file);
+
+// The map planar.generate draws (sim/map_generator.hpp), before the planar.* settings are
+// applied: what generated_map.json holds. InputError at planar.generate.* when it cannot be drawn.
+sim::PlanarMap generated_planar_map(const LoadedScenario& loaded);
+
+// The name of the map file a run of a generated map writes into its folder.
+inline constexpr const char* kGeneratedMapFile = "generated_map.json";
 
 // output.point_frames as iterations of a run of `frames` iterations (negative ones count from
 // the end). InputError at output.point_frames for an iteration outside the run, or when the
@@ -58,7 +66,10 @@ class PlanarSimulationSource final : public PlaneFrameSource {
   PlanarPose start() const override { return simulator_.path().world_T_robot(0); }
   void stream(const Consumer& consume) override;
   nlohmann::json describe() const override;
-  // With the point sensor: t_extract_ms and extracted_planes.
+  // With the point sensor: t_extract_ms and extracted_planes. On a generated map, the truth of
+  // what is in view (the walls the noise-free plane sensor reports): truth_walls_in_view and
+  // truth_wall_angle_deg, the largest angle between two of them (0 to 90; over 20: two
+  // non-parallel walls, which constrain the pose, thesis 4.2.5).
   std::vector<std::string> frame_columns() const override;
 
   const sim::PlanarMap& map() const { return map_; }
@@ -73,8 +84,10 @@ class PlanarSimulationSource final : public PlaneFrameSource {
   struct Recorder;
   // The frame_columns() fields of the frame just extracted.
   std::vector<CsvField> measured() const;
+  nlohmann::json describe_run() const;
   std::string name_;
   std::filesystem::path map_file_;
+  std::optional<sim::PlanarMap> generated_;  // planar.generate's map as drawn
   sim::PlanarMap map_;
   sim::PlanarSimulator simulator_;
   int frames_ = 0;
@@ -84,6 +97,9 @@ class PlanarSimulationSource final : public PlaneFrameSource {
   std::vector<int> point_frames_;  // output.point_frames, resolved
   std::unique_ptr<Recorder> recorder_;
   PlanarSimulationSummary summary_;
+  std::optional<sim::PlaneSensor> truth_sensor_;  // noise-free, on a generated map
+  int truth_walls_ = 0;
+  double truth_angle_deg_ = 0;
 };
 
 }  // namespace relslam::eval
