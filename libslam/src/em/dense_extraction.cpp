@@ -98,23 +98,21 @@ bool edge_on(const EmPlane& plane) {
 
 }  // namespace
 
-DenseResult extract_dense(const DenseCloud& cloud, EmVariant variant, const EmOptions& o, const DenseOptions& dense,
-                          std::uint64_t seed) {
+CloudSummary summarise(const DenseCloud& cloud, const DenseOptions& dense) {
   if (dense.summary_points < 3 || !(dense.voxel > 0.0))
-    throw std::logic_error("extract_dense: summary_points must be >= 3 and voxel > 0");
-  DenseResult out;
-  out.summary = cloud.organised() ? summarise_image(cloud.points, cloud.width, cloud.height, dense.summary_points)
-                                  : summarise_voxels(cloud.points, dense.summary_points, dense.voxel);
-  const CloudSummary& s = out.summary;
-  const EmResult coarse = variant == EmVariant::Em1 ? run_em1(s.points, o, seed) : run_em2(s.points, o, seed);
+    throw std::logic_error("summarise: summary_points must be >= 3 and voxel > 0");
+  return cloud.organised() ? summarise_image(cloud.points, cloud.width, cloud.height, dense.summary_points)
+                           : summarise_voxels(cloud.points, dense.summary_points, dense.voxel);
+}
 
+EmResult densify(const DenseCloud& cloud, const CloudSummary& s, const EmResult& coarse, const EmOptions& o) {
   std::vector<std::vector<int>> members(coarse.planes.size());
   if (cloud.organised())
     assign_image(cloud, s, owners_of(coarse, s.points.size()), coarse.planes, o, members);
   else
     assign_all(cloud, coarse.planes, o, members);
 
-  EmResult& result = out.result;
+  EmResult result;
   result.iterations = coarse.iterations;
   result.ignored_points = static_cast<int>(cloud.points.size() - finite_points(cloud.points).size());
   for (std::size_t k = 0; k < coarse.planes.size(); ++k) {
@@ -130,6 +128,16 @@ DenseResult extract_dense(const DenseCloud& cloud, EmVariant variant, const EmOp
   merge_planes(result.planes, cloud.points, o);
   tight_refit(result.planes, cloud.points, o);
   set_rectangles(result.planes, cloud.points, o);
+  return result;
+}
+
+DenseResult extract_dense(const DenseCloud& cloud, EmVariant variant, const EmOptions& o, const DenseOptions& dense,
+                          std::uint64_t seed) {
+  DenseResult out;
+  out.summary = summarise(cloud, dense);
+  const std::vector<Eigen::Vector3d>& points = out.summary.points;
+  const EmResult coarse = variant == EmVariant::Em1 ? run_em1(points, o, seed) : run_em2(points, o, seed);
+  out.result = densify(cloud, out.summary, coarse, o);
   return out;
 }
 

@@ -50,6 +50,17 @@ struct DenseResult {
   CloudSummary summary;
 };
 
+// The summary EM runs on: the image grid for an organised cloud, voxels otherwise.
+CloudSummary summarise(const DenseCloud& cloud, const DenseOptions& dense);
+
+// Planes found on the summary (`coarse`, indices into summary.points; any extractor's) over the
+// full cloud: every point joins the nearest plane that accepts it (options' d_in and e_exp),
+// planes with fewer than min_support points or seen edge-on are dropped, pieces that now meet
+// merge, then the tight refit and the rectangles. Linear in the points for organised clouds,
+// points × planes otherwise.
+EmResult densify(const DenseCloud& cloud, const CloudSummary& summary, const EmResult& coarse,
+                 const EmOptions& options);
+
 // The planes of the cloud by EM1 or EM2 (run_em1 / run_em2 on the summary, seeded by `seed`).
 // Requires check(options) to be empty and dense options within their describe() bounds.
 DenseResult extract_dense(const DenseCloud& cloud, EmVariant variant, const EmOptions& options,
