@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+
 namespace relslam::eval {
 
 Rigid3 rigid_of(const mrpt::poses::CPose3D& pose) {
@@ -27,6 +29,16 @@ void require_sane(const Rigid3& pose, double max_offset, const std::string& file
   if (error > 1e-3 || pose.rotation.determinant() < 0)
     throw InputError(file, record, field,
                      "rotation is not a rotation (R^T R differs from I by " + std::to_string(error) + ")");
+}
+
+std::uintmax_t open_rawlog(const std::filesystem::path& path, mrpt::io::CFileGZInputStream& in) {
+  const std::string name = path.string();
+  if (!std::filesystem::exists(path)) throw InputError(name, 0, "", "file not found");
+  if (std::filesystem::is_directory(path)) throw InputError(name, 0, "", "is a directory, not a rawlog");
+  if (!in.open(name)) throw InputError(name, 0, "", "cannot open file");
+  std::error_code error;
+  const std::uintmax_t stored = std::filesystem::file_size(path, error);
+  return error ? 0 : stored;
 }
 
 std::string mrpt_exception_message(const std::string& what) {

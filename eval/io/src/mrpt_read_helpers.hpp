@@ -5,7 +5,11 @@
 
 #include "relslam/core/rigid.hpp"
 
+#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/poses/CPose3D.h>
+
+#include <cstddef>
+#include <filesystem>
 
 #include <string>
 
@@ -18,6 +22,11 @@ Rigid3 rigid_of(const mrpt::poses::CPose3D& pose);
 // point silently.
 void require_sane(const Rigid3& pose, double max_offset, const std::string& file, int record,
                   const std::string& field);
+
+// Opens a rawlog (plain or gzip) into `in` and returns its size on disk (0 when unknown), what
+// rawlog_decoded_budget() takes. Throws InputError for a missing file, a directory, a file that
+// cannot be opened.
+std::uintmax_t open_rawlog(const std::filesystem::path& path, mrpt::io::CFileGZInputStream& in);
 
 // MRPT's exception text is a banner, a "Message:" line and a call stack; the message.
 std::string mrpt_exception_message(const std::string& what);

@@ -185,18 +185,11 @@ std::optional<PointCloudFrame> frame_of(const mrpt::obs::CObservation& obs, cons
   return frame;
 }
 
-// The whole decoded file, at most the budget of rawlog.hpp (the larger of kMinRawlogBudgetBytes
-// and kMaxRawlogExpansion times its size on disk).
+// The whole decoded file, at most the budget of rawlog.hpp.
 std::vector<unsigned char> decoded_file(const std::filesystem::path& path) {
   const std::string name = path.string();
-  if (!std::filesystem::exists(path)) throw InputError(name, 0, "", "file not found");
-  if (std::filesystem::is_directory(path)) throw InputError(name, 0, "", "is a directory, not a rawlog");
   mrpt::io::CFileGZInputStream in;
-  if (!in.open(name)) throw InputError(name, 0, "", "cannot open file");
-  std::error_code error;
-  const std::uintmax_t stored = std::filesystem::file_size(path, error);
-  const std::size_t budget =
-      std::max<std::size_t>(kMinRawlogBudgetBytes, kMaxRawlogExpansion * static_cast<std::size_t>(error ? 0 : stored));
+  const std::size_t budget = rawlog_decoded_budget(open_rawlog(path, in));
   std::vector<unsigned char> bytes;
   constexpr std::size_t kChunk = std::size_t{1} << 20;
   for (;;) {

@@ -191,11 +191,6 @@ std::optional<Rigid3> odometry_increment(const mrpt::obs::CObservationOdometry& 
   return increment;
 }
 
-// The decoded bytes the whole input may hold: its size on disk times kMaxRawlogExpansion, and
-// at least kMinRawlogBudgetBytes.
-std::size_t decoded_budget(std::uintmax_t stored_bytes) {
-  return std::max<std::size_t>(kMinRawlogBudgetBytes, kMaxRawlogExpansion * static_cast<std::size_t>(stored_bytes));
-}
 
 // The next record's bytes, checked by mrpt_record_check.hpp; false at a clean end between
 // records. Each RecordProblem becomes an InputError naming the file and the record.
@@ -291,21 +286,20 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t 
 
 }  // namespace
 
+std::size_t rawlog_decoded_budget(std::uintmax_t stored_bytes) {
+  return std::max<std::size_t>(kMinRawlogBudgetBytes, kMaxRawlogExpansion * static_cast<std::size_t>(stored_bytes));
+}
+
 Rawlog read_rawlog(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  if (!std::filesystem::exists(path)) throw InputError(name, 0, "", "file not found");
-  if (std::filesystem::is_directory(path)) throw InputError(name, 0, "", "is a directory, not a rawlog");
   mrpt::io::CFileGZInputStream in;
-  if (!in.open(name)) throw InputError(name, 0, "", "cannot open file");
-  std::error_code error;
-  const std::uintmax_t stored = std::filesystem::file_size(path, error);
-  return read_records(in, name, decoded_budget(error ? 0 : stored));
+  const std::size_t budget = rawlog_decoded_budget(open_rawlog(path, in));
+  return read_records(in, path.string(), budget);
 }
 
 Rawlog read_rawlog_bytes(std::string_view bytes, const std::string& name) {
   mrpt::io::CMemoryStream in;
   in.assignMemoryNotOwn(bytes.data(), bytes.size());
-  return read_records(in, name, decoded_budget(bytes.size()));
+  return read_records(in, name, rawlog_decoded_budget(bytes.size()));
 }
 
 ObservationFrame observation_frame(const RawlogFrame& frame) {

@@ -1,12 +1,14 @@
 #pragma once
 // Internal to the sources layer: the extractor implementations plane_extractor.cpp lists.
 
-#include "relslam/eval/sources/cloud_planes.hpp"
+#include "relslam/eval/io/point_cloud_rawlog.hpp"
 #include "relslam/eval/sources/plane_extractor.hpp"
 
 #include <span>
 
 namespace relslam::eval {
+
+struct SegmentPlaneOptions;  // cloud_planes.hpp
 
 // EM algorithm 2 (incremental) or 1 (batch), libslam's run_em2 / run_em1.
 std::unique_ptr<PlaneExtractor> make_em_extractor(PlaneExtractorKind kind, const ExtractorSettings& settings);

@@ -9,6 +9,8 @@
 // the points left (the practitioner's default the clouds' extraction compares against).
 #include "extractors.hpp"
 
+#include "relslam/eval/sources/cloud_planes.hpp"
+
 #include "relslam/core/option_issue.hpp"
 #include "relslam/em/em_plane.hpp"
 #include "relslam/eval/config/input_error.hpp"
