@@ -7,6 +7,7 @@
 #include "relslam/eval/cli/commands/compare.hpp"
 #include "relslam/eval/cli/commands/convert_tum.hpp"
 #include "relslam/eval/cli/commands/em_bench.hpp"
+#include "relslam/eval/cli/commands/extract.hpp"
 #include "relslam/eval/cli/commands/rawlog_info.hpp"
 #include "relslam/eval/cli/commands/render.hpp"
 #include "relslam/eval/cli/commands/run.hpp"
@@ -133,6 +134,8 @@ int run_cli(int argc, const char* const* argv) {
   add_em_bench(app, em_bench);
   RenderArgs render;
   add_render(app, render);
+  ExtractArgs extract;
+  add_extract(app, extract);
   CompareArgs compare;
   add_compare(app, compare);
   app.add_subcommand("algorithms", "List the algorithms a scenario's \"algorithms\" key may name");
@@ -165,6 +168,7 @@ int run_cli(int argc, const char* const* argv) {
     if (app.got_subcommand("bench-binning")) return run_bench_binning(bench_binning, command_line);
     if (app.got_subcommand("em-bench")) return run_em_bench_command(em_bench, command_line);
     if (app.got_subcommand("render")) return run_render(render);
+    if (app.got_subcommand("extract")) return run_extract(extract);
     if (app.got_subcommand("compare")) return run_compare(compare);
     if (app.got_subcommand("algorithms")) {
       std::cout << "On point landmarks (kind simulation, rawlogs, Victoria Park):\n";

@@ -65,6 +65,25 @@ constexpr std::initializer_list<Class> kTopLevel = {Class::ActionCollection, Cla
 constexpr std::initializer_list<Class> kInFrame = {Class::BearingRange, Class::Odometry};
 constexpr std::initializer_list<Class> kInCollection = {Class::RobotMovement2D, Class::RobotMovement3D};
 
+// The class-name length an object header's first byte gives; throws when it is no MRPT header.
+unsigned class_name_length(std::uint8_t length_byte, const std::string& path) {
+  if (!(length_byte & 0x80))
+    throw RecordProblem(path, "no MRPT object header here (first byte " + std::to_string(length_byte) +
+                                  "; objects written before MRPT 0.5.5 are not read)");
+  const unsigned length = length_byte & 0x7F;
+  if (length == 0 || length > 120)
+    throw RecordProblem(path, "class name of " + std::to_string(length) + " characters: not an MRPT object");
+  return length;
+}
+
+void require_identifier(const std::string& name, const std::string& path) {
+  if (!std::all_of(name.begin(), name.end(), [](char ch) {
+        return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' ||
+               ch == ':';
+      }))
+    throw RecordProblem(path, "the class name is not an identifier: not an MRPT object");
+}
+
 class Walker {
  public:
   Walker(const ByteReader& read, std::vector<unsigned char>& out) : read_(read), out_(out) {}
@@ -73,19 +92,10 @@ class Walker {
   void object(const std::string& path, std::initializer_list<Class> allowed, unsigned matrix_rows = 0,
               unsigned matrix_cols = 0) {
     const std::uint8_t length_byte = pod<std::uint8_t>(path, "object header");
-    if (!(length_byte & 0x80))
-      throw RecordProblem(path, "no MRPT object header here (first byte " + std::to_string(length_byte) +
-                                    "; objects written before MRPT 0.5.5 are not read)");
-    const unsigned length = length_byte & 0x7F;
-    if (length == 0 || length > 120)
-      throw RecordProblem(path, "class name of " + std::to_string(length) + " characters: not an MRPT object");
+    const unsigned length = class_name_length(length_byte, path);
     need(length, path, "class name");
     const std::string name(reinterpret_cast<const char*>(out_.data() + out_.size() - length), length);
-    if (!std::all_of(name.begin(), name.end(), [](char ch) {
-          return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' ||
-                 ch == ':';
-        }))
-      throw RecordProblem(path, "the class name is not an identifier: not an MRPT object");
+    require_identifier(name, path);
     const ClassInfo* found = nullptr;
     for (Class c : allowed)
       if (name == info(c).name || name == std::string(info(c).namespace_) + info(c).name) found = &info(c);
@@ -326,6 +336,17 @@ bool read_checked_record(const ByteReader& read, std::vector<unsigned char>& rec
   };
   Walker(replay, record).object("", kTopLevel);
   return true;
+}
+
+std::string record_class_name(std::span<const unsigned char> bytes, const std::string& path) {
+  if (bytes.empty()) throw RecordProblem(path, "truncated: the input ends before the object header", true);
+  const unsigned length = class_name_length(bytes[0], path);
+  if (bytes.size() < 1 + std::size_t{length})
+    throw RecordProblem(path, "truncated: the input ends inside the class name", true);
+  std::string name(reinterpret_cast<const char*>(bytes.data() + 1), length);
+  require_identifier(name, path);
+  const std::size_t colon = name.rfind(':');
+  return colon == std::string::npos ? name : name.substr(colon + 1);
 }
 
 }  // namespace relslam::eval

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <functional>
 #include <stdexcept>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -49,5 +50,11 @@ const std::vector<std::string>& accepted_record_classes();
 // header comment says. Returns false when the input ends before the object's first byte.
 // Throws RecordProblem otherwise.
 bool read_checked_record(const ByteReader& read, std::vector<unsigned char>& record);
+
+// The class of the MRPT object whose header starts `bytes`, without its namespace, after the
+// same header checks as the walk above (an MRPT header, an identifier); `path` names the place
+// in messages. The point-cloud reader (point_cloud_rawlog.hpp) checks each record's class so
+// before MRPT decodes it. Throws RecordProblem.
+std::string record_class_name(std::span<const unsigned char> bytes, const std::string& path);
 
 }  // namespace relslam::eval

@@ -5,6 +5,7 @@
 #include "relslam/eval/io/mrpt_observation.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
 
+#include "mrpt_read_helpers.hpp"
 #include "mrpt_record_check.hpp"
 #include "rawlog_record_stream.hpp"
 
@@ -37,13 +38,6 @@ using mrpt::obs::CActionCollection;
 using mrpt::obs::CObservationBearingRange;
 using mrpt::obs::CSensoryFrame;
 
-Rigid3 rigid_of(const mrpt::poses::CPose3D& pose) {
-  Rigid3 r;
-  r.rotation = pose.getRotationMatrix().asEigen();
-  r.translation = {pose.x(), pose.y(), pose.z()};
-  return r;
-}
-
 // A frame's odometry as MRPT's odometry action, with MRPT's default Gaussian motion model for
 // its uncertainty: planar motions (about our +y, in our x-z plane) as a 2D action, which
 // both the 2D and 6D filters read, anything else as a 3D one.
@@ -68,24 +62,6 @@ CActionCollection odometry_actions(const ObservationFrame& frame) {
     actions.insert(move);
   }
   return actions;
-}
-
-// A pose from the file must be finite, each coordinate within +-max_offset, and its rotation a
-// rotation: MRPT stores the matrix itself, so a flipped bit gives a shear that would bend every
-// point silently.
-void require_sane(const Rigid3& pose, double max_offset, const std::string& file, int record,
-                  const std::string& field) {
-  if (!pose.rotation.allFinite() || !pose.translation.allFinite())
-    throw InputError(file, record, field, "pose must be finite");
-  if (pose.translation.cwiseAbs().maxCoeff() > max_offset)
-    throw InputError(file, record, field,
-                     "each coordinate must be within +-" + format_number(max_offset) + " m, got (" +
-                         format_number(pose.translation.x()) + ", " + format_number(pose.translation.y()) + ", " +
-                         format_number(pose.translation.z()) + ")");
-  const double error = (pose.rotation.transpose() * pose.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-  if (error > 1e-3 || pose.rotation.determinant() < 0)
-    throw InputError(file, record, field,
-                     "rotation is not a rotation (R^T R differs from I by " + std::to_string(error) + ")");
 }
 
 std::optional<Rigid3> odometry_of(const CActionCollection& actions, const std::string& file, int record) {
@@ -201,15 +177,6 @@ RawlogFrame frame_of(const CObservationBearingRange& obs, int index, const std::
   return frame;
 }
 
-// MRPT's exception text is a banner, a "Message:" line and a call stack; keep the message.
-std::string mrpt_message(const std::string& what) {
-  const std::size_t start = what.find("Message:");
-  std::string line = start == std::string::npos ? what : what.substr(start + 8);
-  line = line.substr(0, line.find('\n'));
-  const std::size_t first = line.find_first_not_of(' ');
-  return first == std::string::npos ? what.substr(0, what.find('\n')) : line.substr(first);
-}
-
 // A CObservationOdometry reading, and the increment since the previous one that becomes the
 // next frame's odometry; both within the bounds rawlog.hpp states.
 std::optional<Rigid3> odometry_increment(const mrpt::obs::CObservationOdometry& odo,
@@ -223,11 +190,6 @@ std::optional<Rigid3> odometry_increment(const mrpt::obs::CObservationOdometry& 
   return increment;
 }
 
-// The decoded bytes the whole input may hold: its size on disk times kMaxRawlogExpansion, and
-// at least kMinRawlogBudgetBytes.
-std::size_t decoded_budget(std::uintmax_t stored_bytes) {
-  return std::max<std::size_t>(kMinRawlogBudgetBytes, kMaxRawlogExpansion * static_cast<std::size_t>(stored_bytes));
-}
 
 // The next record's bytes, checked by mrpt_record_check.hpp; false at a clean end between
 // records. Each RecordProblem becomes an InputError naming the file and the record.
@@ -273,7 +235,7 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t 
       object = archive.ReadObject();
     } catch (const std::exception& e) {
       // What our bounds do not cover: MRPT's own checks (a landmark id listed twice, ...).
-      throw InputError(name, record, "", "unreadable record: " + mrpt_message(e.what()));
+      throw InputError(name, record, "", "unreadable record: " + mrpt_exception_message(e.what()));
     }
     log.records = record;
     if (auto actions = std::dynamic_pointer_cast<CActionCollection>(object)) {
@@ -323,21 +285,20 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t 
 
 }  // namespace
 
+std::size_t rawlog_decoded_budget(std::uintmax_t stored_bytes) {
+  return std::max<std::size_t>(kMinRawlogBudgetBytes, kMaxRawlogExpansion * static_cast<std::size_t>(stored_bytes));
+}
+
 Rawlog read_rawlog(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  if (!std::filesystem::exists(path)) throw InputError(name, 0, "", "file not found");
-  if (std::filesystem::is_directory(path)) throw InputError(name, 0, "", "is a directory, not a rawlog");
   mrpt::io::CFileGZInputStream in;
-  if (!in.open(name)) throw InputError(name, 0, "", "cannot open file");
-  std::error_code error;
-  const std::uintmax_t stored = std::filesystem::file_size(path, error);
-  return read_records(in, name, decoded_budget(error ? 0 : stored));
+  const std::size_t budget = rawlog_decoded_budget(open_rawlog(path, in));
+  return read_records(in, path.string(), budget);
 }
 
 Rawlog read_rawlog_bytes(std::string_view bytes, const std::string& name) {
   mrpt::io::CMemoryStream in;
   in.assignMemoryNotOwn(bytes.data(), bytes.size());
-  return read_records(in, name, decoded_budget(bytes.size()));
+  return read_records(in, name, rawlog_decoded_budget(bytes.size()));
 }
 
 ObservationFrame observation_frame(const RawlogFrame& frame) {

@@ -5,6 +5,7 @@
 #include "relslam/em/em_random.hpp"
 #include "relslam/em/merging.hpp"
 #include "relslam/em/seeding.hpp"
+#include "relslam/em/tight_refit.hpp"
 
 #include <cmath>
 #include <limits>
@@ -109,6 +110,7 @@ EmResult run_em1(std::span<const Eigen::Vector3d> points, const EmOptions& o, st
   merge_planes(planes, points, o);
   cull_min_support(planes, o, 0);
   cull_exclusivity(planes, points.size(), o, 0);
+  tight_refit(planes, points, o);
   set_rectangles(planes, points, o);
   return result;
 }

@@ -6,6 +6,7 @@
 #include "relslam/em/em_random.hpp"
 #include "relslam/em/merging.hpp"
 #include "relslam/em/seeding.hpp"
+#include "relslam/em/tight_refit.hpp"
 #include "relslam/spatial/ovlp_quadtree.hpp"
 
 #include <algorithm>
@@ -83,6 +84,7 @@ EmResult run_em2(std::span<const Eigen::Vector3d> points, const EmOptions& o, st
 
   absorb_unassigned(planes, points, finite, o, o.em2.absorb_passes);
   cull_exclusivity(planes, points.size(), o, 0);
+  tight_refit(planes, points, o);
   set_rectangles(planes, points, o);
   return result;
 }

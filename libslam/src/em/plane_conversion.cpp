@@ -7,6 +7,24 @@
 
 namespace relslam::em {
 
+std::string_view to_string(PlaneLabel label) {
+  switch (label) {
+    case PlaneLabel::Wall: return "wall";
+    case PlaneLabel::Floor: return "floor";
+    case PlaneLabel::Ceiling: return "ceiling";
+    case PlaneLabel::Other: return "other";
+  }
+  return "?";
+}
+
+PlaneLabel label_of(const EmPlane& plane, const ConversionOptions& o) {
+  const double ny = std::abs(plane.normal.y());
+  if (ny <= o.max_vertical_normal) return PlaneLabel::Wall;
+  if (std::hypot(plane.normal.x(), plane.normal.z()) <= o.max_vertical_normal)
+    return plane.centroid.y() < 0.0 ? PlaneLabel::Floor : PlaneLabel::Ceiling;
+  return PlaneLabel::Other;
+}
+
 ExtractedPlanes to_plane_objects(const EmResult& result, const EmOptions& o, int iteration) {
   struct Kept {
     PlaneObject plane;

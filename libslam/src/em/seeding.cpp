@@ -14,24 +14,26 @@ std::optional<EmPlane> seed_plane(std::span<const Eigen::Vector3d> points, int s
   // The two nearest by (squared distance, index).
   using Near = std::pair<double, int>;
   constexpr Near kNone{std::numeric_limits<double>::infinity(), -1};
-  Near first = kNone, second = kNone;
   const double radius2 = options.seed_radius * options.seed_radius;
-  for (int i : candidates) {
-    if (i == start) continue;
-    const Near n{(points[static_cast<std::size_t>(i)] - p).squaredNorm(), i};
-    if (!(n.first <= radius2)) continue;
-    if (n < first) {
-      second = first;
-      first = n;
-    } else if (n < second) {
-      second = n;
+  // The nearest by (squared distance, index) among the candidates `usable` admits.
+  auto nearest = [&](auto usable) {
+    Near best = kNone;
+    for (int i : candidates) {
+      if (i == start) continue;
+      const Near n{(points[static_cast<std::size_t>(i)] - p).squaredNorm(), i};
+      if (n.first <= radius2 && n < best && usable(i)) best = n;
     }
-  }
-  if (second.second < 0) return std::nullopt;
+    return best;
+  };
+  const Near first = nearest([](int) { return true; });
+  if (first.second < 0) return std::nullopt;
   const Eigen::Vector3d a = points[static_cast<std::size_t>(first.second)] - p;
-  const Eigen::Vector3d b = points[static_cast<std::size_t>(second.second)] - p;
-  const double scale = a.norm() * b.norm();
-  if (!(scale > 0.0) || a.cross(b).norm() < options.min_seed_sine * scale) return std::nullopt;
+  const Near second = nearest([&](int i) {
+    const Eigen::Vector3d b = points[static_cast<std::size_t>(i)] - p;
+    const double scale = a.norm() * b.norm();
+    return i != first.second && scale > 0.0 && a.cross(b).norm() >= options.min_seed_sine * scale;
+  });
+  if (second.second < 0) return std::nullopt;
 
   EmPlane plane;
   plane.points = {start, first.second, second.second};

@@ -1,6 +1,7 @@
 #include "relslam/eval/cli/commands/rawlog_info.hpp"
 
 #include "relslam/eval/io/csv_writer.hpp"
+#include "relslam/eval/io/point_cloud_rawlog.hpp"
 #include "relslam/eval/io/rawlog.hpp"
 #include "relslam/eval/sources/rawlog_source.hpp"
 
@@ -17,7 +18,10 @@ void add_rawlog(CLI::App& app, RawlogArgs& args) {
   cmd->description(
       "Read an MRPT rawlog (either format, plain or gzip) the way relslam's algorithms will see it and\n"
       "summarise it: format, frames, points per frame, landmark ids, odometry. --csv writes every\n"
-      "detection in relslam's robot frame (+x left, +y up, +z forward), one row per point.");
+      "detection in relslam's robot frame (+x left, +y up, +z forward), one row per point.\n"
+      "A rawlog of point clouds (CObservation3DRangeScan, CObservationVelodyneScan,\n"
+      "CObservationPointCloud) is summarised cloud by cloud: pixels, returns, intrinsics, extent;\n"
+      "relslam extract finds their planes.");
   cmd->add_option("rawlog", args.file, "Rawlog file")->required();
   cmd->add_option("--csv", args.csv, "Write frame,x,y,z,landmark_id rows to this CSV file");
 }
@@ -40,6 +44,7 @@ void print_sensor(const Rawlog& log) {
 }  // namespace
 
 int run_rawlog(const RawlogArgs& args) {
+  if (starts_with_point_cloud(args.file)) return run_point_cloud_rawlog(args);
   const Rawlog log = read_rawlog(args.file);
   std::size_t points = 0, min_points = SIZE_MAX, max_points = 0, known = 0, odometry = 0;
   for (const RawlogFrame& f : log.frames) {

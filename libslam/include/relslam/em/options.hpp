@@ -176,6 +176,15 @@ struct EmOptions {
   // step of the pass before at a tenth of its step (10°, 1°, 0.1° with 3 passes) [R].
   double search_step_rad = 10.0 * std::numbers::pi / 180.0;
   int search_passes = 3;
+  // The final refit (tight_refit.hpp): once the extraction ends, each plane keeps the points
+  // within refit_gate robust deviations of its fit (1.4826 × the median absolute residual) and
+  // is fit again, up to refit_rounds times. At a corner, points of the neighbouring wall lie
+  // within d_in of the plane and inside its widened box, join it and tilt it; their residuals
+  // are far above the plane's own, so the gate leaves them out. 5 lies above d_in = 3σ_pt
+  // (for_point_sigma) so that under noise the gate keeps every point the plane accepted, and far
+  // below the neighbour's residuals on noise-free points. 0: off [C].
+  double refit_gate = 5.0;
+  int refit_rounds = 3;
   Em1Options em1;
   Em2Options em2;
   ConversionOptions conversion;
@@ -208,6 +217,9 @@ void describe(OptionsOf<EmOptions> auto& o, auto& f) {
             at_most(90.0));
   f.field("search_passes", o.search_passes, "rotation search: passes, each ten times finer", at_least(1),
           at_most(8));
+  f.field("refit_gate", o.refit_gate,
+          "final refit: keep points within this many robust deviations of the plane (0: off)", at_least(0.0));
+  f.field("refit_rounds", o.refit_rounds, "final refit: rounds at most", at_least(1), at_most(20));
   f.nested("em1", o.em1);
   f.nested("em2", o.em2);
   f.nested("conversion", o.conversion);

@@ -8,6 +8,7 @@
 #include "relslam/em/options.hpp"
 
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace relslam::em {
@@ -26,6 +27,14 @@ struct ExtractedPlanes {
 // rectangle, key point 1 (a) first along u = (n_z, −n_x) so the PlaneObject's front faces the
 // robot (spec §2.2); y_lo, y_hi from the rectangle. Ordered by decreasing support (ties: EM's
 // order) [R]; the algorithm must not depend on it.
+// What a plane is in the 2½D world of thesis 4.5: a wall (|n_y| at most
+// conversion.max_vertical_normal: converted by to_plane_objects), horizontal (its tilt from
+// level as small: the floor below the sensor, centroid y < 0, or the ceiling above it), or
+// neither (a ramp, a table edge, noise), which the Relative Plane algorithm cannot take.
+enum class PlaneLabel : unsigned char { Wall, Floor, Ceiling, Other };
+std::string_view to_string(PlaneLabel label);  // "wall", "floor", "ceiling", "other"
+PlaneLabel label_of(const EmPlane& plane, const ConversionOptions& options);
+
 ExtractedPlanes to_plane_objects(const EmResult& result, const EmOptions& options, int iteration);
 
 // Evaluation only — the extractors never call it (spec §4.5 step 5, §7.1): the true wall of an

@@ -9,11 +9,14 @@
 
 namespace relslam::em {
 
-// The plane through `start` (the caller's random unassigned point) and its two nearest points
-// among `candidates` (unassigned points; `start` itself is skipped), ties broken by the lower
-// index so the result does not depend on the candidates' order. Nothing when the two are not
-// both within options.seed_radius, or the three points are nearly collinear
-// (|a × b| / (|a||b|) < options.min_seed_sine). The plane has age 0 and its three points.
+// The plane through `start` (the caller's random unassigned point), its nearest point among
+// `candidates` (unassigned points; `start` itself is skipped) and the nearest one that is not
+// nearly collinear with those two (|a × b| / (|a||b|) >= options.min_seed_sine), ties broken by
+// the lower index so the result does not depend on the candidates' order. Nothing when no such
+// two lie within options.seed_radius. The plane has age 0 and its three points.
+// Deviation (the thesis and spec §4.2 take the two nearest and fail when they are collinear):
+// on a sensor's regular grid (an image row, a scan line) the two nearest of a point are its
+// neighbours on the row, always collinear, so nearly every seed failed on depth frames [C].
 std::optional<EmPlane> seed_plane(std::span<const Eigen::Vector3d> points, int start,
                                   std::span<const int> candidates, const EmOptions& options);
 

@@ -65,6 +65,8 @@ struct Rawlog {
 // 1000:1 (a 995 KB file of eight records took 1.15 GB). A plain file never reaches it.
 inline constexpr std::size_t kMinRawlogBudgetBytes = std::size_t{64} << 20;
 inline constexpr std::size_t kMaxRawlogExpansion = 64;
+// That budget for a file of `stored_bytes` on disk (the point-cloud reader's too).
+std::size_t rawlog_decoded_budget(std::uintmax_t stored_bytes);
 // What a bearing-range observation says about its sensor must make sense, not only be finite
 // (a negative field of view, a maximum range below the minimum or readings of 3e38 ran the EKF
 // for minutes; a sensor 1e300 away from the robot gave NaN):

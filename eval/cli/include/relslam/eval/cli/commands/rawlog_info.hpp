@@ -14,5 +14,7 @@ struct RawlogArgs {
 
 void add_rawlog(CLI::App& app, RawlogArgs& args);
 int run_rawlog(const RawlogArgs& args);
+// The summary of a rawlog of point clouds (rawlog_clouds.cpp); run_rawlog hands such files to it.
+int run_point_cloud_rawlog(const RawlogArgs& args);
 
 }  // namespace relslam::eval

@@ -1,0 +1,34 @@
+#pragma once
+// Internal to the io layer, shared by the rawlog readers (landmarks: rawlog.cpp, point clouds:
+// point_cloud_rawlog.cpp): MRPT poses as Rigid3, the sanity check every pose read goes through,
+// and MRPT's exception text cut to its message.
+
+#include "relslam/core/rigid.hpp"
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <cstddef>
+#include <filesystem>
+
+#include <string>
+
+namespace relslam::eval {
+
+Rigid3 rigid_of(const mrpt::poses::CPose3D& pose);
+
+// A pose from the file must be finite, each coordinate within +-max_offset, and its rotation a
+// rotation: MRPT stores the matrix itself, so a flipped bit gives a shear that would bend every
+// point silently.
+void require_sane(const Rigid3& pose, double max_offset, const std::string& file, int record,
+                  const std::string& field);
+
+// Opens a rawlog (plain or gzip) into `in` and returns its size on disk (0 when unknown), what
+// rawlog_decoded_budget() takes. Throws InputError for a missing file, a directory, a file that
+// cannot be opened.
+std::uintmax_t open_rawlog(const std::filesystem::path& path, mrpt::io::CFileGZInputStream& in);
+
+// MRPT's exception text is a banner, a "Message:" line and a call stack; the message.
+std::string mrpt_exception_message(const std::string& what);
+
+}  // namespace relslam::eval
