@@ -44,7 +44,9 @@ const std::vector<PlaneAlgorithmEntry>& plane_algorithm_registry() {
   static const std::vector<PlaneAlgorithmEntry> entries = {
       {"relative_plane",
        "Relative Plane: relative maps of wall groups, no odometry, pose from scratch each frame (thesis 4)",
-       [](const PlaneAlgorithmContext& c) { return make_relative_plane(c.scenario.relative_plane, c.world_T_start); }},
+       [](const PlaneAlgorithmContext& c) {
+         return make_relative_plane(c.scenario.relative_plane, c.scenario.motion_prediction, c.world_T_start);
+       }},
   };
   return entries;
 }

@@ -6,6 +6,7 @@
 #include "relslam/eval/config/point_bounds.hpp"
 #include "relslam/eval/experiments/ekf_log_settings.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
+#include "relslam/eval/experiments/laser_experiment.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/experiments/rawlog_defaults.hpp"
 #include "relslam/eval/experiments/require_algorithms.hpp"
@@ -66,6 +67,9 @@ ExperimentResult Experiment::run(bool progress) {
 }
 
 ExperimentResult simulate_and_run(const LoadedScenario& loaded, const std::filesystem::path& out, bool progress) {
+  // A planar scenario naming a laser log runs on it instead of a simulation.
+  if (loaded.scenario.kind == ScenarioKind::Planar && !loaded.scenario.laser.rawlog.empty())
+    return run_on_laser_rawlog(loaded, loaded.scenario.laser.rawlog, "laser.rawlog", out, progress);
   if (loaded.scenario.kind == ScenarioKind::Planar) return simulate_planar_and_run(loaded, out, progress);
   require_algorithms(loaded);
   SimulationSource source(loaded);

@@ -27,6 +27,15 @@ std::string default_rawlog_algorithms(const RawlogFiles& files) {
   return shape_of(read_rawlog(files.rawlog)).planar ? "relative_point,ekf2d" : "relative_point,ekf6d";
 }
 
+std::vector<std::string> default_rawlog_settings(const RawlogFiles& files) {
+  const Rawlog log = read_rawlog(files.rawlog);
+  // A log of 2-D laser scans only: its walls through Relative Plane, poses predicted.
+  if (log.frames.empty())
+    return {"kind=planar", "algorithms=relative_plane", "motion_prediction.constant_velocity=true",
+            "motion_prediction.use_odometry=true"};
+  return {std::string("algorithms=") + (shape_of(log).planar ? "relative_point,ekf2d" : "relative_point,ekf6d")};
+}
+
 LoadedScenario with_rawlog_shape(const LoadedScenario& loaded, const RawlogSource& source, nlohmann::json& record) {
   const RawlogShape& shape = source.shape();
   LoadedScenario adapted = loaded;

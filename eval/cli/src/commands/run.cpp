@@ -4,6 +4,7 @@
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
+#include "relslam/eval/experiments/laser_experiment.hpp"
 #include "relslam/eval/experiments/planar_experiment.hpp"
 #include "relslam/eval/experiments/rawlog_defaults.hpp"
 #include "relslam/eval/experiments/require_algorithms.hpp"
@@ -86,7 +87,7 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
   std::vector<std::string> set = args.set;
   if (args.scenario.empty()) {
     const std::vector<std::string> defaults =
-        args.planes.empty() ? std::vector<std::string>{"algorithms=" + default_rawlog_algorithms(rawlog_files(args))}
+        args.planes.empty() ? default_rawlog_settings(rawlog_files(args))
                             : std::vector<std::string>{"kind=planar", "algorithms=relative_plane"};
     set.insert(set.begin(), defaults.begin(), defaults.end());
   }
@@ -106,6 +107,8 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
       result = run_on_planes(loaded, args);
     } else if (args.rawlog.empty()) {
       result = simulate_and_run(loaded, args.out, !args.quiet);
+    } else if (loaded.scenario.kind == ScenarioKind::Planar) {
+      result = run_on_laser_rawlog(loaded, args.rawlog, "--rawlog", args.out, !args.quiet);
     } else {
       result = run_on_rawlog(loaded, rawlog_files(args), args.out, !args.quiet);
     }

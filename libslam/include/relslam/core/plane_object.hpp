@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace relslam {
@@ -55,6 +56,9 @@ struct PlaneFrame {
   // The raw 2-D scan the planes were extracted from, where they came from a planar laser
   // (baselines that match scans, such as ICP-SLAM, read it); null otherwise.
   std::shared_ptr<const LaserScan> scan;
+  // The robot's motion since the previous frame by its odometry (previous_T_current), where
+  // the recording has one; no algorithm of the thesis reads it.
+  std::optional<PlanarPose> odometry = std::nullopt;
 };
 
 // What the simulator knows of one observed plane, for scoring only.
