@@ -139,7 +139,7 @@ std::filesystem::path installed_dataset(const std::string& name) {
 
 constexpr const char* kSena = "2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
 // The least share of SENA's scans with a valid pose (measured: docs/laser-scans.md).
-constexpr double kSenaMinValid = 0.08;
+constexpr double kSenaMinValid = 0.6;
 
 TEST(LaserRawlog, ReadsMrptsLocalizationDemoWhoseOldActionsHoldJunkFlags) {
   const auto path = installed_dataset("localization_demo.rawlog");

@@ -1,7 +1,7 @@
 // Walls from noise-free ray-cast scans: found exactly (to the ray spacing at the ends), their
 // ends judged real or cut as the scene says, and stable from one scan to the next.
-#include "relslam/scan/segment_stability.hpp"
 #include "relslam/scan/wall_extraction.hpp"
+#include "relslam/scan/segment_stability.hpp"
 
 #include <gtest/gtest.h>
 
@@ -55,9 +55,7 @@ double off_line(const Segment& s, const Eigen::Vector2d& p) {
 }
 
 // A room 8 x 6 with the robot inside, facing +x: the walls in front, left and right are seen.
-std::vector<Segment> room() {
-  return {{{4, -3}, {4, 3}}, {{-4, 3}, {4, 3}}, {{-4, -3}, {4, -3}}, {{-4, -3}, {-4, 3}}};
-}
+std::vector<Segment> room() { return {{{4, -3}, {4, 3}}, {{-4, 3}, {4, 3}}, {{-4, -3}, {4, -3}}, {{-4, -3}, {-4, 3}}}; }
 
 TEST(WallExtraction, FindsEveryVisibleWallExactlyWithRealCornerEnds) {
   const std::vector<ExtractedWall> walls = extract_walls(scan_of(room(), {}), {}, 7);

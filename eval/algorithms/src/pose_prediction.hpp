@@ -29,9 +29,9 @@ class PosePrediction {
   MotionPredictionOptions options_;
   PlanarPose start_;
   PlanarPose start_T_predicted_;
-  std::optional<PlanarPose> last_;   // start_T_robot at the last valid pose
-  PlanarPose step_;                  // the last step between two consecutive valid poses
-  int frames_since_last_ = 0;        // frames since last_
+  std::optional<PlanarPose> last_;  // start_T_robot at the last valid pose
+  PlanarPose step_;                 // the last step between two consecutive valid poses
+  int frames_since_last_ = 0;       // frames since last_
   bool have_step_ = false;
   PlanarPose odometry_since_last_;  // the odometry composed since last_
   bool odometry_complete_ = true;   // every frame since last_ had odometry

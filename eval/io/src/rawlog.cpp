@@ -215,7 +215,8 @@ void add_scan(Rawlog& log, const mrpt::obs::CObservation2DRangeScan& obs, const 
               const std::string& file, int record) {
   RawlogScan scan;
   scan.index = static_cast<int>(log.scans.size());
-  scan.scan = laser_scan_of(obs, file, record);
+  const LaserScanLimits limits{kMaxSensorRange_m, kRangeTolerance, kMaxSensorOffset_m, kMaxScanTilt_rad};
+  scan.scan = laser_scan_of(obs, limits, file, record);
   if (odometry) scan.odometry = planar_odometry(*odometry);
   log.scans.push_back(std::move(scan));
 }

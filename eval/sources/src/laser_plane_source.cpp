@@ -18,11 +18,12 @@ std::filesystem::path find_laser_rawlog(const std::string& name, const std::stri
   if (std::filesystem::exists(given)) return given;
   const std::filesystem::path installed = mrpt_datasets_folder() / name;
   if (given.filename() == given && std::filesystem::exists(installed)) return installed;
-  throw InputError("", 0, field,
-                   "\"" + name + "\" not found" +
-                       (given.filename() == given ? " here nor in MRPT's data sets (" + installed.parent_path().string() +
-                                                        "; Debian package mrpt-common)"
-                                                  : std::string()));
+  throw InputError(
+      "", 0, field,
+      "\"" + name + "\" not found" +
+          (given.filename() == given
+               ? " here nor in MRPT's data sets (" + installed.parent_path().string() + "; Debian package mrpt-common)"
+               : std::string()));
 }
 
 LaserPlaneSource::LaserPlaneSource(const std::filesystem::path& rawlog, const scan::WallExtractionOptions& walls)

@@ -24,9 +24,7 @@ struct Piece {
 
   int first_ray() const { return returns.front().ray; }
   int last_ray() const { return returns.back().ray; }
-  Eigen::Vector2d project(const Eigen::Vector2d& p) const {
-    return centroid + direction * direction.dot(p - centroid);
-  }
+  Eigen::Vector2d project(const Eigen::Vector2d& p) const { return centroid + direction * direction.dot(p - centroid); }
   Eigen::Vector2d first_end() const { return project(returns.front().p); }
   Eigen::Vector2d last_end() const { return project(returns.back().p); }
   double distance(const Eigen::Vector2d& p) const {
@@ -100,7 +98,8 @@ void split(const std::vector<Return>& run, std::size_t first, std::size_t last, 
   }
   if (last + 1 - first < static_cast<std::size_t>(o.min_points)) return;
   Piece piece;
-  piece.returns.assign(run.begin() + static_cast<std::ptrdiff_t>(first), run.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+  piece.returns.assign(run.begin() + static_cast<std::ptrdiff_t>(first),
+                       run.begin() + static_cast<std::ptrdiff_t>(last) + 1);
   fit(piece);
   if (piece.rms <= o.max_rms) out.push_back(std::move(piece));
 }
@@ -143,11 +142,12 @@ bool real_end(const LaserScan& scan, const Piece& piece, const Eigen::Vector2d& 
   const Eigen::Vector2d ray(std::cos(b), std::sin(b));
   const Eigen::Vector2d normal(-piece.direction.y(), piece.direction.x());
   const double denominator = normal.dot(ray);
-  const std::optional<double> along =
-      std::abs(denominator) > 1e-9 && normal.dot(piece.centroid) / denominator > 0
-          ? std::optional<double>(normal.dot(piece.centroid) / denominator)
-          : std::nullopt;
-  if (!usable(scan, i, o)) return !(along && *along > scan.max_range - o.max_range_margin) && along.has_value();
+  const std::optional<double> along = std::abs(denominator) > 1e-9 && normal.dot(piece.centroid) / denominator > 0
+                                          ? std::optional<double>(normal.dot(piece.centroid) / denominator)
+                                          : std::nullopt;
+  // No return there: a real end if the wall's line would have been in range (nothing behind
+  // it), cut if the wall may go on beyond the maximum range.
+  if (!usable(scan, i, o)) return along && *along <= scan.max_range - o.max_range_margin;
   const Eigen::Vector2d q = scan.point(i);
   if ((q - end).norm() <= o.corner_distance) return true;  // a corner or the wall's own edge
   return !(along && static_cast<double>(scan.ranges[i]) < *along - o.occlusion_margin);

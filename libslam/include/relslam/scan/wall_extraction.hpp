@@ -9,8 +9,8 @@
 // split by clutter in one scan is joined again. Eigen only.
 
 #include "relslam/core/laser_scan.hpp"
-#include "relslam/core/plane_object.hpp"
 #include "relslam/core/option_fields.hpp"
+#include "relslam/core/plane_object.hpp"
 
 #include <numbers>
 #include <vector>
@@ -55,16 +55,15 @@ void describe(OptionsOf<WallExtractionOptions> auto& o, auto& f) {
   f.field("min_points", o.min_points, "returns a wall needs", at_least(2));
   f.field("min_length", o.min_length, "length a wall needs, m", at_least(0.0));
   f.field("max_rms", o.max_rms, "largest RMS distance of a wall's returns from its line, m", above(0.0));
-  f.degrees("merge_angle_deg", o.merge_angle_rad, "collinear pieces: directions within this, degrees",
-            at_least(0.0), at_most(90.0));
+  f.degrees("merge_angle_deg", o.merge_angle_rad, "collinear pieces: directions within this, degrees", at_least(0.0),
+            at_most(90.0));
   f.field("merge_offset", o.merge_offset, "... each one's ends within this of the other's line, m", at_least(0.0));
   f.field("merge_gap", o.merge_gap, "... and at most this far apart, m", at_least(0.0));
   f.field("occlusion_margin", o.occlusion_margin, "an end whose neighbour is this much nearer than the wall is cut, m",
           at_least(0.0));
   f.field("corner_distance", o.corner_distance, "... unless the neighbour is this near the end (a corner), m",
           at_least(0.0));
-  f.field("max_range_margin", o.max_range_margin, "returns this near the maximum range are ignored, m",
-          at_least(0.0));
+  f.field("max_range_margin", o.max_range_margin, "returns this near the maximum range are ignored, m", at_least(0.0));
   f.field("wall_height", o.wall_height, "the walls' height, m", above(0.0));
 }
 
