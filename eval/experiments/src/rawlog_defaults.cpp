@@ -29,10 +29,17 @@ std::string default_rawlog_algorithms(const RawlogFiles& files) {
 
 std::vector<std::string> default_rawlog_settings(const RawlogFiles& files) {
   const Rawlog log = read_rawlog(files.rawlog);
-  // A log of 2-D laser scans only: its walls through Relative Plane, poses predicted.
+  // A log of 2-D laser scans only: its walls through Relative Plane, sized as for scenarios/
+  // real-sena.json (docs/laser-scans.md): real steps and flickering walls.
   if (log.frames.empty())
-    return {"kind=planar", "algorithms=relative_plane", "motion_prediction.constant_velocity=true",
-            "motion_prediction.use_odometry=true"};
+    return {"kind=planar",
+            "algorithms=relative_plane",
+            "relative_plane.key_points=false",
+            "relative_plane.min_readings=2",
+            "relative_plane.min_common=2",
+            "relative_plane.local_match.max_offset_change=1.0",
+            "relative_plane.local_match.box_margin=1.0",
+            "relative_plane.rules.two_linking_planes=false"};
   return {std::string("algorithms=") + (shape_of(log).planar ? "relative_point,ekf2d" : "relative_point,ekf6d")};
 }
 

@@ -19,8 +19,8 @@ namespace relslam::eval {
 std::string default_rawlog_algorithms(const RawlogFiles& files);
 
 // The settings of a rawlog run without a scenario: {"algorithms=" + the above}, or for a log of
-// 2-D laser scans only a planar run of relative_plane on its walls with the motion predicted
-// (constant velocity, the odometry where the log has it). Reads the rawlog as above.
+// 2-D laser scans only a planar run of relative_plane on its walls with scenarios/real-sena.json's
+// settings (no odometry). Reads the rawlog as above.
 std::vector<std::string> default_rawlog_settings(const RawlogFiles& files);
 
 // A planar log's settings for the keys the scenario does not give, each recorded in `record`
