@@ -327,7 +327,8 @@ TEST(RawlogBounds, ClassesOutsideTheAcceptedListAreNamed) {
   const std::string bytes(reinterpret_cast<const char*>(memory.getRawBufferData()), memory.getTotalBytesCount());
   const std::string e = error_reading_bytes(bytes);
   EXPECT_NE(e.find("m.rawlog:1: not an MRPT rawlog (class mrpt::poses::CPose2D is not accepted here (accepted: "
-                   "CActionCollection, CSensoryFrame, CObservationBearingRange, CObservationOdometry))"),
+                   "CActionCollection, CSensoryFrame, CObservationBearingRange, CObservation2DRangeScan, "
+                   "CObservationOdometry))"),
             std::string::npos)
       << e;
 }

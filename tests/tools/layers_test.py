@@ -21,7 +21,7 @@ from pathlib import Path
 
 # libslam: relslam/<folder>/..., ranked by folder.
 # relax (the Ceres solve of the Relative Point relaxation, issue 19) sits on point.
-LIBSLAM = {"core": 0, "spatial": 1, "point": 2, "plane": 2, "em": 2, "relax": 3}
+LIBSLAM = {"core": 0, "spatial": 1, "point": 2, "plane": 2, "scan": 2, "em": 2, "relax": 3}
 # sim: one concept per file, ranked by file stem (src/ and include/relslam/sim/ alike).
 SIM = {
     "random": 0, "checked": 0, "centerline": 0, "frustum": 0, "viewing_frustum": 0, "planar_world": 0,

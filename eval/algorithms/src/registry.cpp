@@ -45,7 +45,9 @@ const std::vector<PlaneAlgorithmEntry>& plane_algorithm_registry() {
   static const std::vector<PlaneAlgorithmEntry> entries = {
       {"relative_plane",
        "Relative Plane: relative maps of wall groups, no odometry, pose from scratch each frame (thesis 4)",
-       [](const PlaneAlgorithmContext& c) { return make_relative_plane(c.scenario.relative_plane, c.world_T_start); }},
+       [](const PlaneAlgorithmContext& c) {
+         return make_relative_plane(c.scenario.relative_plane, c.scenario.motion_prediction, c.world_T_start);
+       }},
       {"icp_slam",
        "MRPT's ICP-SLAM (CMetricMapBuilderICP) on laser scans, options icp_slam.* as its icp-slam_demo_classic.ini: "
        "the scan-matching baseline; no planes",

@@ -7,6 +7,7 @@
 #include "relative_plane.hpp"
 
 #include "key_point_pair_diagnostic.hpp"
+#include "pose_prediction.hpp"
 #include "relslam/eval/algorithms/columns.hpp"
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
@@ -100,12 +101,23 @@ std::string joined(const std::vector<int>& ids) {
 
 class RelativePlane final : public PlaneAlgorithm {
  public:
-  RelativePlane(const plane::RelativePlaneOptions& options, const PlanarPose& world_T_start)
-      : slam_(options, world_T_start) {}
+  RelativePlane(const plane::RelativePlaneOptions& options, const MotionPredictionOptions& prediction,
+                const PlanarPose& world_T_start)
+      : slam_(options, world_T_start) {
+    if (prediction.enabled()) prediction_.emplace(prediction, world_T_start);
+  }
 
   const std::string& name() const override { return name_; }
 
-  void step(const PlaneFrame& frame) override { last_ = slam_.step(frame); }
+  void step(const PlaneFrame& frame) override {
+    if (!prediction_) {
+      last_ = slam_.step(frame);
+      pose_ = last_.pose_valid ? std::optional<PlanarPose>(last_.world_T_robot) : std::nullopt;
+      return;
+    }
+    last_ = slam_.step(prediction_->moved(frame));
+    pose_ = prediction_->robot_pose(last_.pose_valid ? std::optional<PlanarPose>(last_.world_T_robot) : std::nullopt);
+  }
 
   void read_out() override {
     totals_.hints += last_.roll_back.hints;
@@ -119,7 +131,7 @@ class RelativePlane final : public PlaneAlgorithm {
   }
 
   std::optional<PlanarPose> pose() const override {
-    return last_.pose_valid ? std::optional<PlanarPose>(last_.world_T_robot) : std::nullopt;
+    return pose_;
   }
   const std::vector<int>& assignment() const override { return assignment_; }
   const std::vector<MappedPlane>& map() const override { return map_; }
@@ -234,6 +246,8 @@ class RelativePlane final : public PlaneAlgorithm {
   std::string name_ = "relative_plane";
   RltXPointsS slam_;
   RelativePlaneStep last_;
+  std::optional<PosePrediction> prediction_;  // motion_prediction.*: none for the thesis
+  std::optional<PlanarPose> pose_;            // the robot's, after the prediction is composed back
   plane::RollBackCounts totals_;  // Rules 31–34 over the run (summary.csv)
   std::vector<int> assignment_;
   std::vector<MappedPlane> map_;
@@ -242,8 +256,9 @@ class RelativePlane final : public PlaneAlgorithm {
 }  // namespace
 
 std::unique_ptr<PlaneAlgorithm> make_relative_plane(const plane::RelativePlaneOptions& options,
+                                                    const MotionPredictionOptions& prediction,
                                                     const PlanarPose& world_T_start) {
-  return std::make_unique<RelativePlane>(options, world_T_start);
+  return std::make_unique<RelativePlane>(options, prediction, world_T_start);
 }
 
 }  // namespace relslam::eval

@@ -158,6 +158,8 @@ void check_semantics(const LoadedScenario& loaded) {
   add("ekf6d", check_fields(s.ekf6d));
   add("ekf2d", check_fields(s.ekf2d));
   add("icp_slam", check_fields(s.icp_slam));
+  add("laser", check_fields(s.laser));
+  add("motion_prediction", check_fields(s.motion_prediction));
   add("victoria_park", check_fields(s.victoria_park));
   add("binning_bench", check_fields(s.binning_bench));
   if (errors.empty()) return;

@@ -27,6 +27,22 @@ std::string default_rawlog_algorithms(const RawlogFiles& files) {
   return shape_of(read_rawlog(files.rawlog)).planar ? "relative_point,ekf2d" : "relative_point,ekf6d";
 }
 
+std::vector<std::string> default_rawlog_settings(const RawlogFiles& files) {
+  const Rawlog log = read_rawlog(files.rawlog);
+  // A log of 2-D laser scans only: its walls through Relative Plane, sized as for scenarios/
+  // real-sena.json (docs/laser-scans.md): real steps and flickering walls.
+  if (log.frames.empty())
+    return {"kind=planar",
+            "algorithms=relative_plane",
+            "relative_plane.key_points=false",
+            "relative_plane.min_readings=2",
+            "relative_plane.min_common=2",
+            "relative_plane.local_match.max_offset_change=1.0",
+            "relative_plane.local_match.box_margin=1.0",
+            "relative_plane.rules.two_linking_planes=false"};
+  return {std::string("algorithms=") + (shape_of(log).planar ? "relative_point,ekf2d" : "relative_point,ekf6d")};
+}
+
 LoadedScenario with_rawlog_shape(const LoadedScenario& loaded, const RawlogSource& source, nlohmann::json& record) {
   const RawlogShape& shape = source.shape();
   LoadedScenario adapted = loaded;

@@ -1,6 +1,7 @@
 #include "relslam/eval/experiments/source_registry.hpp"
 
 #include "relslam/eval/experiments/experiment.hpp"
+#include "relslam/eval/experiments/laser_experiment.hpp"
 #include "relslam/eval/experiments/run_skeleton.hpp"
 #include "relslam/eval/sources/planar_simulation_source.hpp"
 #include "relslam/eval/sources/plane_file_source.hpp"
@@ -41,11 +42,21 @@ const std::vector<SourceEntry>& source_registry() {
   static const std::vector<SourceEntry> entries = {
       {"plane_file", "plane observations from a CSV file, with optional true path and walls (relslam run --planes)",
        [](const Scenario&, const RunInputs& in) { return !in.planes.empty(); }, plane_files},
+      {"laser_rawlog", "2-D laser scans from an MRPT rawlog, their walls for the planar half (relslam run --rawlog, kind \"planar\")",
+       [](const Scenario& s, const RunInputs& in) { return !in.rawlog.empty() && s.kind == ScenarioKind::Planar; },
+       [](const LoadedScenario& loaded, const RunInputs& in, const std::filesystem::path& out, bool progress) {
+         return run_on_laser_rawlog(loaded, in.rawlog.string(), "--rawlog", out, progress);
+       }},
       {"rawlog", "range-bearing observations from an MRPT rawlog, with optional truth (relslam run --rawlog)",
        [](const Scenario&, const RunInputs& in) { return !in.rawlog.empty(); },
        [](const LoadedScenario& loaded, const RunInputs& in, const std::filesystem::path& out, bool progress) {
          return run_on_rawlog(loaded, RawlogFiles{in.rawlog, given(in.truth_path), given(in.truth_landmarks)}, out,
                               progress);
+       }},
+      {"laser_scenario", "the 2-D laser log the planar scenario names (laser.rawlog)",
+       [](const Scenario& s, const RunInputs&) { return s.kind == ScenarioKind::Planar && !s.laser.rawlog.empty(); },
+       [](const LoadedScenario& loaded, const RunInputs&, const std::filesystem::path& out, bool progress) {
+         return run_on_laser_rawlog(loaded, loaded.scenario.laser.rawlog, "laser.rawlog", out, progress);
        }},
       {"planar_simulation", "the planar world of walls, seen by the plane or point sensor (kind \"planar\")",
        [](const Scenario& s, const RunInputs&) { return s.kind == ScenarioKind::Planar; },

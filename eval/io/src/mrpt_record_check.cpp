@@ -20,6 +20,7 @@ enum class Class {
   SensoryFrame,
   ActionCollection,
   BearingRange,
+  RangeScan2D,
   Odometry,
   RobotMovement2D,
   RobotMovement3D,
@@ -40,6 +41,7 @@ constexpr std::array kClasses = {
     ClassInfo{Class::SensoryFrame, "CSensoryFrame", "mrpt::obs::"},
     ClassInfo{Class::ActionCollection, "CActionCollection", "mrpt::obs::"},
     ClassInfo{Class::BearingRange, "CObservationBearingRange", "mrpt::obs::"},
+    ClassInfo{Class::RangeScan2D, "CObservation2DRangeScan", "mrpt::obs::"},
     ClassInfo{Class::Odometry, "CObservationOdometry", "mrpt::obs::"},
     ClassInfo{Class::RobotMovement2D, "CActionRobotMovement2D", "mrpt::obs::"},
     ClassInfo{Class::RobotMovement3D, "CActionRobotMovement3D", "mrpt::obs::"},
@@ -61,8 +63,8 @@ std::string names_of(std::initializer_list<Class> classes) {
 }
 
 constexpr std::initializer_list<Class> kTopLevel = {Class::ActionCollection, Class::SensoryFrame, Class::BearingRange,
-                                                    Class::Odometry};
-constexpr std::initializer_list<Class> kInFrame = {Class::BearingRange, Class::Odometry};
+                                                    Class::RangeScan2D, Class::Odometry};
+constexpr std::initializer_list<Class> kInFrame = {Class::BearingRange, Class::RangeScan2D, Class::Odometry};
 constexpr std::initializer_list<Class> kInCollection = {Class::RobotMovement2D, Class::RobotMovement3D};
 
 // The class-name length an object header's first byte gives; throws when it is no MRPT header.
@@ -145,6 +147,9 @@ class Walker {
         if (v >= 1) string(path + ".sensorLabel");
         return;
       }
+      case Class::RangeScan2D:
+        range_scan_2d(v, path);
+        return;
       case Class::Odometry: {
         if (v > 2) unsupported(path, v);
         object(path + ".odometry", {Class::Pose2D});
@@ -187,12 +192,20 @@ class Walker {
         } else {
           object(path + ".poseChange", {Class::PosePdfGaussian});
         }
-        const bool velocities = boolean(path + ".hasVelocities");
+        // Before version 7 both flags are followed by their fields whatever they say, and
+        // MRPT of that time wrote them uninitialised (localization_demo.rawlog holds 90 and 8,
+        // and MRPT reads the file): normalised to 0 or 1 for MRPT's reader, which ignores them.
+        const bool velocities = v < 7 ? legacy_flag(path + ".hasVelocities") : boolean(path + ".hasVelocities");
         if (v < 7)
           skip(8, path, "velocities");
         else if (velocities)
           skip(24, path, "velocityLocal");
-        if (boolean(path + ".hasEncodersInfo") || v < 7) skip(8, path, "encoder ticks");
+        if (v < 7) {
+          legacy_flag(path + ".hasEncodersInfo");
+          skip(8, path, "encoder ticks");
+        } else if (boolean(path + ".hasEncodersInfo")) {
+          skip(8, path, "encoder ticks");
+        }
         if (v >= 6) skip(8, path, "timestamp");
         return;
       }
@@ -283,6 +296,37 @@ class Walker {
     const std::uint8_t b = pod<std::uint8_t>(field, "flag");
     if (b > 1) throw RecordProblem(field, "a flag must be 0 or 1, got " + std::to_string(b));
     return b == 1;
+  }
+
+  // A flag whose value the reader ignores: any byte, rewritten in the record as 0 or 1 so that
+  // MRPT never reads another value into a bool.
+  bool legacy_flag(const std::string& field) {
+    const std::uint8_t b = pod<std::uint8_t>(field, "flag");
+    out_.back() = b != 0 ? 1 : 0;
+    return b != 0;
+  }
+
+  // CObservation2DRangeScan versions 6 and 7 (MRPT 1.x and 2.x; earlier ones carry a float
+  // matrix object MRPT 2 no longer knows): aperture, rightToLeft, maxRange, sensorPose, the
+  // ranges and their validity, stdError, timestamp, beamAperture, sensorLabel, deltaPitch and
+  // from version 7 the intensities.
+  void range_scan_2d(unsigned v, const std::string& path) {
+    if (v < 6 || v > 7) unsupported(path, v);
+    skip(4, path, "aperture");
+    boolean(path + ".rightToLeft");
+    skip(4, path, "maxRange");
+    object(path + ".sensorPose", {Class::Pose3D});
+    const std::uint32_t n = count(path + ".scan", UINT32_MAX, 5);
+    skip(4 * std::size_t{n}, path, "ranges");
+    skip(n, path, "validRange");
+    skip(4 + 8 + 4, path, "stdError, timestamp, beamAperture");
+    string(path + ".sensorLabel");
+    skip(8, path, "deltaPitch");
+    if (v >= 7 && boolean(path + ".hasIntensity")) {
+      if (std::size_t{n} * 4 > kMaxRecordBytes - std::min(out_.size(), kMaxRecordBytes))
+        throw RecordProblem(path + ".intensity", "the intensities would exceed what a record may hold");
+      skip(4 * std::size_t{n}, path, "intensity");
+    }
   }
 
   // An element count; each element takes at least `element_bytes` of input, so the count must

@@ -6,6 +6,7 @@
 #include "relslam/eval/io/range_bearing.hpp"
 
 #include "mrpt_read_helpers.hpp"
+#include "laser_scan_record.hpp"
 #include "mrpt_record_check.hpp"
 #include "rawlog_record_stream.hpp"
 
@@ -15,11 +16,13 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CActionRobotMovement3D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/poses/CPose3DQuat.h>
+#include <mrpt/system/os.h>
 
 #include <mrpt/serialization/CArchive.h>
 #include <Eigen/Geometry>
@@ -177,6 +180,22 @@ RawlogFrame frame_of(const CObservationBearingRange& obs, int index, const std::
   return frame;
 }
 
+// Odometry in MRPT's robot axes as a planar increment (x, y, yaw -> x, z, heading), for scans.
+PlanarPose planar_odometry(const Rigid3& m) {
+  return PlanarPose::from(m.translation.x(), m.translation.y(), std::atan2(m.rotation(1, 0), m.rotation(0, 0)));
+}
+
+// A laser scan read from `record`, paired with the odometry waiting for it.
+void add_scan(Rawlog& log, const mrpt::obs::CObservation2DRangeScan& obs, const std::optional<Rigid3>& odometry,
+              const std::string& file, int record) {
+  RawlogScan scan;
+  scan.index = static_cast<int>(log.scans.size());
+  const LaserScanLimits limits{kMaxSensorRange_m, kRangeTolerance, kMaxSensorOffset_m, kMaxScanTilt_rad};
+  scan.scan = laser_scan_of(obs, limits, file, record);
+  if (odometry) scan.odometry = planar_odometry(*odometry);
+  log.scans.push_back(std::move(scan));
+}
+
 // A CObservationOdometry reading, and the increment since the previous one that becomes the
 // next frame's odometry; both within the bounds rawlog.hpp states.
 std::optional<Rigid3> odometry_increment(const mrpt::obs::CObservationOdometry& odo,
@@ -247,11 +266,13 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t 
       if (!any_action && !any_frame) log.sensory_frame_first = true;
       any_frame = true;
       auto obs = sf->getObservationByClass<CObservationBearingRange>();
+      auto scan = sf->getObservationByClass<mrpt::obs::CObservation2DRangeScan>();
+      log.skipped_observations += static_cast<int>(sf->size()) - (obs ? 1 : 0) - (scan ? 1 : 0);
+      if (scan) add_scan(log, *scan, pending_odometry, name, record);
       if (!obs) {
-        log.skipped_observations += static_cast<int>(sf->size());
+        if (scan) pending_odometry.reset();
         continue;
       }
-      log.skipped_observations += static_cast<int>(sf->size()) - 1;
       if (log.frames.empty()) log.sensor = sensor_of(*obs, name, record);
       RawlogFrame frame = frame_of(*obs, static_cast<int>(log.frames.size()), name, record);
       frame.odometry = pending_odometry;
@@ -264,6 +285,10 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t 
       frame.odometry = pending_odometry;
       pending_odometry.reset();
       log.frames.push_back(std::move(frame));
+    } else if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(object)) {
+      log.format = Rawlog::Format::ObservationsOnly;
+      add_scan(log, *scan, pending_odometry, name, record);
+      pending_odometry.reset();
     } else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(object)) {
       log.format = Rawlog::Format::ObservationsOnly;
       // Absolute odometry readings: the increment since the previous reading is the motion.
@@ -275,10 +300,10 @@ Rawlog read_records(mrpt::io::CStream& in, const std::string& name, std::size_t 
                              object->GetRuntimeClass()->className);
     }
   }
-  if (log.frames.empty())
+  if (log.frames.empty() && log.scans.empty())
     throw InputError(name, 0, "",
-                     "no CObservationBearingRange in " + std::to_string(log.records) +
-                         " records: nothing for a landmark SLAM algorithm to read");
+                     "no CObservationBearingRange or CObservation2DRangeScan in " + std::to_string(log.records) +
+                         " records: nothing for a SLAM algorithm to read");
   if (any_action && any_frame) log.format = Rawlog::Format::ActionsSensoryFrames;
   return log;
 }
@@ -293,6 +318,20 @@ Rawlog read_rawlog(const std::filesystem::path& path) {
   mrpt::io::CFileGZInputStream in;
   const std::size_t budget = rawlog_decoded_budget(open_rawlog(path, in));
   return read_records(in, path.string(), budget);
+}
+
+Rawlog read_laser_rawlog(const std::filesystem::path& path) {
+  Rawlog log = read_rawlog(path);
+  if (log.scans.empty())
+    throw InputError(path.string(), 0, "",
+                     "no CObservation2DRangeScan in " + std::to_string(log.records) +
+                         " records: not a 2-D laser log (" + std::to_string(log.frames.size()) +
+                         " bearing-range frames)");
+  return log;
+}
+
+std::filesystem::path mrpt_datasets_folder() {
+  return std::filesystem::path(mrpt::system::find_mrpt_shared_dir()) / "datasets";
 }
 
 Rawlog read_rawlog_bytes(std::string_view bytes, const std::string& name) {

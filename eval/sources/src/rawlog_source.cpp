@@ -79,6 +79,10 @@ RangeBearingSensor robot_frame_sensor(const Rawlog& log) {
 
 RawlogShape shape_of(const Rawlog& log) {
   RawlogShape shape;
+  if (log.frames.empty()) {
+    shape.why = "no bearing-range frames (a 2-D laser log)";
+    return shape;
+  }
   shape.frames = static_cast<int>(log.frames.size());
   for (const RawlogFrame& f : log.frames) shape.frames_with_odometry += f.odometry.has_value();
   const double sensor_z = log.frames.front().robot_T_sensor.translation.z();
@@ -96,6 +100,10 @@ RawlogShape shape_of(const Rawlog& log) {
 
 RawlogSource::RawlogSource(const RawlogFiles& files)
     : files_(files), log_(read_rawlog(files.rawlog)), shape_(shape_of(log_)), sensor_(robot_frame_sensor(log_)) {
+  if (log_.frames.empty())
+    throw InputError(files.rawlog.string(), 0, "",
+                     "no CObservationBearingRange: a log of 2-D laser scans feeds the planar half (a scenario of "
+                     "kind \"planar\", e.g. scenarios/real-sena.json)");
   const int count = static_cast<int>(log_.frames.size());
   end_ = files_.end_frame < 0 ? count : std::min(files_.end_frame, count);
   if (files_.first_frame < 0 || files_.first_frame >= end_)

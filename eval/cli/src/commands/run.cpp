@@ -73,7 +73,7 @@ int run_run(const RunArgs& args, const std::vector<std::string>& command_line) {
   std::vector<std::string> set = args.set;
   if (args.scenario.empty()) {
     const std::vector<std::string> defaults =
-        args.planes.empty() ? std::vector<std::string>{"algorithms=" + default_rawlog_algorithms(rawlog_files(args))}
+        args.planes.empty() ? default_rawlog_settings(rawlog_files(args))
                             : std::vector<std::string>{"kind=planar", "algorithms=relative_plane"};
     set.insert(set.begin(), defaults.begin(), defaults.end());
   }

@@ -58,7 +58,7 @@ struct PlaneFrame {
   std::shared_ptr<const LaserScan> scan;
   // The robot's motion since the previous frame by its odometry (previous_T_current), where
   // the recording has one; no algorithm of the thesis reads it.
-  std::optional<PlanarPose> odometry;
+  std::optional<PlanarPose> odometry = std::nullopt;
 };
 
 // What the simulator knows of one observed plane, for scoring only.

@@ -8,6 +8,7 @@
 #include "relslam/eval/config/icp_slam_options.hpp"
 #include "relslam/eval/config/ekf6d_options.hpp"
 #include "relslam/eval/config/extraction_options.hpp"
+#include "relslam/eval/config/laser_options.hpp"
 #include "relslam/eval/config/planar_options.hpp"
 #include "relslam/eval/config/victoria_park_options.hpp"
 #include "relslam/plane/options.hpp"
@@ -117,6 +118,8 @@ struct Scenario {
   point::PointSlamOptions relative_point = point::preset_options(point::Preset::Adaptive);
   plane::RelativePlaneOptions relative_plane;  // the Relative Plane algorithm's (kind planar)
   ExtractionOptions extraction;  // its plane extractor (planar.sensor points), keys relative_plane.*
+  LaserOptions laser;                        // recorded 2-D laser scans (kind planar)
+  MotionPredictionOptions motion_prediction;  // Relative Plane's predicted poses [C: off]
   Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
   Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
   IcpSlamOptions icp_slam;                 // MRPT's ICP-SLAM on laser scans (kind planar)

@@ -10,12 +10,18 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace relslam::eval {
 
 // The `algorithms` of a rawlog run without a scenario: "relative_point,ekf2d" for a planar log,
 // "relative_point,ekf6d" otherwise. Reads the rawlog (InputError as read_rawlog's), not the truth.
 std::string default_rawlog_algorithms(const RawlogFiles& files);
+
+// The settings of a rawlog run without a scenario: {"algorithms=" + the above}, or for a log of
+// 2-D laser scans only a planar run of relative_plane on its walls with scenarios/real-sena.json's
+// settings (no odometry). Reads the rawlog as above.
+std::vector<std::string> default_rawlog_settings(const RawlogFiles& files);
 
 // A planar log's settings for the keys the scenario does not give, each recorded in `record`
 // (key -> value and why, for manifest.json's "planar_defaults"):

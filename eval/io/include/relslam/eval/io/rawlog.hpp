@@ -2,7 +2,9 @@
 // MRPT rawlogs: the per-iteration observation stream as MRPT's tools (rawlog-edit, kf-slam,
 // RawLogViewer) read it. This header hides MRPT: callers see only our types.
 
+#include "relslam/core/laser_scan.hpp"
 #include "relslam/core/observation.hpp"
+#include "relslam/core/planar_pose.hpp"
 #include "relslam/core/rigid.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
 
@@ -36,6 +38,15 @@ struct RawlogFrame {
   std::optional<Rigid3> odometry;
 };
 
+// One 2-D laser scan (CObservation2DRangeScan) in the planar half's frame (laser_scan.hpp:
+// MRPT's x, y, yaw become x, z, heading), with the odometry since the previous scan paired as
+// for RawlogFrame.
+struct RawlogScan {
+  int index = 0;  // 0-based among the scans, in file order
+  LaserScan scan;
+  std::optional<PlanarPose> odometry;
+};
+
 // An odometry action's own uncertainty (its Gaussian's diagonal): the largest translation and
 // the largest rotation standard deviation.
 struct OdometryStd {
@@ -54,6 +65,7 @@ struct Rawlog {
   RangeBearingSensor sensor;     // as the first bearing-range observation describes it
   std::optional<OdometryStd> odometry_std;  // as the first odometry action with a covariance states it
   std::vector<RawlogFrame> frames;
+  std::vector<RawlogScan> scans;  // 2-D laser scans, where the log has them
 };
 
 // The reader's limits besides the per-record bounds of its framing check (16 MiB a record,
@@ -87,14 +99,30 @@ inline constexpr double kMaxSensorOffset_m = 1e3;
 inline constexpr double kMaxOdometryStep_m = 1e4;
 inline constexpr double kMaxOdometryReading_m = 1e9;
 
+// A 2-D laser scan (CObservation2DRangeScan versions 6 and 7) must likewise make sense:
+// aperture in (0, 2 pi]; maxRange in (0, kMaxSensorRange_m]; at least 2 rays; every valid
+// range finite and in [0, (1 + kRangeTolerance) maxRange] (invalid ones are not read); the
+// sensor's pose on the robot within +-kMaxSensorOffset_m and level: pitch and roll within
+// kMaxScanTilt_rad, since the scan is taken as a horizontal slice of the walls.
+inline constexpr double kMaxScanTilt_rad = 0.1;
+
 // Reads plain or gzip files of either MRPT format. Throws InputError (file, record number,
 // field, problem) for a missing, foreign, truncated or empty file, a class we do not accept,
 // a count beyond what a record may hold, a file decoding to more than its budget above, a
 // non-finite value or one outside the ranges above. Accepted at the top level:
-// CActionCollection (of CActionRobotMovement2D/3D), CSensoryFrame (of CObservationBearingRange
-// and CObservationOdometry), CObservationBearingRange, CObservationOdometry; README.md lists
-// the versions.
+// CActionCollection (of CActionRobotMovement2D/3D), CSensoryFrame (of CObservationBearingRange,
+// CObservation2DRangeScan and CObservationOdometry), CObservationBearingRange,
+// CObservation2DRangeScan, CObservationOdometry; README.md lists the versions. A log needs
+// bearing-range frames or laser scans (read_laser_rawlog below requires scans).
 Rawlog read_rawlog(const std::filesystem::path& path);
+
+// read_rawlog for a log of 2-D laser scans: InputError as read_rawlog's, and when the log
+// holds no CObservation2DRangeScan.
+Rawlog read_laser_rawlog(const std::filesystem::path& path);
+
+// Where MRPT's installed data sets are (the Debian package mrpt-common puts them in
+// /usr/share/mrpt/datasets); the folder may not exist.
+std::filesystem::path mrpt_datasets_folder();
 
 // The same reader over a plain (not gzip) rawlog already in memory, `name` standing for the
 // file in messages: what the fuzz target calls.
