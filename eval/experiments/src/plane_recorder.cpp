@@ -42,7 +42,9 @@ PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const Pl
       dir_(created(dir)),
       iterations_(dir_ / "iterations.csv",
                   with_own(with_own(with_own(score_columns(), algorithm_->iteration_columns()),
-                                    {"kp_checked", "kp_wrong"}),
+                                    algorithm_->scores_wrong_valid()
+                                        ? std::vector<std::string>{"kp_checked", "kp_wrong", "wrong_valid"}
+                                        : std::vector<std::string>{"kp_checked", "kp_wrong"}),
                            source.frame_columns())),
       trajectory_(dir_ / "trajectory.tum") {
   if (algorithm_->claims_key_points())
@@ -113,6 +115,11 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   key_points_wrong_ += wrong;
   wrong_key_point_iterations_ += wrong > 0;
   fields_.insert(fields_.end(), {CsvField{checked}, CsvField{wrong}});
+  if (algorithm_->scores_wrong_valid()) {  // a valid pose off the truth by more than the bound
+    const bool wrong_valid = pose_error && pose_error->position > kWrongValidBound;
+    wrong_valid_ += wrong_valid;
+    fields_.push_back(CsvField{static_cast<long long>(wrong_valid)});
+  }
   source_.frame_fields(fields_);
   iterations_.row_fields(fields_);
 }
@@ -201,6 +208,10 @@ SummaryRow PlaneRecorder::finish() {
   row.planar = scores;
   row.own_columns = algorithm_->summary_columns();
   algorithm_->summary_fields(row.own_fields);
+  if (algorithm_->scores_wrong_valid()) {
+    row.own_columns.push_back("wrong_valid");
+    row.own_fields.push_back(CsvField{wrong_valid_});
+  }
   return row;
 }
 

@@ -104,7 +104,9 @@ struct Scenario {
   // The Relative Point algorithm's constants; a scenario's preset is adaptive unless it says
   // "thesis" (the Chapter 6 scenarios do), the library's is the thesis.
   point::PointSlamOptions relative_point = point::preset_options(point::Preset::Adaptive);
-  plane::RelativePlaneOptions relative_plane;  // the Relative Plane algorithm's (kind planar)
+  // The Relative Plane algorithm's (kind planar): adaptive unless the scenario says "thesis"
+  // (the Chapter 4 scenarios do), as relative_point; the library's is the thesis.
+  plane::RelativePlaneOptions relative_plane = plane::preset_options(plane::Preset::Adaptive);
   ExtractionOptions extraction;  // its plane extractor (planar.sensor points), keys relative_plane.*
   Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
   Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
