@@ -32,11 +32,13 @@ std::optional<IntegrityResult> recovered_pose(const RltXPointsState& s, const Rl
   std::vector<PlaneObject> map;
   for (const MapPlane& m : s.builder_.map())
     if (m.mapped) map.push_back(m.plane);
-  std::optional<NearPose> near;
-  if (s.last_checked_pose_.valid)
-    near = NearPose{s.last_checked_pose_.world_T_robot,
-                    options.max_step * (s.iteration_ - s.last_checked_iteration_) + options.offset_bound};
-  return relocalize(in.stamped_, map, near, options);
+  // Only within the robot's reach of the last checked pose, and no further than it can go in
+  // continuity_window iterations: along a corridor of equal pieces a wider search finds the
+  // wrong piece as readily as the right one.
+  if (!s.last_checked_pose_.valid) return std::nullopt;
+  const int gap = std::min(s.iteration_ - s.last_checked_iteration_, options.continuity_window);
+  return relocalize(in.stamped_, map, NearPose{s.last_checked_pose_.world_T_robot, options.max_step * gap + options.offset_bound},
+                    options);
 }
 
 }  // namespace

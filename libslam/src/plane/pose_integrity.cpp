@@ -34,8 +34,12 @@ double residual(const LinePair& pair, const PlanarPose& world_T_robot, const Int
   const double d = pair.mapped.offset();
   const double along = std::abs(wrap_angle(world.angle() - pair.mapped.angle())) / o.angle_bound_rad;
   const double across = std::max(std::abs(n.dot(world.a) + d), std::abs(n.dot(world.b) + d)) / o.offset_bound;
+  // Along the line: a plane seen no longer than its map plane must lie within it (so a wall
+  // piece cannot stand in for its neighbour along a corridor); a longer one, seen beyond a map
+  // plane that is only a piece of its wall, must overlap it. Each widened by overlap_margin.
   const double sa = u.dot(world.a - pair.mapped.a), sb = u.dot(world.b - pair.mapped.a);
-  const double gap = std::max(std::min(sa, sb) - pair.mapped.length(), -std::max(sa, sb)) - o.overlap_margin;
+  const double lo = std::min(sa, sb), hi = std::max(sa, sb), length = pair.mapped.length();
+  const double gap = (hi - lo <= length ? std::max(-lo, hi - length) : std::max(lo - length, -hi)) - o.overlap_margin;
   return std::max({along, across, gap > 0 ? 1.0 + gap : 0.0});
 }
 
