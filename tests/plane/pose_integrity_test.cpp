@@ -68,13 +68,19 @@ TEST(PoseIntegrity, APlantedWrongRegistrationIsMarkedInvalid) {
   pairs[1].mapped = map[3];
   EXPECT_FALSE(check_pose(pairs, IntegrityOptions{}).valid);
   // The inner wall registered to the outer wall it is parallel to: the two lines fit a pose 5
-  // off along wall 1, which every plane in view agrees with — only the robot's motion since the
-  // last valid pose (an iteration ago, at the truth) tells it is wrong.
+  // off along wall 1, and wall 1, seen whole, no longer lies within its map plane.
   pairs = pairs_from(map, {1, 4}, truth);
   pairs[1].mapped = map[0];
-  const IntegrityResult r = check_pose(pairs, IntegrityOptions{}, std::pair{truth, 1});
+  const IntegrityResult r = check_pose(pairs, IntegrityOptions{});
   EXPECT_FALSE(r.valid);
-  EXPECT_EQ(r.reason, PoseReason::Jump);
+  EXPECT_EQ(r.reason, PoseReason::Disagree);
+  // Where every plane in view still fits (wall 1 seen only as a piece, 2 long, near its middle),
+  // the robot's motion since the last valid pose (an iteration ago, at the truth) tells.
+  pairs[0].seen = seen_from(PlaneObject{map[1].a + 5.5 * map[1].tangent(), map[1].a + 7.5 * map[1].tangent()}, truth);
+  EXPECT_TRUE(check_pose(pairs, IntegrityOptions{}).valid);
+  const IntegrityResult jump = check_pose(pairs, IntegrityOptions{}, std::pair{truth, 1});
+  EXPECT_FALSE(jump.valid);
+  EXPECT_EQ(jump.reason, PoseReason::Jump);
   // The inner wall (4 long) registered to a map plane 6 further along its line: the lines fit,
   // but the two do not overlap, so the check refuses it without any history.
   pairs = pairs_from(map, {1, 4}, truth);
