@@ -62,6 +62,8 @@ bool constrained(const sim::PlanarMap& map, const PlaneTruthFrame& truth) {
 IntegrityRun run(const sim::PlanarMap& map, Preset preset) {
   const sim::PlanarSimulator simulator(map, 1);
   RelativePlaneOptions options = plane::preset_options(preset);
+  // As a scenario has it (relocalisation off unless given: it can take the neighbouring piece).
+  options.integrity.recovery = false;
   plane::RltXPointsS slam(options, simulator.path().world_T_robot(0));
   IntegrityRun out;
   for (int k = 0; k < simulator.iterations(); ++k) {
