@@ -55,7 +55,9 @@ TEST(PlanarMapFile, EveryShippedMapLoads) {
   const std::pair<const char*, std::size_t> maps[] = {{"a_four_planes.json", 4},   {"b_hallway_unit.json", 16},
                                                       {"c_hallway_back.json", 19}, {"d_office_loop.json", 36},
                                                       {"e_motion_room.json", 10},  {"e1_first_corner.json", 10},
-                                                      {"e01_two_walls.json", 2},   {"d_office_loop_e09.json", 36}};
+                                                      {"e01_two_walls.json", 2},   {"d_office_loop_e09.json", 36},
+                                                      {"i_room_30_120.json", 5},  {"i_corridor_l17.json", 18},
+                                                      {"i_corridor_l17_mirrored.json", 19}, {"i_hexagon.json", 6}};
   std::size_t files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::source_path("scenarios/maps")))
     files += entry.path().extension() == ".json";

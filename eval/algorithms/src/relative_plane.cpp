@@ -11,6 +11,8 @@
 #include "relslam/eval/algorithms/columns.hpp"
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <numbers>
 
 namespace relslam::eval {
@@ -78,6 +80,14 @@ const Columns<IterationRow> kIterationColumns = {
     {"mm_s_max", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.s_max(); }); }},
 };
 
+// The adaptive preset's: why the pose is (in)valid this iteration (pose_integrity.hpp). Not a
+// column under the thesis preset, whose runs keep their files.
+const Columns<IterationRow> kIntegrityColumns = {
+    {"pose_reason", [](const IterationRow& r) { return csv_field(std::string(to_string(r.step.pose_reason))); }},
+};
+
+bool adaptive(const RltXPointsS& slam) { return slam.options().preset == plane::Preset::Adaptive; }
+
 // One RltPlane as planes.csv sees it, after the recorder's scored columns.
 struct PlaneRow {
   const plane::RltPlane& plane;
@@ -142,10 +152,16 @@ class RelativePlane final : public PlaneAlgorithm {
     return out;
   }
 
-  std::vector<std::string> iteration_columns() const override { return column_names(kIterationColumns); }
+  std::vector<std::string> iteration_columns() const override {
+    std::vector<std::string> names = column_names(kIterationColumns);
+    if (adaptive(slam_)) std::ranges::copy(column_names(kIntegrityColumns), std::back_inserter(names));
+    return names;
+  }
   void iteration_fields(std::vector<CsvField>& out) const override {
     append_fields(kIterationColumns, IterationRow{last_, slam_}, out);
+    if (adaptive(slam_)) append_fields(kIntegrityColumns, IterationRow{last_, slam_}, out);
   }
+  bool scores_wrong_valid() const override { return adaptive(slam_); }
   std::vector<std::string> plane_columns() const override { return column_names(kPlaneColumns); }
   void plane_fields(int id, std::vector<CsvField>& out) const override {
     const auto i = static_cast<std::size_t>(id);

@@ -193,6 +193,8 @@ LoadedScenario build(const JsonDocument& doc, const std::vector<Override>& overr
   if (loaded.scenario.kind == ScenarioKind::Simulation)  // a rawlog run re-derives them from its sensor
     derive_point_bounds(loaded.scenario, simulated_noise(loaded.scenario.sim),
                         [&](const std::string& key) { return loaded.origins.contains(key); });
+  if (loaded.scenario.kind == ScenarioKind::Planar)
+    derive_plane_bounds(loaded.scenario, [&](const std::string& key) { return loaded.origins.contains(key); });
   check_semantics(loaded);
   check_map_source(loaded);
   return loaded;

@@ -57,7 +57,9 @@ PlaneRecorder::PlaneRecorder(std::unique_ptr<PlaneAlgorithm> algorithm, const st
       dir_(created(dir)),
       iterations_(dir_ / "iterations.csv",
                   with_own(with_own(with_own(column_names(plane_iteration_columns()), algorithm_->iteration_columns()),
-                                    {"kp_checked", "kp_wrong"}),
+                                    algorithm_->scores_wrong_valid()
+                                        ? std::vector<std::string>{"kp_checked", "kp_wrong", "wrong_valid"}
+                                        : std::vector<std::string>{"kp_checked", "kp_wrong"}),
                            source_columns)),
       trajectory_(dir_ / "trajectory.tum") {
   if (algorithm_->claims_key_points())
@@ -122,6 +124,11 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   key_points_wrong_ += wrong;
   wrong_key_point_iterations_ += wrong > 0;
   fields_.insert(fields_.end(), {CsvField{checked}, CsvField{wrong}});
+  if (algorithm_->scores_wrong_valid()) {  // a valid pose off the truth by more than the bound
+    const bool wrong_valid = pose_error && pose_error->position > kWrongValidBound;
+    wrong_valid_ += wrong_valid;
+    fields_.push_back(CsvField{static_cast<long long>(wrong_valid)});
+  }
   fields_.insert(fields_.end(), measured.begin(), measured.end());
   iterations_.row_fields(fields_);
 }
@@ -210,6 +217,10 @@ SummaryRow PlaneRecorder::finish() {
   row.planar = scores;
   row.own_columns = algorithm_->summary_columns();
   algorithm_->summary_fields(row.own_fields);
+  if (algorithm_->scores_wrong_valid()) {
+    row.own_columns.push_back("wrong_valid");
+    row.own_fields.push_back(CsvField{wrong_valid_});
+  }
   return row;
 }
 

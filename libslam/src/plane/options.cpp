@@ -24,6 +24,8 @@ std::string_view to_string(IntervalMeasure measure) {
   return measure == IntervalMeasure::Shared ? "shared" : "piece";
 }
 
+std::string_view to_string(Preset preset) { return preset == Preset::Thesis ? "thesis" : "adaptive"; }
+
 std::vector<OptionIssue> check(const RelativePlaneOptions& o) { return check_fields(o); }
 
 }  // namespace relslam::plane

@@ -12,6 +12,7 @@
 #include "group_management.hpp"
 #include "motion_model_control.hpp"
 #include "plane_registration.hpp"
+#include "pose_check_control.hpp"
 #include "roll_back_control.hpp"
 
 #include <algorithm>
@@ -65,9 +66,11 @@ RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
     storage_.trim(iteration_, rb.max_depth);
   }
 
-  result.world_T_robot = pose_.world_T_robot;
-  result.pose_valid = pose_.valid;
-  result.pose_planes = pose_.planes_used;
+  const RltPoset& reported = options_.preset == Preset::Adaptive ? checked_pose_ : pose_;
+  result.world_T_robot = reported.world_T_robot;
+  result.pose_valid = reported.valid;
+  result.pose_planes = reported.planes_used;
+  result.pose_reason = reported.reason;
   result.assignment = assignment_;
   result.map = builder_.map();
   result.groups = xpoints_;
@@ -145,6 +148,7 @@ void RltXPointsS::get_poset() {
     const std::optional<PlanarPose> tracked = motion_models_.back().world_T_robot(iteration_);
     pose_ = {tracked.value_or(PlanarPose{}), tracked.has_value(), tracked ? 1 : 0};
   }
+  if (options_.preset == Preset::Adaptive) check_poset(*this, *this, options_.integrity);
   if (pose_.valid) {
     last_valid_pose_ = pose_;
     last_valid_iteration_ = iteration_;

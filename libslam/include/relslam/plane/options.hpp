@@ -8,6 +8,7 @@
 #include "relslam/plane/growth_phase.hpp"
 #include "relslam/plane/key_points.hpp"
 #include "relslam/plane/plane_object.hpp"
+#include "relslam/plane/pose_integrity.hpp"
 
 #include <numbers>
 #include <string_view>
@@ -213,7 +214,23 @@ struct RollBackOptions {
   int force_depth = 10;
 };
 
+// The thesis tuned its rules on its own maps (A-E). Beyond them a pose can rest on planes that
+// do not fix it (all parallel, or a piece whose frustum-cut ends look static) and be wrong while
+// it looks valid; the adaptive preset takes the pose from the planes' lines and checks it
+// (pose_integrity.hpp), and relocalises against the whole map when lost. Like Relative Point's
+// preset: the library's default is the thesis, a scenario's is adaptive unless it says thesis.
+enum class Preset : unsigned char {
+  Thesis,    // GetPoset as the thesis has it (Rule 5): the shipped scenarios of Chapter 4
+  Adaptive,  // the pose from lines with its integrity check, and relocalisation (beyond the thesis)
+};
+constexpr Preset kPresets[] = {Preset::Thesis, Preset::Adaptive};
+std::string_view to_string(Preset preset);  // "thesis", "adaptive"
+
 struct RelativePlaneOptions {
+  // Thesis: the library's default; the scenario layer's is adaptive (relslam keys).
+  Preset preset = Preset::Thesis;
+  // The adaptive preset's pose check and relocalisation.
+  IntegrityOptions integrity;
   // Rule 1 registration bounds [R].
   MatchBounds local_match;
   // Rule 11 bounds, looser: the pose may be a little off [R].
@@ -282,6 +299,13 @@ struct RelativePlaneOptions {
   RollBackOptions rollback;
   RuleSwitches rules;
 };
+
+// The defaults under `preset` (the other constants are the same under both).
+inline RelativePlaneOptions preset_options(Preset preset) {
+  RelativePlaneOptions o;
+  o.preset = preset;
+  return o;
+}
 
 constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Group};
 std::string_view to_string(IntervalMode mode);  // "pair", "group"
@@ -424,8 +448,33 @@ void describe(OptionsOf<GrowthPhaseBounds> auto& g, auto& f) {
   f.field("min_samples", g.min_samples, "growth-phase pieces with fewer iterations are dropped", at_least(1));
 }
 
+// The scenario keys of IntegrityOptions (relative_plane.integrity.*), adaptive preset only.
+void describe(OptionsOf<IntegrityOptions> auto& i, auto& f) {
+  f.degrees("min_angle_deg", i.min_angle_rad, "two planes fix the pose when their directions differ by more, degrees",
+            above(0.0), at_most(90.0));
+  f.field("offset_bound", i.offset_bound,
+          "a plane in view lies on its map plane's line within this, units (default: 0.05 + 6 sigma of the noise)",
+          above(0.0));
+  f.degrees("angle_bound_deg", i.angle_bound_rad, "... and its direction within this, degrees", above(0.0),
+            at_most(45.0));
+  f.field("overlap_margin", i.overlap_margin, "... and overlaps it along the line, each widened by this, units",
+          at_least(0.0));
+  f.field("max_step", i.max_step, "the pose moves at most this per iteration since the last valid one, units",
+          above(0.0));
+  f.degrees("max_turn_deg", i.max_turn_rad, "... and turns at most this, degrees", above(0.0));
+  f.field("continuity_window", i.continuity_window, "... checked while the last valid pose is this recent, iterations",
+          at_least(0));
+  f.field("recovery", i.recovery, "when lost, match the planes in view against the whole map");
+  f.field("recover_after", i.recover_after, "... after this many iterations without a valid pose", at_least(1));
+}
+
 // The scenario keys of RelativePlaneOptions (relative_plane.*), with their checks.
 void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
+  f.choice("preset", o.preset,
+           "thesis: GetPoset as the thesis has it (Chapter 4 scenarios); adaptive: the pose from the planes' lines, "
+           "checked against the map, relocalised when lost (beyond the thesis)",
+           kPresets);
+  f.nested("integrity", o.integrity);
   f.nested("local_match", o.local_match, true);
   f.nested("global_match", o.global_match, false);
   f.field("plane_capacity", o.plane_capacity, "observations kept per RltPlane (thesis 4.4.3.4: 1200)", at_least(1));

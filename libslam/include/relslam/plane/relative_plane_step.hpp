@@ -43,6 +43,8 @@ struct RelativePlaneStep {
   PlanarPose world_T_robot;  // meaningful only when pose_valid
   bool pose_valid = false;
   int pose_planes = 0;                  // observations the pose came from
+  // Adaptive preset: why the pose is (in)valid (pose_integrity.hpp).
+  PoseReason pose_reason = PoseReason::NoPlanes;
   std::span<const PlaneId> assignment;  // the RltPlane of each observation, in input order
   std::span<const MapPlane> map;        // one entry per RltPlane (MapPlane::mapped says if placed)
   std::span<const RltXPoint> groups;

@@ -8,6 +8,7 @@
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/plane_object.hpp"
+#include "relslam/plane/pose_integrity.hpp"
 #include "relslam/plane/rlt_plane.hpp"
 #include "relslam/plane/rlt_xpoint.hpp"
 #include "relslam/plane/rlt_xpoint_link.hpp"
@@ -46,6 +47,9 @@ struct RltPoset {
   PlanarPose world_T_robot;
   bool valid = false;
   int planes_used = 0;  // observations that gave it (Rule 5)
+  // Why it is (in)valid: the adaptive preset's check (pose_integrity.hpp); the thesis's GetPoset
+  // leaves NoPlanes.
+  PoseReason reason = PoseReason::NoPlanes;
 };
 
 // An observation of this iteration and the RltPlane it was registered to.

@@ -36,6 +36,11 @@ struct RltXPointsState {
   RltMapBuilder builder_;
   RltPoset pose_;
   RltPoset last_valid_pose_;  // Rule 11 places observations with it [R, spec §5.9]
+  // Adaptive preset: the pose as reported, checked (pose_integrity.hpp); pose_ stays the one the
+  // algorithm runs on (Rules 11, 26, 27), the checked pose where that is valid.
+  RltPoset checked_pose_;
+  RltPoset last_checked_pose_;      // the last valid one ...
+  int last_checked_iteration_ = 0;  // ... and its iteration
   int last_valid_iteration_ = 0;
   std::vector<RltXMMPoint> motion_models_;
   bool motion_model_active_ = false;  // the last of motion_models_ carries the pose

@@ -42,6 +42,11 @@ struct KeyPointClaim {
   int interval_end = 0;
 };
 
+// A valid pose further than this from the truth is wrong-but-valid, units [C: the thesis's
+// noisy runs stay within 0.25 of the truth (Maps D, E); the wrong poses it is meant to catch
+// are a wall piece off, 1 and more].
+inline constexpr double kWrongValidBound = 0.5;
+
 class PlaneAlgorithm {
  public:
   virtual ~PlaneAlgorithm() = default;
@@ -74,6 +79,9 @@ class PlaneAlgorithm {
   virtual std::vector<KeyPointClaim> key_point_claims() const { return {}; }
   // At the end of the run: any tables of its own structure (groups.csv, links.csv) into dir.
   virtual void write_tables(const std::filesystem::path&) const {}
+  // Whether the recorder counts its wrong-but-valid poses (iterations.csv's wrong_valid, a
+  // summary.csv count): valid iterations whose position error exceeds kWrongValidBound.
+  virtual bool scores_wrong_valid() const { return false; }
   // At the end of the run: its own summary.csv columns (after the scored ones) and their fields.
   virtual std::vector<std::string> summary_columns() const { return {}; }
   virtual void summary_fields(std::vector<CsvField>&) const {}

@@ -116,7 +116,9 @@ struct Scenario {
   // The Relative Point algorithm's constants; a scenario's preset is adaptive unless it says
   // "thesis" (the Chapter 6 scenarios do), the library's is the thesis.
   point::PointSlamOptions relative_point = point::preset_options(point::Preset::Adaptive);
-  plane::RelativePlaneOptions relative_plane;  // the Relative Plane algorithm's (kind planar)
+  // The Relative Plane algorithm's (kind planar): adaptive unless the scenario says "thesis"
+  // (the Chapter 4 scenarios do), as relative_point; the library's is the thesis.
+  plane::RelativePlaneOptions relative_plane = plane::preset_options(plane::Preset::Adaptive);
   ExtractionOptions extraction;  // its plane extractor (planar.sensor points), keys relative_plane.*
   LaserOptions laser;                        // recorded 2-D laser scans (kind planar)
   MotionPredictionOptions motion_prediction;  // Relative Plane's predicted poses [C: off]

@@ -79,6 +79,7 @@ class PlaneRecorder {
   double max_position_error_ = 0;
   long long key_points_checked_ = 0, key_points_wrong_ = 0;
   int wrong_key_point_iterations_ = 0;
+  long long wrong_valid_ = 0;  // valid poses off the truth by more than kWrongValidBound
   std::vector<CsvField> fields_;  // reused row buffer
 };
 

@@ -1,0 +1,81 @@
+// The adaptive preset's pose check (beyond the thesis; pose_integrity.hpp): a pose is valid
+// when the planes it rests on fix it and agree with the map, or when the motion model carries
+// it (its stated case: one plane in view) and the planes in view agree with its track; when lost
+// for integrity.recover_after iterations, the planes in view are matched against the whole map.
+
+#include "pose_check_control.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace relslam::plane {
+namespace {
+
+// The motion model's track (GetPoset's pose while one is active) as the pose, when every mapped
+// plane in view agrees with it.
+IntegrityResult motion_model_pose(const RltXPointsState& s, std::span<const LinePair> pairs,
+                                  const IntegrityOptions& options) {
+  IntegrityResult out;
+  out.reason = PoseReason::Disagree;
+  // Only a track that starts from a checked pose: one anchored on a pose the check refused
+  // (parallel planes, a sliding piece taken as static) carries that pose's error along.
+  if (!s.pose_.valid || s.motion_models_.back().start_iteration() != s.last_checked_iteration_) return out;
+  if (!std::ranges::all_of(pairs, [&](const LinePair& p) { return agrees(p, s.pose_.world_T_robot, options); }))
+    return out;
+  return {s.pose_.world_T_robot, true, PoseReason::MotionModel, 1};
+}
+
+std::optional<IntegrityResult> recovered_pose(const RltXPointsState& s, const RltXPointsScratch& in,
+                                              const IntegrityOptions& options) {
+  std::vector<PlaneObject> map;
+  for (const MapPlane& m : s.builder_.map())
+    if (m.mapped) map.push_back(m.plane);
+  // Only within the robot's reach of the last checked pose, and no further than it can go in
+  // continuity_window iterations: along a corridor of equal pieces a wider search finds the
+  // wrong piece as readily as the right one.
+  if (!s.last_checked_pose_.valid) return std::nullopt;
+  const int gap = std::min(s.iteration_ - s.last_checked_iteration_, options.continuity_window);
+  return relocalize(in.stamped_, map, NearPose{s.last_checked_pose_.world_T_robot, options.max_step * gap + options.offset_bound},
+                    options);
+}
+
+}  // namespace
+
+std::vector<LinePair> line_pairs(const RltXPointsState& s, const RltXPointsScratch& in) {
+  std::vector<LinePair> pairs;
+  const std::vector<MapPlane>& map = s.builder_.map();
+  for (std::size_t i = 0; i < in.stamped_.size(); ++i) {
+    const PlaneId p = in.assignment_[i];
+    if (p != kNone && p < static_cast<PlaneId>(map.size()) && map[p].mapped)
+      pairs.push_back({in.stamped_[i], map[p].plane});
+  }
+  return pairs;
+}
+
+void check_poset(RltXPointsState& s, const RltXPointsScratch& in, const IntegrityOptions& options) {
+  std::optional<std::pair<PlanarPose, int>> previous;
+  if (s.last_checked_pose_.valid)
+    previous.emplace(s.last_checked_pose_.world_T_robot, s.iteration_ - s.last_checked_iteration_);
+  const std::vector<LinePair> pairs = line_pairs(s, in);
+  IntegrityResult r = check_pose(pairs, options, previous);
+  // The motion model's stated case (Rules 23-27): its track while the lines fix no pose.
+  const bool unfixed = r.reason == PoseReason::NoPlanes || r.reason == PoseReason::OneDirection;
+  if (!r.valid && unfixed && s.motion_model_active_) r = motion_model_pose(s, pairs, options);
+  if (!r.valid && options.recovery && s.iteration_ - s.last_checked_iteration_ >= options.recover_after)
+    if (const std::optional<IntegrityResult> found = recovered_pose(s, in, options)) r = *found;
+  s.checked_pose_ = {r.world_T_robot, r.valid, r.planes, r.reason};
+  // The last pose the lines fixed (a motion model's track is not one): continuity, recovery's
+  // reach and the motion model's anchor are judged from it.
+  if (!r.valid || r.reason == PoseReason::MotionModel) return;
+  s.last_checked_pose_ = s.checked_pose_;
+  s.last_checked_iteration_ = s.iteration_;
+  // A checked pose is the better one for Rule 11 and a motion model's anchor (Rule 27).
+  s.pose_ = s.checked_pose_;
+  s.last_valid_pose_ = s.pose_;
+  s.last_valid_iteration_ = s.iteration_;
+  s.no_pose_count_ = 0;
+}
+
+}  // namespace relslam::plane
