@@ -329,6 +329,7 @@ std::vector<ScenarioKey> build_keys() {
   add_keys<&Scenario::extraction>(keys, "relative_plane");
   add_keys<&Scenario::ekf6d>(keys, "ekf6d");
   add_keys<&Scenario::ekf2d>(keys, "ekf2d");
+  add_keys<&Scenario::batch_optimum>(keys, "batch_optimum");
   add_keys<&Scenario::victoria_park>(keys, "victoria_park");
   add_keys<&Scenario::binning_bench>(keys, "binning_bench");
   return keys;

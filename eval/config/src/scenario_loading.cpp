@@ -157,6 +157,7 @@ void check_semantics(const LoadedScenario& loaded) {
   add("relative_plane.em", em::check(s.extraction.em));
   add("ekf6d", check_fields(s.ekf6d));
   add("ekf2d", check_fields(s.ekf2d));
+  add("batch_optimum", check_fields(s.batch_optimum));
   add("victoria_park", check_fields(s.victoria_park));
   add("binning_bench", check_fields(s.binning_bench));
   if (errors.empty()) return;

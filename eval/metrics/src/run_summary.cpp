@@ -47,7 +47,7 @@ RuntimeStats runtime_stats(std::vector<double> t) {
 }
 
 void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
-                   const std::optional<SummaryRow>& ratio) {
+                   const std::optional<SummaryRow>& ratio, const std::vector<SummaryRow>& more_ratios) {
   // A run scores either landmarks or planes: the first row says which.
   const bool planar = !rows.empty() && rows.front().planar.has_value();
   std::vector<std::string> columns;
@@ -103,6 +103,7 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryR
   };
   for (const SummaryRow& r : rows) write(r, false);
   if (ratio) write(*ratio, true);
+  for (const SummaryRow& r : more_ratios) write(r, true);
   csv.close();
 }
 

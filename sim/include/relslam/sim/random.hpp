@@ -24,6 +24,9 @@ enum class Stream : std::uint64_t {
   WallPointField = 8,
   WallPointNoise = 9,
   WallPointShuffle = 10,
+  // Not the simulator's: the evaluation's perturbed start of the batch optimum (eval), seeded
+  // like the world so a run stays a pure function of its seed.
+  OptimumStart = 11,
 };
 
 // A short random sequence that is a pure function of (seed, stream, a, b).

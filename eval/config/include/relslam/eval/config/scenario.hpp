@@ -3,6 +3,7 @@
 // Loaded from scenarios/*.json (scenario_loading.hpp); every key and its default are listed by
 // scenario_keys() (scenario_keys.hpp).
 
+#include "relslam/eval/config/batch_optimum_options.hpp"
 #include "relslam/eval/config/binning_bench_options.hpp"
 #include "relslam/eval/config/ekf2d_options.hpp"
 #include "relslam/eval/config/ekf6d_options.hpp"
@@ -108,6 +109,7 @@ struct Scenario {
   ExtractionOptions extraction;  // its plane extractor (planar.sensor points), keys relative_plane.*
   Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
   Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
+  BatchOptimumOptions batch_optimum;       // the batch least-squares optimum (the accuracy floor)
   VictoriaParkOptions victoria_park;       // kind victoria_park only
   BinningBenchOptions binning_bench;       // S-BIN only (kind binning_benchmark)
   OutputOptions output;

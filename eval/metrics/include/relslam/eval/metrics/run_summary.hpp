@@ -92,8 +92,10 @@ struct SummaryRow {
 // columns. Then, when both relative_point and ekf6d ran, a row
 // "relative_point/ekf6d" (status "ratio") holding their ratios, compared over the iterations
 // both processed (the EKF may have stopped early): `ratio` is that row, computed by the caller.
+// Further ratio rows (`more_ratios`, e.g. each algorithm over the batch optimum) follow it.
 void write_summary(const std::filesystem::path& file, const std::vector<SummaryRow>& rows,
-                   const std::optional<SummaryRow>& ratio = std::nullopt);
+                   const std::optional<SummaryRow>& ratio = std::nullopt,
+                   const std::vector<SummaryRow>& more_ratios = {});
 // A summary column as planar runs name it ("final_landmark_error" -> "final_map_error",
 // "landmarks_on_map" -> "planes_on_map"), or as is for the point half. summary.csv, sweep.csv and
 // aggregate.csv all name their columns through it.

@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Tables of every estimator against the batch optimum from scripts/optimum_sweep.sh's folders.
+
+For each scenario folder OUT/<scenario>/ the sweep left three relslam sweeps over the same seeds
+(the same frames: their input digests are checked): base/ (Relative Point with the scenario's
+preset, MRPT's 6D EKF, the batch optimum), adaptive/ and relaxed/ (Relative Point alone). This
+prints per estimator the final mean landmark error and the ATE with their ratios to the optimum
+(mean and 95 % Student-t interval over the seeds), the mean time per iteration, the optimum's
+solve time, and per seed relaxed Relative Point over the EKF and over the optimum.
+
+    python3 scripts/optimum_table.py OUT
+"""
+import csv
+import math
+import statistics
+import sys
+from pathlib import Path
+
+# Two-sided 95 % Student-t quantiles by degrees of freedom.
+T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262, 10: 2.228,
+       11: 2.201, 12: 2.179, 13: 2.160, 14: 2.145, 15: 2.131, 19: 2.093, 29: 2.045}
+ESTIMATORS = [("base", "relative_point", "Relative (scenario preset)"), ("adaptive", "relative_point", "Relative adaptive"),
+              ("relaxed", "relative_point", "Relative relaxed"), ("base", "ekf6d", "EKF (MRPT 6D)"),
+              ("base", "batch_optimum", "batch optimum")]
+
+
+def interval(values):
+    values = [v for v in values if v == v]
+    if not values:
+        return "–"
+    mean = statistics.fmean(values)
+    if len(values) < 2:
+        return f"{mean:.4g}"
+    df = len(values) - 1
+    t = T95.get(df) or T95[max(k for k in T95 if k <= df)]
+    half = t * statistics.stdev(values) / math.sqrt(len(values))
+    return f"{mean:.4g} ± {half:.2g}"
+
+
+def runs(folder):
+    """seed -> {algorithm: summary row} for every seed-N/summary.csv below folder."""
+    out = {}
+    for summary in sorted(folder.rglob("summary.csv")):
+        seed = int(summary.parent.name.removeprefix("seed-"))
+        out[seed] = {r["algorithm"]: r for r in csv.DictReader(open(summary, newline=""))}
+    return out
+
+
+def number(row, key):
+    try:
+        return float(row[key])
+    except (KeyError, ValueError, TypeError):
+        return float("nan")
+
+
+def scenario_table(folder):
+    parts = {name: runs(folder / name) for name in ("base", "adaptive", "relaxed")}
+    seeds = sorted(parts["base"])
+    print(f"\n### {folder.name} (seeds {seeds[0]}–{seeds[-1]})\n")
+    for seed in seeds:  # every estimator saw the same frames
+        digests = {parts[p][seed][a]["input_digest"] for p, a, _ in ESTIMATORS if seed in parts[p] and a in parts[p][seed]}
+        if len(digests) != 1:
+            sys.exit(f"{folder}: seed {seed}: the estimators saw different frames ({digests})")
+    optimum = {s: parts["base"][s]["batch_optimum"] for s in seeds}
+    print("| estimator | not ok | landmark error | / optimum | ATE | / optimum | ms/iteration (mean) |")
+    print("|---|---|---|---|---|---|---|")
+    for part, algorithm, label in ESTIMATORS:
+        rows = {s: parts[part][s][algorithm] for s in seeds if s in parts[part] and algorithm in parts[part][s]}
+        bad = [f"{s} ({r['status']})" for s, r in rows.items() if r["status"] != "ok"]
+        err = [number(r, "final_mean_landmark_error") for r in rows.values()]
+        ate = [number(r, "ate_rmse") for r in rows.values()]
+        err_ratio = [number(r, "final_mean_landmark_error") / number(optimum[s], "final_mean_landmark_error")
+                     for s, r in rows.items()]
+        ate_ratio = [number(r, "ate_rmse") / number(optimum[s], "ate_rmse") for s, r in rows.items()]
+        ms = [number(r, "runtime_mean_ms") for r in rows.values()]
+        print(f"| {label} | {', '.join(bad) or '–'} | {interval(err)} | {interval(err_ratio)} | {interval(ate)} | "
+              f"{interval(ate_ratio)} | {interval(ms)} |")
+    solve = [number(r, "solve_s") for r in optimum.values()]
+    print(f"\nbatch optimum solve time per run: {interval(solve)} s "
+          f"(max {max(solve):.3g} s; its ms/iteration above is storing the frames only)\n")
+    print("| seed | relaxed / EKF landmark error | relaxed / EKF ATE | relaxed / optimum landmark error | EKF status |")
+    print("|---|---|---|---|---|")
+    for s in seeds:
+        if s not in parts["relaxed"]:
+            continue
+        relaxed, ekf = parts["relaxed"][s]["relative_point"], parts["base"][s].get("ekf6d")
+        if ekf is None:
+            continue
+        e = number(relaxed, "final_mean_landmark_error")
+        print(f"| {s} | {e / number(ekf, 'final_mean_landmark_error'):.3g} | "
+              f"{number(relaxed, 'ate_rmse') / number(ekf, 'ate_rmse'):.3g} | "
+              f"{e / number(optimum[s], 'final_mean_landmark_error'):.3g} | {ekf['status']} |")
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = Path(sys.argv[1])
+    for folder in sorted(p for p in out.iterdir() if (p / "base").is_dir()):
+        scenario_table(folder)
+
+
+if __name__ == "__main__":
+    main()
