@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Tables of every estimator against the batch optimum from scripts/optimum_sweep.sh's folders.
 
-For each scenario folder OUT/<scenario>/ the sweep left three relslam sweeps over the same seeds
+For each scenario folder OUT/<scenario>/ the sweep left four relslam sweeps over the same seeds
 (the same frames: their input digests are checked): base/ (Relative Point with the scenario's
-preset, MRPT's 6D EKF, the batch optimum), adaptive/ and relaxed/ (Relative Point alone). This
+preset, the batch optimum), adaptive/ and relaxed/ (Relative Point alone), ekf/ (MRPT's 6D EKF;
+the seeds it finished, when the sweep was cut short). This
 prints per estimator the final mean landmark error and the ATE with their ratios to the optimum
 (mean and 95 % Student-t interval over the seeds), the mean time per iteration, the optimum's
 solve time, and per seed relaxed Relative Point over the EKF and over the optimum.
@@ -20,7 +21,7 @@ from pathlib import Path
 T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262, 10: 2.228,
        11: 2.201, 12: 2.179, 13: 2.160, 14: 2.145, 15: 2.131, 19: 2.093, 29: 2.045}
 ESTIMATORS = [("base", "relative_point", "Relative (scenario preset)"), ("adaptive", "relative_point", "Relative adaptive"),
-              ("relaxed", "relative_point", "Relative relaxed"), ("base", "ekf6d", "EKF (MRPT 6D)"),
+              ("relaxed", "relative_point", "Relative relaxed"), ("ekf", "ekf6d", "EKF (MRPT 6D)"),
               ("base", "batch_optimum", "batch optimum")]
 
 
@@ -40,6 +41,8 @@ def interval(values):
 def runs(folder):
     """seed -> {algorithm: summary row} for every seed-N/summary.csv below folder."""
     out = {}
+    if not folder.is_dir():
+        return out
     for summary in sorted(folder.rglob("summary.csv")):
         seed = int(summary.parent.name.removeprefix("seed-"))
         out[seed] = {r["algorithm"]: r for r in csv.DictReader(open(summary, newline=""))}
@@ -54,7 +57,7 @@ def number(row, key):
 
 
 def scenario_table(folder):
-    parts = {name: runs(folder / name) for name in ("base", "adaptive", "relaxed")}
+    parts = {name: runs(folder / name) for name in ("base", "adaptive", "relaxed", "ekf")}
     seeds = sorted(parts["base"])
     print(f"\n### {folder.name} (seeds {seeds[0]}–{seeds[-1]})\n")
     for seed in seeds:  # every estimator saw the same frames
@@ -66,6 +69,8 @@ def scenario_table(folder):
     print("|---|---|---|---|---|---|---|")
     for part, algorithm, label in ESTIMATORS:
         rows = {s: parts[part][s][algorithm] for s in seeds if s in parts[part] and algorithm in parts[part][s]}
+        if not rows:
+            continue
         bad = [f"{s} ({r['status']})" for s, r in rows.items() if r["status"] != "ok"]
         err = [number(r, "final_mean_landmark_error") for r in rows.values()]
         ate = [number(r, "ate_rmse") for r in rows.values()]
@@ -83,7 +88,7 @@ def scenario_table(folder):
     for s in seeds:
         if s not in parts["relaxed"]:
             continue
-        relaxed, ekf = parts["relaxed"][s]["relative_point"], parts["base"][s].get("ekf6d")
+        relaxed, ekf = parts["relaxed"][s]["relative_point"], parts["ekf"].get(s, {}).get("ekf6d")
         if ekf is None:
             continue
         e = number(relaxed, "final_mean_landmark_error")

@@ -1,7 +1,8 @@
 #include "optimum_problem.hpp"
 
+#include "relslam/relax/ceres_relaxation.hpp"
+
 #include <ceres/ceres.h>
-#include <glog/logging.h>
 
 #include <array>
 #include <chrono>
@@ -120,14 +121,6 @@ void add_residuals(ceres::Problem& ceres_problem, OptimumProblem& problem,
   }
 }
 
-void quiet_solver_warnings() {
-  static const bool once = [] {
-    FLAGS_minloglevel = google::GLOG_ERROR;
-    return true;
-  }();
-  (void)once;
-}
-
 }  // namespace
 
 ObservationNoise observation_noise(const RangeBearingSensor& sensor) {
@@ -143,7 +136,7 @@ ObservationNoise observation_noise(const RangeBearingSensor& sensor) {
 
 OptimumReport solve_optimum(OptimumProblem& problem, const ObservationNoise& noise,
                             const BatchOptimumOptions& options) {
-  quiet_solver_warnings();
+  relax::quiet_solver_warnings();
   OptimumReport report;
   if (problem.world_T_robot.empty()) return report;
   std::vector<PoseBlock> poses = pose_blocks(problem.world_T_robot);
