@@ -7,7 +7,10 @@ preset, the batch optimum), adaptive/ and relaxed/ (Relative Point alone), ekf/ 
 the seeds it finished, when the sweep was cut short). This
 prints per estimator the final mean landmark error and the ATE with their ratios to the optimum
 (mean and 95 % Student-t interval over the seeds), the mean time per iteration, the optimum's
-solve time, and per seed relaxed Relative Point over the EKF and over the optimum.
+solve time, and per seed relaxed Relative Point over the EKF and over the optimum. "aligned" is
+the mean landmark error after the best rigid fit of the map to the truth (rotation and
+translation, Kabsch): the map's shape without the whole-map turn about the first frame that the
+gauge leaves (docs/algorithms/batch-optimum.md).
 
     python3 scripts/optimum_table.py OUT
 """
@@ -16,6 +19,8 @@ import math
 import statistics
 import sys
 from pathlib import Path
+
+import numpy as np
 
 # Two-sided 95 % Student-t quantiles by degrees of freedom.
 T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262, 10: 2.228,
@@ -39,14 +44,33 @@ def interval(values):
 
 
 def runs(folder):
-    """seed -> {algorithm: summary row} for every seed-N/summary.csv below folder."""
+    """seed -> {algorithm: summary row (with its folder)} for every seed-N/summary.csv below folder."""
     out = {}
     if not folder.is_dir():
         return out
     for summary in sorted(folder.rglob("summary.csv")):
         seed = int(summary.parent.name.removeprefix("seed-"))
-        out[seed] = {r["algorithm"]: r for r in csv.DictReader(open(summary, newline=""))}
+        out[seed] = {r["algorithm"]: dict(r, folder=summary.parent) for r in csv.DictReader(open(summary, newline=""))}
     return out
+
+
+def aligned_error(seed_folder, algorithm):
+    """Mean landmark error of a run's map after its best rigid fit to the truth (NaN without)."""
+    try:
+        truth = {int(r["id"]): [float(r[k]) for k in "xyz"]
+                 for r in csv.DictReader(open(seed_folder / "ground_truth_landmarks.csv", newline=""))}
+        rows = [r for r in csv.DictReader(open(seed_folder / algorithm / "landmarks.csv", newline=""))
+                if r["error"] not in ("", "nan") and r["x"] != "" and int(r["true_id"]) in truth]
+    except (OSError, KeyError, ValueError):
+        return float("nan")
+    if len(rows) < 3:
+        return float("nan")
+    p = np.array([[float(r[k]) for k in "xyz"] for r in rows])
+    q = np.array([truth[int(r["true_id"])] for r in rows])
+    u, _, vt = np.linalg.svd((p - p.mean(0)).T @ (q - q.mean(0)))
+    d = np.diag([1, 1, np.sign(np.linalg.det(vt.T @ u.T))])
+    rotation = vt.T @ d @ u.T
+    return float(np.linalg.norm((p - p.mean(0)) @ rotation.T + q.mean(0) - q, axis=1).mean())
 
 
 def number(row, key):
@@ -65,8 +89,10 @@ def scenario_table(folder):
         if len(digests) != 1:
             sys.exit(f"{folder}: seed {seed}: the estimators saw different frames ({digests})")
     optimum = {s: parts["base"][s]["batch_optimum"] for s in seeds}
-    print("| estimator | not ok | landmark error | / optimum | ATE | / optimum | ms/iteration (mean) |")
-    print("|---|---|---|---|---|---|---|")
+    print("| estimator | not ok | landmark error | / optimum | aligned | / optimum | ATE | / optimum | ATE aligned "
+          "| / optimum | ms/iteration (mean) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    optimum_aligned = {s: aligned_error(r["folder"], "batch_optimum") for s, r in optimum.items()}
     for part, algorithm, label in ESTIMATORS:
         rows = {s: parts[part][s][algorithm] for s in seeds if s in parts[part] and algorithm in parts[part][s]}
         if not rows:
@@ -77,25 +103,30 @@ def scenario_table(folder):
         err_ratio = [number(r, "final_mean_landmark_error") / number(optimum[s], "final_mean_landmark_error")
                      for s, r in rows.items()]
         ate_ratio = [number(r, "ate_rmse") / number(optimum[s], "ate_rmse") for s, r in rows.items()]
+        ate_aligned = [number(r, "ate_rmse_aligned") for r in rows.values()]
+        ate_aligned_ratio = [number(r, "ate_rmse_aligned") / number(optimum[s], "ate_rmse_aligned") for s, r in rows.items()]
         ms = [number(r, "runtime_mean_ms") for r in rows.values()]
-        print(f"| {label} | {', '.join(bad) or '–'} | {interval(err)} | {interval(err_ratio)} | {interval(ate)} | "
-              f"{interval(ate_ratio)} | {interval(ms)} |")
+        aligned = {s: aligned_error(r["folder"], algorithm) for s, r in rows.items()}
+        aligned_ratio = [a / optimum_aligned[s] for s, a in aligned.items()]
+        print(f"| {label} | {', '.join(bad) or '–'} | {interval(err)} | {interval(err_ratio)} | "
+              f"{interval(list(aligned.values()))} | {interval(aligned_ratio)} | {interval(ate)} | "
+              f"{interval(ate_ratio)} | {interval(ate_aligned)} | {interval(ate_aligned_ratio)} | {interval(ms)} |")
     solve = [number(r, "solve_s") for r in optimum.values()]
     print(f"\nbatch optimum solve time per run: {interval(solve)} s "
           f"(max {max(solve):.3g} s; its ms/iteration above is storing the frames only)\n")
-    print("| seed | relaxed / EKF landmark error | relaxed / EKF ATE | relaxed / optimum landmark error | EKF status |")
-    print("|---|---|---|---|---|")
+    print("| seed | relaxed / EKF landmark error | relaxed / EKF ATE | relaxed / optimum landmark error "
+          "| relaxed / optimum aligned | EKF status |")
+    print("|---|---|---|---|---|---|")
     for s in seeds:
         if s not in parts["relaxed"]:
             continue
         relaxed, ekf = parts["relaxed"][s]["relative_point"], parts["ekf"].get(s, {}).get("ekf6d")
-        if ekf is None:
-            continue
         e = number(relaxed, "final_mean_landmark_error")
-        print(f"| {s} | {e / number(ekf, 'final_mean_landmark_error'):.3g} | "
-              f"{number(relaxed, 'ate_rmse') / number(ekf, 'ate_rmse'):.3g} | "
-              f"{e / number(optimum[s], 'final_mean_landmark_error'):.3g} | {ekf['status']} |")
-
+        over_ekf = (f"{e / number(ekf, 'final_mean_landmark_error'):.3g} | "
+                    f"{number(relaxed, 'ate_rmse') / number(ekf, 'ate_rmse'):.3g}") if ekf else "– | –"
+        print(f"| {s} | {over_ekf} | {e / number(optimum[s], 'final_mean_landmark_error'):.3g} | "
+              f"{aligned_error(relaxed['folder'], 'relative_point') / optimum_aligned[s]:.3g} | "
+              f"{ekf['status'] if ekf else 'not run'} |")
 
 def main():
     if len(sys.argv) != 2:
