@@ -33,6 +33,9 @@ const Columns<LandmarkRow> kLandmarkColumns = {
     {"z", [](const LandmarkRow& r) { return csv_field(r.position.z()); }},
     {"true_id", [](const LandmarkRow& r) { return csv_field(r.score.true_id); }},
     {"error", [](const LandmarkRow& r) { return csv_field(r.score.error); }},
+    // Every algorithm's landmarks.csv has a level (plots read any of them): here always the
+    // solved map's.
+    {"level", [](const LandmarkRow&) { return csv_field("optimum"); }},
     {"observations", [](const LandmarkRow& r) { return csv_field(r.observations); }},
 };
 
