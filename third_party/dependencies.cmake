@@ -15,7 +15,7 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.11 REQUIRED)
 find_package(CLI11 2.1 REQUIRED)
 find_package(nanoflann 1.4 REQUIRED)
-find_package(Ceres 2.1 REQUIRED)  # relslam_relax only (issue 19)
+find_package(Ceres 2.1 REQUIRED)  # relslam_relax and the harness's batch optimum
 find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs videoio)
 foreach(module IN ITEMS mrpt-slam mrpt-obs mrpt-io mrpt-serialization mrpt-poses)
   find_package(${module} REQUIRED)

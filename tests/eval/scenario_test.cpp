@@ -166,7 +166,7 @@ TEST(Scenario, UnknownAlgorithmIsRejected) {
   };
   EXPECT_EQ(unknown(R"({"algorithms": ["relative_point", "nope"]})"),
             "scenarios/t.json:1: algorithms: unknown algorithm \"nope\" (known: relative_point, ekf6d, ekf2d, "
-            "ekf2d_no_odometry)");
+            "ekf2d_no_odometry, batch_optimum)");
   EXPECT_EQ(unknown(R"({"algorithms": ["ekf6d"], "sweep": {"algorithms": [["relative_point"], ["x"]]}})")
                 .rfind("scenarios/t.json:1: sweep.algorithms: unknown algorithm \"x\"", 0),
             0u);

@@ -1,5 +1,6 @@
 #include "relslam/eval/algorithms/registry.hpp"
 
+#include "batch_optimum.hpp"
 #include "ekf2d.hpp"
 #include "ekf6d.hpp"
 #include "icp_slam.hpp"
@@ -37,6 +38,12 @@ const std::vector<AlgorithmEntry>& algorithm_registry() {
        }},
       {"ekf2d_no_odometry", "MRPT's planar EKF-SLAM without odometry (constant-position model)",
        [](const AlgorithmContext& c) { return make_ekf2d(c.scenario.ekf2d, "ekf2d_no_odometry", false, c.sensor); }},
+      {"batch_optimum",
+       "The accuracy floor (beyond the thesis): nonlinear least squares over every pose and landmark with the sensor's "
+       "noise model and known ids, solved once after the last frame",
+       [](const AlgorithmContext& c) {
+         return make_batch_optimum(c.scenario.batch_optimum, c.scenario.relative_point, c.sensor, c.scenario.seed);
+       }},
   };
   return entries;
 }

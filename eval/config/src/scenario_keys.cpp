@@ -334,6 +334,7 @@ std::vector<ScenarioKey> build_keys() {
   add_keys<&Scenario::icp_slam>(keys, "icp_slam");
   add_keys<&Scenario::laser>(keys, "laser");
   add_keys<&Scenario::motion_prediction>(keys, "motion_prediction");
+  add_keys<&Scenario::batch_optimum>(keys, "batch_optimum");
   add_keys<&Scenario::victoria_park>(keys, "victoria_park");
   add_keys<&Scenario::binning_bench>(keys, "binning_bench");
   return keys;

@@ -160,6 +160,7 @@ void check_semantics(const LoadedScenario& loaded) {
   add("icp_slam", check_fields(s.icp_slam));
   add("laser", check_fields(s.laser));
   add("motion_prediction", check_fields(s.motion_prediction));
+  add("batch_optimum", check_fields(s.batch_optimum));
   add("victoria_park", check_fields(s.victoria_park));
   add("binning_bench", check_fields(s.binning_bench));
   if (errors.empty()) return;

@@ -47,6 +47,17 @@ std::vector<std::unique_ptr<PlaneRecorder>> PlaneFamily::recorders(const LoadedS
   return recorders;
 }
 
+std::vector<SummaryRow> PointFamily::floor_ratios(const std::vector<std::unique_ptr<Recorder>>& recorders,
+                                                  const std::vector<SummaryRow>& rows) {
+  std::vector<SummaryRow> out;
+  for (std::size_t optimum = 0; optimum < recorders.size(); ++optimum) {
+    if (recorders[optimum]->name() != "batch_optimum") continue;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (i != optimum) out.push_back(ratio_row(rows[i], rows[optimum]));
+  }
+  return out;
+}
+
 void PlaneFamily::add_cross_scores(std::vector<SummaryRow>& rows, const std::vector<std::unique_ptr<Recorder>>& recorders,
                                    const OutputOptions& output) {
   add_reference_scores(rows, recorders, output);

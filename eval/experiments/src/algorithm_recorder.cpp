@@ -107,7 +107,10 @@ void AlgorithmRecorder::step(const ObservationFrame& observation, const TruthFra
   own_fields_.clear();
   algorithm_->iteration_fields(own_fields_);
   iterations_.row({k, s, runtime_ms, observation.points.size()}, own_fields_);
-  trajectory_.write(observation.time_s.value_or(static_cast<double>(k)), estimate);
+  times_.push_back(observation.time_s.value_or(static_cast<double>(k)));
+  trajectory_.write(times_.back(), estimate);
+  last_iteration_ = k;
+  last_dynamic_positions_ = truth.dynamic_positions;
   check_budget(k, runtime_ms);
 }
 
@@ -127,9 +130,22 @@ void AlgorithmRecorder::check_budget(int k, double runtime_ms) {
                                         " ms) on average over " + std::to_string(budget->iterations) + " iterations");
 }
 
+void AlgorithmRecorder::finish_batch() {
+  if (!running() || last_iteration_ < 0) return;
+  if (!timed_step(last_iteration_, status_, [&] { algorithm_->finish(); })) return;
+  const std::vector<Rigid3> revised = algorithm_->revised_trajectory();
+  scorer_.revise(revised, last_dynamic_positions_, algorithm_->changed(),
+                 [&](int id) { return algorithm_->position(id); });
+  if (revised.size() != times_.size()) return;
+  TumWriter trajectory(dir_ / "trajectory.tum");  // the revised poses replace the steps'
+  for (std::size_t i = 0; i < revised.size(); ++i) trajectory.write(times_[i], revised[i]);
+  trajectory.close();
+}
+
 SummaryRow AlgorithmRecorder::finish() {
   iterations_.close();
   trajectory_.close();
+  finish_batch();
   CsvWriter landmarks(dir_ / "landmarks.csv", algorithm_->landmark_columns());
   algorithm_->landmark_rows(
       [&](int id) {
@@ -148,6 +164,8 @@ SummaryRow AlgorithmRecorder::finish() {
   row.landmarks_on_map = static_cast<int>(on_map.size());
   row.duplicates = scorer_.duplicates(on_map);
   row.peak_rss_mb = peak_rss_mb();
+  row.own_columns = algorithm_->summary_columns();
+  algorithm_->summary_fields(row.own_fields);
   return row;
 }
 

@@ -94,6 +94,7 @@ std::vector<BatchResult> run_batch(const std::string& scenario_file, const std::
           const ExperimentResult e = simulate_and_run(loaded, jobs[i].folder, false);
           r.rows = e.rows;
           if (e.ratio) r.rows.push_back(*e.ratio);
+          r.rows.insert(r.rows.end(), e.optimum_ratios.begin(), e.optimum_ratios.end());
           nlohmann::json extra = e.source;
           extra["wall_time_s"] = e.seconds;
           write_manifest(jobs[i].folder, loaded.scenario, invocation, extra,

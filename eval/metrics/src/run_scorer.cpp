@@ -35,6 +35,24 @@ IterationScore RunScorer::score(const Rigid3& estimate, const TruthFrame& truth,
   return s;
 }
 
+void RunScorer::revise(const std::vector<Rigid3>& poses, const std::vector<Eigen::Vector3d>& dynamic_positions,
+                       const std::vector<int>& changed,
+                       const std::function<std::optional<Eigen::Vector3d>(int)>& position_of) {
+  if (history_.empty()) return;
+  if (poses.size() == estimates_.size()) estimates_ = poses;
+  errors_.update(dynamic_positions, changed, position_of);
+  IterationScore& last = history_.back();
+  last.landmarks_on_map = errors_.count();
+  if (truth_known_) {
+    last.landmark_error = errors_.sum();
+    last.mean_landmark_error = errors_.mean();
+  }
+  if (!std::isnan(last.position_error)) {  // the last truth pose is known
+    last.axis_error = estimates_.back().translation - truths_.back().translation;
+    last.position_error = last.axis_error.norm();
+  }
+}
+
 int RunScorer::majority_truth(int id) const {
   if (id < 0 || static_cast<std::size_t>(id) >= votes_.size()) return -1;
   int best = -1, count = 0;

@@ -95,7 +95,8 @@ const std::vector<SummaryColumn>& plane_summary_columns() {
 }
 
 void write_summary(const std::filesystem::path& file, const std::vector<SummaryColumn>& table,
-                   const std::vector<SummaryRow>& rows, const std::optional<SummaryRow>& ratio) {
+                   const std::vector<SummaryRow>& rows, const std::optional<SummaryRow>& ratio,
+                   const std::vector<SummaryRow>& more_ratios) {
   std::vector<std::string> columns;
   for (const SummaryColumn& c : table) columns.push_back(c.name);
   std::vector<std::string> own;  // every row's own columns, in the order they first appear
@@ -117,6 +118,7 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryC
   };
   for (const SummaryRow& r : rows) write(r);
   if (ratio) write(*ratio);
+  for (const SummaryRow& r : more_ratios) write(r);
   csv.close();
 }
 

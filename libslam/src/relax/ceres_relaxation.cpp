@@ -37,6 +37,8 @@ constexpr double kTolerance = 1e-14;
 constexpr double kFunctionTolerance = 1e-6;
 constexpr int kMaxIterations = 100;
 
+}  // namespace
+
 // Ceres reports through glog, which nothing here initialises: a Levenberg-Marquardt step whose
 // linear solve fails (CHOLMOD: not positive definite; met on Victoria Park's whole log with the
 // adaptive preset) printed "WARNING: Logging before InitGoogleLogging()" and the message in the
@@ -49,8 +51,6 @@ void quiet_solver_warnings() {
   }();
   (void)once;
 }
-
-}  // namespace
 
 point::RelaxationReport solve_relaxation(point::RelaxationProblem& problem) {
   quiet_solver_warnings();

@@ -28,6 +28,9 @@ enum class Stream : std::uint64_t {
   LaserRange = 12,   // the simulated 2-D laser's range noise (laser_sensor.hpp)
   DepthPixel = 13,   // the simulated depth camera's noise and missing returns (depth_camera.hpp)
   Odometry = 14,     // the range sensors' runs' odometry noise (odometry_noise.hpp)
+  // Not the simulator's: the evaluation's perturbed start of the batch optimum (eval), seeded
+  // like the world so a run stays a pure function of its seed.
+  OptimumStart = 15,
 };
 
 // A short random sequence that is a pure function of (seed, stream, a, b).

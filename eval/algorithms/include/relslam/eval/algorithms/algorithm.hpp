@@ -62,6 +62,18 @@ class Algorithm {
   virtual std::string lost() const { return ""; }
   virtual std::optional<TimeBudget> time_budget() const { return std::nullopt; }
 
+  // A batch algorithm's work after the last frame (the batch optimum's solve): the recorder runs
+  // it once the frames end, before the summary; an exception ends the run as failed. Afterwards
+  // changed() names every estimate the work moved. The online estimators have none.
+  virtual void finish() {}
+  // After finish(): every step's pose as the finished estimate has it (a smoother's trajectory),
+  // replacing the poses step() reported in the trajectory scores and trajectory.tum; empty when
+  // those stand.
+  virtual std::vector<Rigid3> revised_trajectory() const { return {}; }
+  // At the end of the run: its own summary.csv columns (after the scored ones) and their fields.
+  virtual std::vector<std::string> summary_columns() const { return {}; }
+  virtual void summary_fields(std::vector<CsvField>&) const {}
+
   // Its own columns of iterations.csv (after the shared score columns) and this step's fields.
   virtual std::vector<std::string> iteration_columns() const = 0;
   virtual void iteration_fields(std::vector<CsvField>& out) const = 0;

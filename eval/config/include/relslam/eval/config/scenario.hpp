@@ -3,6 +3,7 @@
 // Loaded from scenarios/*.json (scenario_loading.hpp); every key and its default are listed by
 // scenario_keys() (scenario_keys.hpp).
 
+#include "relslam/eval/config/batch_optimum_options.hpp"
 #include "relslam/eval/config/binning_bench_options.hpp"
 #include "relslam/eval/config/ekf2d_options.hpp"
 #include "relslam/eval/config/icp_slam_options.hpp"
@@ -125,6 +126,7 @@ struct Scenario {
   Ekf6dOptions ekf6d;                      // the MRPT 6D EKF baseline's settings
   Ekf2dOptions ekf2d;                      // MRPT's planar EKF (Victoria Park)
   IcpSlamOptions icp_slam;                 // MRPT's ICP-SLAM on laser scans (kind planar)
+  BatchOptimumOptions batch_optimum;       // the batch least-squares optimum (the accuracy floor)
   VictoriaParkOptions victoria_park;       // kind victoria_park only
   BinningBenchOptions binning_bench;       // S-BIN only (kind binning_benchmark)
   OutputOptions output;

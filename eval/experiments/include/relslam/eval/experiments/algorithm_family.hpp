@@ -27,6 +27,10 @@ struct PointFamily {
   // The Relative Point / EKF ratio row, over the iterations both processed, when both ran.
   static std::optional<SummaryRow> ratio(const std::vector<std::unique_ptr<Recorder>>& recorders,
                                          const std::vector<SummaryRow>& rows);
+  // Every other algorithm over the batch optimum, the accuracy floor over all the frames (an EKF
+  // stopped early is compared as it stopped), when batch_optimum ran.
+  static std::vector<SummaryRow> floor_ratios(const std::vector<std::unique_ptr<Recorder>>& recorders,
+                                              const std::vector<SummaryRow>& rows);
   // Scores of a row that need the other rows: none in this half.
   static void add_cross_scores(std::vector<SummaryRow>&, const std::vector<std::unique_ptr<Recorder>>&,
                                const OutputOptions&) {}
@@ -44,6 +48,10 @@ struct PlaneFamily {
   static std::optional<SummaryRow> ratio(const std::vector<std::unique_ptr<Recorder>>&,
                                          const std::vector<SummaryRow>&) {
     return std::nullopt;
+  }
+  static std::vector<SummaryRow> floor_ratios(const std::vector<std::unique_ptr<Recorder>>&,
+                                              const std::vector<SummaryRow>&) {
+    return {};
   }
   // Scores against another algorithm's path, for runs without a true one: ate_vs_reference
   // against output.reference_algorithm and the loop gap at output.revisit_frames.

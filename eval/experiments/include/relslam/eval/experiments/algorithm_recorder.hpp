@@ -67,6 +67,8 @@ class AlgorithmRecorder {
  private:
   bool running() const { return status_.kind == RunStatus::Kind::NotRun || status_.kind == RunStatus::Kind::Ok; }
   void check_budget(int k, double runtime_ms);
+  // A batch algorithm's work after the last frame, its revised trajectory and map rescored.
+  void finish_batch();
 
   std::unique_ptr<Algorithm> algorithm_;
   std::filesystem::path dir_;
@@ -78,6 +80,9 @@ class AlgorithmRecorder {
   RunStatus status_;  // Failed or Stopped ends the run: later frames are hashed, not processed
   std::vector<CsvField> own_fields_;
   std::deque<double> recent_;  // the last budget.iterations step times, ms
+  std::vector<double> times_;  // trajectory.tum's time of each scored step
+  int last_iteration_ = -1;
+  std::vector<Eigen::Vector3d> last_dynamic_positions_;  // the last truth frame's
   double recent_sum_ = 0;
 };
 

@@ -15,6 +15,9 @@ namespace relslam::eval {
 struct ExperimentResult {
   std::vector<SummaryRow> rows;     // one per algorithm
   std::optional<SummaryRow> ratio;  // relative_point over ekf6d (or ekf2d), when both ran
+  // Every other algorithm over batch_optimum ("<name>/batch_optimum"), when it ran: how far each
+  // is from the accuracy floor.
+  std::vector<SummaryRow> optimum_ratios;
   int iterations = 0;
   double seconds = 0;
   nlohmann::json source;  // what the observations were: manifest material

@@ -45,7 +45,8 @@ class RunSkeleton {
     if (stopped_at) mark_interrupted(result.rows, *stopped_at);
     Family::add_cross_scores(result.rows, recorders_, output_);
     result.ratio = Family::ratio(recorders_, result.rows);
-    write_summary(out_ / "summary.csv", Family::summary_columns(), result.rows, result.ratio);
+    result.optimum_ratios = Family::floor_ratios(recorders_, result.rows);
+    write_summary(out_ / "summary.csv", Family::summary_columns(), result.rows, result.ratio, result.optimum_ratios);
     bar.finish();
     result.iterations = static_cast<int>(source_.frames());
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

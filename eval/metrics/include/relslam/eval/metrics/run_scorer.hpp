@@ -32,6 +32,12 @@ class RunScorer {
   IterationScore score(const Rigid3& estimate, const TruthFrame& truth, const std::vector<int>& changed,
                        const std::function<std::optional<Eigen::Vector3d>(int)>& position_of, double runtime_ms);
 
+  // A batch algorithm's finished estimate, after the last score(): `poses` (one per scored
+  // iteration; none leaves them) replace the scored poses, the landmarks `changed` are scored
+  // again against the last truth, and the last iteration's scores become the finished ones.
+  void revise(const std::vector<Rigid3>& poses, const std::vector<Eigen::Vector3d>& dynamic_positions,
+              const std::vector<int>& changed, const std::function<std::optional<Eigen::Vector3d>(int)>& position_of);
+
   // The true landmark behind most of an estimate's observations (-1 if none).
   int majority_truth(int id) const;
   double error_of(int id) const { return errors_.error_of(id); }

@@ -35,8 +35,10 @@ const std::vector<SummaryColumn>& plane_summary_columns();
 // every row's own columns. Then, when both relative_point and ekf6d ran, a row
 // "relative_point/ekf6d" (status "ratio") holding their ratios, compared over the iterations
 // both processed (the EKF may have stopped early): `ratio` is that row, computed by the caller.
+// Further ratio rows (`more_ratios`, each algorithm over the batch optimum) follow it.
 void write_summary(const std::filesystem::path& file, const std::vector<SummaryColumn>& table,
-                   const std::vector<SummaryRow>& rows, const std::optional<SummaryRow>& ratio = std::nullopt);
+                   const std::vector<SummaryRow>& rows, const std::optional<SummaryRow>& ratio = std::nullopt,
+                   const std::vector<SummaryRow>& more_ratios = {});
 
 // A point-half summary column as the plane half names it ("final_landmark_error" ->
 // "final_map_error"), or as is for the point half. sweep.csv, aggregate.csv and the summary

@@ -1,0 +1,54 @@
+#pragma once
+// Internal to the algorithms layer: the batch optimum's least-squares problem and its Ceres
+// solve (docs/batch_optimum.md). Every pose and every landmark are unknowns; each observation
+// of a landmark with a known id is one residual under the sensor's noise model, each frame's
+// odometry (when used) one relative-pose residual; the first pose is held (the gauge).
+
+#include "relslam/core/rigid.hpp"
+#include "relslam/eval/config/batch_optimum_options.hpp"
+#include "relslam/eval/io/range_bearing.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace relslam::eval {
+
+// One observation: landmark `landmark` seen at `p_robot` (the robot frame) from pose `pose`.
+struct OptimumObservation {
+  int pose = 0;
+  int landmark = 0;
+  Eigen::Vector3d p_robot;
+};
+
+struct OptimumProblem {
+  std::vector<Rigid3> world_T_robot;       // the start, solved in place; [0] held
+  std::vector<Eigen::Vector3d> landmarks;  // the start, solved in place
+  std::vector<OptimumObservation> observations;
+  // odometry[k]: previous_T_current measured between poses k-1 and k (k >= 1), when there is one.
+  std::vector<std::optional<Rigid3>> odometry;
+};
+
+struct OptimumReport {
+  bool usable = false;       // Ceres's solution is usable (a converged or stopped-at-the-cap solve)
+  int solver_iterations = 0;
+  double initial_cost = 0, final_cost = 0;  // half the sum of squared whitened residuals
+  double solve_s = 0;                       // wall time of the solve, seconds
+  std::string termination;                  // Ceres's own words on why it stopped
+};
+
+// The noise model the observations are whitened with: range, yaw and pitch (MRPT's spherical
+// measurement, range_bearing.hpp) when the sensor gives all three standard deviations (a
+// rawlog's sensor); otherwise white Gaussian noise per axis of std_range (the simulator's,
+// sim::SimOptions::noise_sigma; 1 when it gives none: noise-free data weighs nothing).
+struct ObservationNoise {
+  bool spherical = false;
+  double std_range = 1, std_yaw_rad = 1, std_pitch_rad = 1;  // std_range is per axis when not spherical
+};
+ObservationNoise observation_noise(const RangeBearingSensor& sensor);
+
+// Solves `problem` in place with Ceres (Levenberg-Marquardt on the sparse normal equations, one
+// thread: deterministic).
+OptimumReport solve_optimum(OptimumProblem& problem, const ObservationNoise& noise, const BatchOptimumOptions& options);
+
+}  // namespace relslam::eval

@@ -1,0 +1,58 @@
+#pragma once
+// Settings of the batch optimum (algorithm batch_optimum, docs/batch_optimum.md): the full
+// nonlinear least-squares solution over every pose and every landmark, solved once after the
+// last frame, the accuracy floor beside the online estimators (beyond the thesis). describe()
+// gives each field's key, help and checks (relslam/core/option_fields.hpp).
+
+#include "relslam/core/option_fields.hpp"
+
+#include <numbers>
+#include <optional>
+#include <string_view>
+
+namespace relslam::eval {
+
+// Where the solve starts from. Least squares with the right noise model has one minimum near
+// the truth; the start only has to lie in its basin.
+enum class OptimumStart {
+  Truth,          // the true poses, perturbed (seeded from the scenario's seed) [C]
+  RelativePoint,  // the poses of a Relative Point run over the same frames (its settings)
+};
+inline constexpr OptimumStart kOptimumStarts[] = {OptimumStart::Truth, OptimumStart::RelativePoint};
+inline std::string_view to_string(OptimumStart start) {
+  return start == OptimumStart::Truth ? "truth" : "relative_point";
+}
+
+struct BatchOptimumOptions {
+  OptimumStart start = OptimumStart::Truth;
+  // The perturbation of every true pose but the first (the gauge), per axis: large against the
+  // sensor noise of the shipped scenarios (0.1 units), so the solve, not the start, sets the
+  // result [C].
+  double start_sigma_position = 0.5;                             // units
+  double start_sigma_rotation_rad = 2.0 * std::numbers::pi / 180.0;  // read and written in degrees
+  // Use the frames' odometry as a relative-pose measurement between consecutive poses, as
+  // ekf6d.use_odometry feeds it to the EKF; off by default, the thesis's comparison without
+  // odometry [T]. Its standard deviations per step, as the EKF's.
+  bool use_odometry = false;
+  double odometry_std_xyz = 0.05;                                  // units per step [C]
+  double odometry_std_angle_rad = 0.5 * std::numbers::pi / 180.0;  // read and written in degrees [C]
+  // Levenberg-Marquardt iterations at most; a consistent start converges in a handful [C].
+  int max_iterations = 100;
+};
+
+// The scenario keys of BatchOptimumOptions (batch_optimum.*).
+void describe(OptionsOf<BatchOptimumOptions> auto& o, auto& f) {
+  f.choice("start", o.start, "start of the solve: truth (perturbed, seeded) or relative_point (its run's poses)",
+           kOptimumStarts);
+  f.field("start_sigma_position", o.start_sigma_position, "start truth: perturbation of each pose per axis, units",
+          at_least(0.0));
+  f.degrees("start_sigma_rotation_deg", o.start_sigma_rotation_rad,
+            "start truth: perturbation of each pose's rotation per axis", at_least(0.0));
+  f.field("use_odometry", o.use_odometry, "add the frames' odometry as relative-pose measurements");
+  f.field("odometry_std_xyz", o.odometry_std_xyz, "odometry std. deviation per step, units", above(0.0));
+  f.degrees("odometry_std_angle_deg", o.odometry_std_angle_rad, "odometry rotation std. deviation per step",
+            above(0.0));
+  f.field("max_iterations", o.max_iterations, "Levenberg-Marquardt iterations at most", at_least(1));
+}
+
+}  // namespace relslam::eval
