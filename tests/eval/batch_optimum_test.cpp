@@ -6,6 +6,7 @@
 
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
+#include "relslam/eval/experiments/source_registry.hpp"
 
 #include <gtest/gtest.h>
 

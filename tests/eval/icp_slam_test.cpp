@@ -28,7 +28,7 @@ PathRun run(const std::string& algorithm, const std::string& planar, const std::
   PlanarSimulationSource source(loaded);
   auto slam = make_plane_algorithm(algorithm, {loaded.scenario, source.start()});
   PathRun out;
-  source.stream([&](const PlaneFrame& frame, const PlaneTruthFrame& truth) {
+  source.stream([&](const PlaneFrame& frame, const PlaneTruthFrame& truth, const std::vector<CsvField>&) {
     slam->step(frame);
     const std::optional<PlanarPose> pose = slam->pose();
     ASSERT_TRUE(pose);

@@ -31,7 +31,7 @@ TEST(ScanRawlog, SimulatedLaserRunReadBackByMrpt) {
   PlanarSimulationSource source(laser_scenario());
   source.record_into(dir);
   std::vector<PlaneFrame> frames;
-  source.stream([&](const PlaneFrame& f, const PlaneTruthFrame&) { frames.push_back(f); });
+  source.stream([&](const PlaneFrame& f, const PlaneTruthFrame&, const std::vector<CsvField>&) { frames.push_back(f); });
   ASSERT_EQ(frames.size(), 40u);
 
   mrpt::obs::CRawlog log;
@@ -67,7 +67,7 @@ TEST(ScanRawlog, SameSeedSameScansAndBytes) {
   for (const auto& dir : {a, b}) {
     PlanarSimulationSource source(laser_scenario());
     source.record_into(dir);
-    source.stream([](const PlaneFrame&, const PlaneTruthFrame&) {});
+    source.stream([](const PlaneFrame&, const PlaneTruthFrame&, const std::vector<CsvField>&) {});
   }
   EXPECT_EQ(test::read_file(a / "laser.rawlog"), test::read_file(b / "laser.rawlog"));
 }
