@@ -1,5 +1,5 @@
 // EM plane extraction per frame, EM1 against EM2 (thesis 3.5.4: "the second one executes about
-// twice as fast"; relative_plane_em.md §4.7, issue 14 §6). Frames: the point sensor (σ_pt =
+// twice as fast"; thesis 3.5.4). Frames: the point sensor (σ_pt =
 // 0.05, seed 1) along Map D's path (small frustum) and Map E's (large frustum), every 20th
 // iteration of the first loop, simulated before the timed region. Each benchmark iteration
 // extracts one frame (round robin), with the frame's own EM seed. A third case, "panels",

@@ -1,5 +1,5 @@
 // Relative Plane per-iteration time (thesis 4.4.2.5 Profiler, 4.4.3.1 RltXPointsS::step;
-// relative_plane_em.md §6.1 E32). Three parts (the third is below, BM_KeyPointsMapDLoops):
+// E32). Three parts (the third is below, BM_KeyPointsMapDLoops):
 //  1. the algorithm alone on Maps A, B and D (each map's own sensor, default Gaussian noise,
 //     seed 1): median / p95 / max ms per iteration over the whole path; target: median under
 //     0.1 ms (the thesis ran 30 it/s with EM on a 2004 CPU, so 33 ms was its whole budget);
@@ -7,7 +7,7 @@
 //     planes and visible planes. The thesis's claim (4.2.2, 4.3.8) is that the time follows the
 //     planes in view, not the map size, so the RltPlane bins should be flat.
 //  3. parts 2 and 3 on Map D at 1/2/4 loops and Rule 22 on/off (below);
-//  4. issue 15: Map E, two loops, with the interval checks and roll-backs on (Rules 31–34): median
+// 4. Map E, two loops, with the interval checks and roll-backs on (Rules 31–34): median
 //     and p99 ms per iteration with the replays counted in, the share of the time spent
 //     replaying; and the resident memory of a 20,000-iteration run (BM_MapELongRunMemory).
 // Frames are simulated before the timed region; each step() is timed with steady_clock.
@@ -91,7 +91,7 @@ std::vector<StepSample> timed_run(const Run& run, const plane::RelativePlaneOpti
   return samples;
 }
 
-// RELSLAM_PLANE_RUNTIME_DIR=DIR: each run's steps as DIR/<name>_runtime.csv (spec §6.1 E32's
+// RELSLAM_PLANE_RUNTIME_DIR=DIR: each run's steps as DIR/<name>_runtime.csv (E32's
 // runtime.csv, plus the Profiler's parts), for plotting or for finding where a slow step was.
 void write_csv(const std::string& name, const std::vector<StepSample>& samples) {
   const char* dir = std::getenv("RELSLAM_PLANE_RUNTIME_DIR");
@@ -269,7 +269,7 @@ void BM_Rule22Revisit(benchmark::State& state) {
 }
 BENCHMARK(BM_Rule22Revisit)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 
-// Part 4 (issue 15): Map E (its own large frustum and Gaussian noise, two loops) with parts 2
+// Part 4: Map E (its own large frustum and Gaussian noise, two loops) with parts 2
 // and 3 and the interval checks on (Rules 31–34, off by default): a check that fails sends a hint
 // and the step rolls back and replays, inside step(), so each step's time includes its replays.
 // Median and p99 ms per iteration pooled over seeds 1–3 (three runs each), and the share of the
@@ -324,7 +324,7 @@ void BM_MapETwoLoopsRollBacks(benchmark::State& state) {
 }
 BENCHMARK(BM_MapETwoLoopsRollBacks)->DenseRange(1, 3)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 
-// Item 2 of issue 15's bounded-memory test, measured: Map E looped for 20,000 iterations (14
+// Item 2 of the bounded-memory test, measured: Map E looped for 20,000 iterations (14
 // loops) with the thesis's 1200-observation store and the roll-back checkpoints on. The resident
 // set now (/proc/self/statm) and the process's peak (getrusage ru_maxrss) before the run (the
 // frames already simulated) and at 5,000, 10,000, 15,000 and 20,000 iterations: bounded memory
@@ -444,7 +444,7 @@ void print_maps() {
 void print_e32() {
   if (e32_samples.empty()) return;
   std::printf(
-      "\nE32 (relative_plane_em.md §6.1): Map D, %d loops + the closing part, %zu iterations, seed 1; each step's "
+      "\nE32: Map D, %d loops + the closing part, %zu iterations, seed 1; each step's "
       "fastest of 3 runs\n",
       e32_loops, e32_samples.size());
   print_bins("ms per iteration by RltPlanes (the map's size; flat = does not grow with the map)", 20,

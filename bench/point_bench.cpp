@@ -1,5 +1,5 @@
-// Relative Point per-iteration time (issues #3, #20): median and p95 over one figure-eight loop at
-// density 25 / 100 / 550 with the thesis's time components (Figs 138-142), against issue 20's
+// Relative Point per-iteration time: median and p95 over one figure-eight loop at
+// density 25 / 100 / 550 with the thesis's time components (Figs 138-142), against the
 // targets (<= 0.015 / 0.04 / 0.25 ms median; the thesis measured 18 ms on a 2004 CPU at 550), and
 // whether the time grows with the map on the double-size figure eight (Fig 136).
 #include "relslam/point/rlt_mapper.hpp"

@@ -1,4 +1,4 @@
-// Issue #4's figures, printed: the share of run time spent binning at 3 % dynamic points
+// The figures, printed: the share of run time spent binning at 3 % dynamic points
 // (thesis: under 2 %, Fig 117), comparisons against n ln n at 10 % uncorrelated points
 // (Fig 113), init and load time per local index at densities 100-550 (Figs 138-139, 144-145),
 // and the incremental against the rebuilt global index over two loops (Fig 110).

@@ -1,4 +1,4 @@
-// The global relaxation's solve (issue 19, relslam/relax/ceres_relaxation.hpp) on synthetic loops
+// The global relaxation's solve (relslam/relax/ceres_relaxation.hpp) on synthetic loops
 // of groups, the shape of a figure eight's chain: each point is seen by five consecutive groups,
 // the last groups' by the first ones (the loop closure). Each group's relative map is exact,
 // its start transform drifted a little more each group, to 1° and 0.5 units at the loop's end

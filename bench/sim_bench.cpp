@@ -1,4 +1,4 @@
-// Simulating one figure-eight loop (3800 iterations), issue #2 §7: target under 2 s at
+// Simulating one figure-eight loop (3800 iterations): target under 2 s at
 // density 550 (~535 visible points per frame) including writing the rawlog, on 2 cores.
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/sources/frame_stream.hpp"

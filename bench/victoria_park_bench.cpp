@@ -1,4 +1,4 @@
-// Victoria Park timing (issue 6; thesis 6.8): the Relative Point algorithm's time per scan with
+// Victoria Park timing (thesis 6.8): the Relative Point algorithm's time per scan with
 // one grouping level, two (with dynamic-point detection) and three, on the thesis's windows and
 // the whole log (7,249 scans, bridged by dead reckoning). The thesis measured 0.296 / 0.40 /
 // 0.57 ms per scan, 2.15 / 2.9 / 4.13 s for the log, on a 2004 CPU; our target is the whole

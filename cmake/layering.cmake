@@ -1,4 +1,4 @@
-# The layers of style.md 2.1, checked at configure time: libslam (relslam_slam) links Eigen only;
+# The layers, checked at configure time: libslam (relslam_slam) links Eigen only;
 # sim (relslam_sim) adds libslam; only eval (relslam_eval) and what sits on it may reach MRPT,
 # OpenCV, JSON and the command line. A library or test program that reaches upward stops the
 # configuration here, instead of compiling fine until someone notices.
@@ -47,7 +47,7 @@ function(relslam_check_layer target)
   foreach(library IN LISTS linked)
     foreach(pattern IN LISTS ARGN)
       if(library MATCHES "${pattern}")
-        message(FATAL_ERROR "${target} links ${library}, which lies above its layer (style.md 2.1, cmake/layering.cmake)")
+        message(FATAL_ERROR "${target} links ${library}, which lies above its layer (cmake/layering.cmake)")
       endif()
     endforeach()
   endforeach()

@@ -88,7 +88,7 @@ PlaneSimFrame PlaneSensor::observe(const PlanarWorld& world, const PlanarPose& w
     }
     // Seen from behind (judged on the noisy wall, so an edge-on wall flips its normal with the
     // noise, as in the thesis's earliest simulator, Fig. 72): report the face towards the robot,
-    // whose left end is the other one (spec §3.4 step 5).
+    // whose left end is the other one.
     const Eigen::Vector2d d = b - a;
     if (seen_from_both_sides && Eigen::Vector2d(-d.y(), d.x()).dot(-a) < 0.0) {
       std::swap(part.a, part.b);

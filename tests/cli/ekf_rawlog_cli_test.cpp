@@ -1,4 +1,4 @@
-// The EKF on your own log (issue 35): MRPT's 6D demo logs scored as MRPT's own kf-slam scores
+// The EKF on your own log: MRPT's 6D demo logs scored as MRPT's own kf-slam scores
 // them, the noise taken from the log and said where from, odometry as kf-slam feeds it, a
 // sensor off the robot's origin, and tune-ekf on a log with a held-out score.
 #include "test_support.hpp"

@@ -1,4 +1,4 @@
-// The files the Chapter 5 figures are drawn from (issue 14, figures 46, 55-61, 105-108, paper
+// The files the Chapter 5 figures are drawn from (figures 46, 55-61, 105-108, paper
 // Figs 6-8; E29): a run's point_frames.csv (output.point_frames), em-bench's walls, planes and
 // points (bench_planes.csv, bench_points.csv) and em-bench --compare's em_compare.csv, each
 // checked against the files the same frames already produce (em_frames.csv, bench.csv, the

@@ -1,4 +1,4 @@
-// relslam run on the point sensor's scenarios (issue 14 §4–5): E23 (p-em-office, Map D, small
+// relslam run on the point sensor's scenarios (–5): E23 (p-em-office, Map D, small
 // frustum) and E25 (p-em-room, Map E, large frustum) through EM2 and EM1 into the Relative Plane
 // algorithm: em_frames.csv and the extraction's own column, every visible wall found on
 // noise-free frames, the noise-free pipeline's map, determinism, and a bad extractor name.
@@ -75,7 +75,7 @@ TEST(EmRun, E24GroupWithABrokenChainIsPlacedByRule30sSearch) {
 using FramesCase = std::tuple<std::string, int, std::string>;  // scenario, frames, extractor
 class NoiseFreeFrames : public testing::TestWithParam<FramesCase> {};
 
-// Issue 14 §5: noise-free frames through EM2 and EM1 find every visible wall (with the minimum
+// noise-free frames through EM2 and EM1 find every visible wall (with the minimum
 // support, metrics/extraction_score.hpp), nothing else, and each normal within 0.01°.
 TEST_P(NoiseFreeFrames, EveryVisibleWallFoundExactly) {
   const auto& [scenario, frames, extractor] = GetParam();
@@ -110,7 +110,7 @@ INSTANTIATE_TEST_SUITE_P(E23E25, NoiseFreeFrames,
                            return scene(std::get<0>(info.param)) + "_" + std::get<2>(info.param);
                          });
 
-// Issue 14 §5: the noise-free pipeline maps every wall. Part 1 alone (key points off) maps what
+// the noise-free pipeline maps every wall. Part 1 alone (key points off) maps what
 // the plane sensor's runs map (p-office 6 of 36 walls, p-room 3 of 10); with key points (parts
 // 2–3, the scenarios' setting) EM2's planes map all of Map D with the small frustum and all of
 // Map E (one loop here).

@@ -65,7 +65,7 @@ TEST(GoldenSimulation, TinySeededRunMatchesTheCommittedFiles) {
   for (const auto& [file, separator] : files) expect_same_table(golden / file, dir / "run" / file, separator);
 }
 
-// Relative Point golden runs (issue 20): short versions of shipped point scenarios must write
+// Relative Point golden runs: short versions of shipped point scenarios must write
 // the very CSV and TUM text committed in tests/data/golden_point/<case>/, byte for byte, except
 // the measured times. Speed work must not change a single result: every index variant, storage
 // layout and reuse keeps the summation order (README, "Same results").

@@ -1,4 +1,4 @@
-// relslam run / simulate on planar scenarios (issue 12 §3, §4): the files and columns a run
+// relslam run / simulate on planar scenarios: the files and columns a run
 // writes, exactness of noise-free runs through the whole harness, determinism, and clear
 // errors (exit 2) for bad maps and scenarios.
 #include "test_support.hpp"
@@ -15,7 +15,7 @@ using test::read_csv;
 using test::run_relslam;
 using Table = test::CsvTable;
 
-// Spec §8: noise-free runs keep map and pose within 1e-6 wherever the pose is valid.
+// noise-free runs keep map and pose within 1e-6 wherever the pose is valid.
 constexpr double kNoiseFree = 1e-6;
 
 std::vector<std::string> run_args(const std::string& scenario, const std::filesystem::path& out,
@@ -90,7 +90,7 @@ TEST(PlanarRun, WritesTheFilesAndColumnsOfTheIssue) {
 
 // E21 (Fig 67: a completed map): Map D without noise, parts 2 and 3 on, small frustum, one loop
 // and the partial second. Every wall is mapped, the pose is exact wherever it is valid, every key
-// point claimed is a real wall end (keypoints.csv, issue 13), and the motion model carries the
+// point claimed is a real wall end (keypoints.csv), and the motion model carries the
 // corners (iterations.csv mm_* columns), its plane's tracked extent only widening.
 TEST(PlanarRun, E21CompletedMapHasEveryWallAndOnlyRightKeyPoints) {
   test::ScratchDir dir;

@@ -1,4 +1,4 @@
-// The issue-13 experiments of the Relative Plane half (spec relative_plane_em.md §6.1: E02, E09,
+// The issue-13 experiments of the Relative Plane half (E02, E09,
 // E12, E15) through the whole harness: E02's pairs.csv and pair_sigma.csv, and what the thesis
 // says Rules 4, 19, 21 and 28 change (thesis 4.3.4-4.3.6), each against its switch.
 #include "test_support.hpp"
@@ -65,7 +65,7 @@ TEST(PlaneExperiments, E02PairOfStaticEndsHasTheLowestSigmaAndNamesTheRealEnds) 
   }
   EXPECT_LT(sigma.number(chosen, "sigma"), 0.05) << "at the noise level";
 
-  // pairs.csv's chosen series gives pair_sigma.csv's mean and σ (pooled 2-D, spec §2.6).
+  // pairs.csv's chosen series gives pair_sigma.csv's mean and σ (pooled 2-D).
   const std::string ab = sigma.text(chosen, "kp_a") + sigma.text(chosen, "kp_b");
   double mx = 0, mz = 0;
   for (std::size_t k = 0; k < pairs.rows.size(); ++k) {

@@ -1,4 +1,4 @@
-// The global relaxation (issue 19) as a user runs it: scenarios/s-ekf-f8-relaxed.json, the
+// The global relaxation as a user runs it: scenarios/s-ekf-f8-relaxed.json, the
 // Relative Point algorithm and MRPT's 6D EKF on one stream, judged on the run folder's summary.
 // About a minute in a Release build, nearly all of it the EKF's.
 #include "test_support.hpp"

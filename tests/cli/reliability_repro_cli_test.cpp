@@ -1,4 +1,4 @@
-// Every input of ../shared/reliability/repro (issue 18) run through the relslam program: each
+// Every input of../shared/reliability/repro run through the relslam program: each
 // crashed it, exhausted memory, exited 1 without a location or wrote non-finite numbers. Now each
 // must give exit 2 and a message naming the file and line/record in under 5 s and 1 GB. The
 // files are used in place (read-only, not copied into the repository); without ../shared the

@@ -1,6 +1,6 @@
 // relslam render: the replayed state drawn where the axes say, pictures of the asked size, a
 // video with one frame per step, and bad requests refused with the option named; for point runs
-// and for planar ones (spec relative_plane_em.md §6.0).
+// and for planar ones.
 #include "relslam/eval/io/map_render.hpp"
 #include "relslam/eval/io/planar_render.hpp"
 #include "test_support.hpp"
@@ -135,7 +135,7 @@ TEST_F(RenderCli, BadRequestsNameTheOption) {
   EXPECT_NE(r.err.find("manifest.json: not found"), std::string::npos) << r.err;
 }
 
-// ---- planar runs (spec relative_plane_em.md §6.0, thesis Fig. 67) ----------------------------
+// ---- planar runs (thesis Fig. 67) ----------------------------
 
 const cv::Vec3b kWall(0, 215, 255);        // true walls, yellow
 const cv::Vec3b kMappedPlane(200, 70, 0);  // mapped planes, blue

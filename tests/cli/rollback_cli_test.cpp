@@ -1,4 +1,4 @@
-// Rules 31–34 (interval checks, hints, roll-back and replay; thesis 4.3.7.2, spec §5.11, §8)
+// Rules 31–34 (interval checks, hints, roll-back and replay; thesis 4.3.7.2, 6.3, 6)
 // through the whole harness: rollbacks.csv and the counts in summary.csv, a forced roll-back that
 // changes no file but the timings, and every roll-back ending with hint levels at most 3 on noisy
 // Maps D and E over several seeds.
@@ -38,7 +38,7 @@ void expect_same_table(const std::filesystem::path& a_file, const std::filesyste
   }
 }
 
-// Spec §8 roll-back idempotence through the harness: on noisy Map E (parts 2–3, the interval
+// thesis 6 roll-back idempotence through the harness: on noisy Map E (parts 2–3, the interval
 // checks on, 900 iterations through the first two corners and their motion models) a roll-back
 // with no hint forced every 40 iterations 30 back gives the very files of the run without it —
 // every CSV but the measured times and the roll-back counts themselves.

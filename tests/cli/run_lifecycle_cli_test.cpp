@@ -1,4 +1,4 @@
-// A run's manifest tells how it ended (issue 18): "running" from the start, "interrupted" after
+// A run's manifest tells how it ended: "running" from the start, "interrupted" after
 // SIGINT/SIGTERM, left "running" by SIGKILL; and --force replaces such a folder. These start
 // the relslam program itself, since the signals go to a process.
 

@@ -1,4 +1,4 @@
-// relslam run --rawlog on planar (2D range-bearing) logs (issue 35): recognised by the source,
+// relslam run --rawlog on planar (2D range-bearing) logs: recognised by the source,
 // run through the planar machinery (relative_point + ekf2d, Relative Point bridged by the
 // log's odometry), and a Relative Point run whose pose is lost for most of it says so.
 #include "relslam/eval/io/range_bearing.hpp"

@@ -1,4 +1,4 @@
-// Scenario values that used to crash, exhaust memory or run to NaN (issue 18; the inputs of
+// Scenario values that used to crash, exhaust memory or run to NaN (the inputs of
 // ../shared/reliability/repro, rebuilt here so the suite does not depend on that folder).
 // Each must now stop at loading with exit 2 and a located message.
 

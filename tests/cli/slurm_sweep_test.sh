@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A one-machine Slurm (controller and node on 127.0.0.1) runs the slurm.sbatch that
-# relslam sweep --emit writes; --aggregate then gives the table a local sweep gives (issue 17).
+# relslam sweep --emit writes; --aggregate then gives the table a local sweep gives.
 # Installs Debian's slurmd, slurmctld and munge itself if they are missing (scripts/setup.sh
 # stays free of Slurm), starts the daemons, and stops exactly those it started.
 # Exits 77 (CTest: skipped) with a message when Slurm cannot be had or started here.

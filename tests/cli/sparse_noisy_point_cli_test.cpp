@@ -1,4 +1,4 @@
-// Relative Point beyond the thesis's operating range (issue 16): the adaptive preset on sparse
+// Relative Point beyond the thesis's operating range: the adaptive preset on sparse
 // figure eights (5 to 25 points in view) and at density 100 with other noise levels, run as a
 // user would (relslam run), judged on the run folder.
 #include "test_support.hpp"
@@ -25,7 +25,7 @@ struct Case {
   // Bound on the final mean landmark error. The error of a Relative map grows along the path
   // with the registration noise of each group (thesis 6.6); it scales with sigma and with the
   // fewer anchors a sparse scene gives. Each is about 1.5 times the value measured on this seed
-  // (the note of issue 16 lists them), so a regression of the method, not seed noise, fails it.
+  // (measured when the preset was built), so a regression of the method, not seed noise, fails it.
   double max_final_mean_error;
   // Duplicates, and static landmarks RltBinning took for dynamic ones, as shares of the map
   // (the issue asks below 1 %); every landmark seen 100+ times is on the map. Before the adaptive

@@ -1,5 +1,4 @@
-// EM1 and EM2 on the point sensor's frames (spec §8: "EM on the test-bench fixtures"; issue 14
-// §5): every wall EM must find is found once, with errors bounded by what TLS can do at the
+// EM1 and EM2 on the point sensor's frames ("EM on the test-bench fixtures"): every wall EM must find is found once, with errors bounded by what TLS can do at the
 // point noise, no bridge plane at a corner, collinear pieces kept apart, determinism, and bad
 // input handled.
 
@@ -24,11 +23,11 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180.0;
 // Noise-free points lie exactly on their walls: the fit is exact to rounding (coordinates ~30).
 constexpr double kExactOffset = 1e-9;
-// Issue 14 §5: normal error below 0.01° on noise-free frames.
+// normal error below 0.01° on noise-free frames.
 constexpr double kExactAngle = 0.01 * kDegree;
 // Noise-free ends: EM1's E-step and EM2's growth take every point of a visible piece, so the
 // rectangle's ends are its outermost points; EM2's density check may cut a last strip that is
-// partly empty, at most one density step (0.25) [spec §4.4].
+// partly empty, at most one density step (0.25) [thesis 3.5.3].
 constexpr double kExactEnds = 0.25 + 1e-9;
 // Under noise, a bound of 6 standard deviations of the TLS estimate (em_scenes.hpp) plus a
 // floor for the shortest pieces; ends move by the outermost points' noise (~3σ along the wall
@@ -117,7 +116,7 @@ View corner() {
   return v;
 }
 
-// Map D's corridor and corners, and Map E's room, from poses along their paths (spec §3.7).
+// Map D's corridor and corners, and Map E's room, from poses along their paths.
 std::vector<View> map_views() {
   std::vector<View> views;
   const sim::PlanarWorld d = test::office_loop(), e = test::motion_room();
@@ -155,7 +154,7 @@ TEST(EmExtraction, FindsTwoSeparateWallsWithinTheNoiseBounds) {
 }
 
 TEST(EmExtraction, CornerGivesTwoPlanesAndNoBridge) {
-  // ALL assignment + the exclusivity cull (spec §4.3 default): a plane across the corner shares
+  // ALL assignment + the exclusivity cull: a plane across the corner shares
   // its points with both walls and is culled (thesis Fig. 59 without the cull).
   for (Variant v : {Variant::Em1, Variant::Em2})
     for (double sigma : {0.0, 0.05})
@@ -216,7 +215,7 @@ TEST(EmExtraction, CollinearPiecesOfACorridorStaySeparate) {
     }
 }
 
-// The share of a wall's visible points that its best plane holds (SegComp's overlap, spec §7.2).
+// The share of a wall's visible points that its best plane holds (SegComp's overlap).
 double best_share(const Outcome& out, int wall) {
   const std::vector<int>& ids = out.frame.truth.wall_ids;
   const auto visible = std::count(ids.begin(), ids.end(), wall);
@@ -228,7 +227,7 @@ double best_share(const Outcome& out, int wall) {
 }
 
 TEST(EmExtraction, Em2LeftoversJoinTheirPlane) {
-  // Frames of the issue 14 runs (σ_pt 0.05 and 0, seed 1) where EM2 left the rest of a wall
+  // Frames of earlier runs (σ_pt 0.05 and 0, seed 1) where EM2 left the rest of a wall
   // piece out of every plane, too few points to seed their own and under EM2's stop rule
   // (left_fraction of the frame), so SegComp missed the wall or the plane ended short:
   // p-em-office-noise iteration 2225 (Map D, wall 5: 0.7 long, 40 points; seeded near the top
@@ -305,7 +304,7 @@ TEST(EmToPlaneObjects, VerticalPlanesFacingTheRobotWithTheirTrueWalls) {
       EXPECT_GT(p.y_lo, 0.0);
       EXPECT_LT(p.y_hi, 2.5);
       EXPECT_GT(p.y_hi - p.y_lo, 2.5 - 2 * 0.2) << "the whole height, within a grid cell at each end";
-      // End tolerance max(0.5·s_pt, 3σ_pt) (spec §4.5): the outermost field points lie within
+      // End tolerance max(0.5·s_pt, 3σ_pt) (thesis 5.1): the outermost field points lie within
       // 0.75 of a cell of the wall's end.
       const PlaneTruth t = extracted_plane_truth(p, out.planes.support[i], out.frame.truth.wall_ids, ends, 0.15);
       const sim::Wall& w = view.world.walls[static_cast<std::size_t>(t.wall_id)];

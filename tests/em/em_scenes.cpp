@@ -14,7 +14,7 @@ sim::Wall facing_wall(int id, Eigen::Vector2d a, Eigen::Vector2d b, const Eigen:
 
 namespace {
 
-// Spec §3.7 Map D's split of a side from `from` to `to` (coordinate along the side): pieces of
+// Map D's split of a side from `from` to `to` (coordinate along the side): pieces of
 // 4 with gaps of 1 from 0.5 after the start; a last shorter piece ending 0.5 before the end is
 // kept if at least 1.5 long.
 std::vector<std::pair<double, double>> split_side(double from, double to) {

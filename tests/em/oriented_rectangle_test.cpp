@@ -84,7 +84,7 @@ TEST(SearchRectangle, AgreesWithTheTangentProjectionOnVerticalWalls) {
 TEST(TangentRectangle, NoiseFreeEndsAreTheOuterPointsAndRunFromKeyPointOneToTwo) {
   const std::vector<Eigen::Vector3d> points = wall_points({5, 2}, {5, -2}, 0.0, 3);  // faces +x: away
   const Fitted r = fit_all(points);
-  // The fit faces the origin: n = (−1, 0, 0), u = (n_z, −n_x) = (0, 1) (spec §2.2).
+  // The fit faces the origin: n = (−1, 0, 0), u = (n_z, −n_x) = (0, 1) (thesis 4.2.1).
   EXPECT_NEAR((r.tangent.tangent - Eigen::Vector2d(0, 1)).norm(), 0.0, 1e-12);
   double z_min = 1e9, z_max = -1e9;
   for (const Eigen::Vector3d& p : points) z_min = std::min(z_min, p.z()), z_max = std::max(z_max, p.z());

@@ -41,7 +41,7 @@ TEST(AlgorithmRegistry, RelativePointIterationColumnsAreTheThesisComponents) {
   const std::vector<std::string> columns = rp->iteration_columns();
   ASSERT_FALSE(columns.empty());
   EXPECT_EQ(columns.front(), "t_init_ms");
-  EXPECT_EQ(columns.back(), "t_relax_ms");  // global relaxation (issue 19), beyond the thesis
+  EXPECT_EQ(columns.back(), "t_relax_ms");  // global relaxation, beyond the thesis
   EXPECT_EQ(std::set<std::string>(columns.begin(), columns.end()).size(), columns.size());
 }
 

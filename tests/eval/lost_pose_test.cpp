@@ -1,4 +1,4 @@
-// The lost status (issue 35): when a run counts as lost, and summary.csv reading it back.
+// The lost status: when a run counts as lost, and summary.csv reading it back.
 #include "relslam/eval/algorithms/lost_pose.hpp"
 #include "relslam/eval/metrics/summary_reader.hpp"
 

@@ -67,7 +67,7 @@ TEST(MrptGroundTruth, MalformedFilesNameTheFileAndLine) {
   EXPECT_EQ(error_reading(dir / "missing.txt", true), (dir / "missing.txt").string() + ": file not found");
 }
 
-// Issue 18: a double outside int's range was cast to int (undefined behaviour).
+// a double outside int's range was cast to int (undefined behaviour).
 TEST(MrptGroundTruth, LandmarkIdsMustBeWholeNumbersInIntRange) {
   test::ScratchDir dir;
   test::write_file(dir / "huge.txt", "1 2 3 0 0 0 7\n4 5 6 0 0 0 1e300\n");

@@ -89,7 +89,7 @@ TEST(PlanarMapFile, MapAWallsFaceIntoTheRoomInFileOrder) {
 }
 
 TEST(PlanarMapFile, MapBWindowsFollowTheSpecsOverlapRule) {
-  // Spec §3.7: a piece is visible iff its x-extent overlaps [x_r + 1, x_r + 8].
+  // a piece is visible iff its x-extent overlaps [x_r + 1, x_r + 8].
   const sim::PlanarMap map = read_planar_map(map_file("b_hallway_unit.json"));
   const sim::PlanarPath path(map.path);
   ASSERT_EQ(path.iterations(), 761);
@@ -120,7 +120,7 @@ TEST(PlanarMapFile, MapCTurnsAroundOnTheLineOfTheSideCorridorWall) {
 
 TEST(PlanarMapFile, MapDHasTheSpecsPiecesAndLoop) {
   const sim::PlanarMap map = read_planar_map(map_file("d_office_loop.json"));
-  // Inner bottom (spec §3.7): [3.5, 7.5] [8.5, 12.5] [13.5, 17.5] [18.5, 22.5] [23.5, 26.5] at z = 3, facing −z.
+  // Inner bottom: [3.5, 7.5] [8.5, 12.5] [13.5, 17.5] [18.5, 22.5] [23.5, 26.5] at z = 3, facing −z.
   const double inner_bottom[][2] = {{3.5, 7.5}, {8.5, 12.5}, {13.5, 17.5}, {18.5, 22.5}, {23.5, 26.5}};
   for (int i = 0; i < 5; ++i) {
     const sim::Wall& w = map.world.walls[20 + i];
@@ -138,7 +138,7 @@ TEST(PlanarMapFile, MapDHasTheSpecsPiecesAndLoop) {
 }
 
 TEST(PlanarMapFile, MapEAtTheFirstCornerSeesOnlyThePartialEastWall) {
-  // Spec §3.7's check on Map E: at (21.5, 2.5) facing +x only the end wall is visible, partially.
+  // 's check on Map E: at (21.5, 2.5) facing +x only the end wall is visible, partially.
   sim::PlanarMap map = read_planar_map(map_file("e_motion_room.json"));
   map.sensor.noise = sim::PlaneNoiseOptions::none();
   const sim::PlanarSimulator simulator(map, 1);

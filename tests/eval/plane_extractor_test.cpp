@@ -1,5 +1,5 @@
 // Every plane extractor of relative_plane.extractor (EM2, EM1, the Open3D baseline when built)
-// on bad input (issue 14 §5): an empty frame, collinear points and NaN points give a clear
+// on bad input: an empty frame, collinear points and NaN points give a clear
 // outcome (no planes, or the planes of the finite points), never a crash; one wall is one
 // plane; the same seed gives the same planes.
 #include "relslam/eval/sources/make_plane_extractor.hpp"

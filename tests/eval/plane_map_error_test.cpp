@@ -1,4 +1,4 @@
-// Scores of the planar half (spec §7.2) on hand-made cases with known answers.
+// Scores of the planar half on hand-made cases with known answers.
 #include "relslam/eval/metrics/plane_map_error.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// Bounded memory over long runs (spec §8 "a 20 000-iteration run stays within bounded memory (the
-// buffers wrap)"; §9 row 41; thesis 4.4.3.4, 4.4.3.17): Map E looped with its sensor's noise,
+// Bounded memory over long runs ("a 20 000-iteration run stays within bounded memory (the
+// buffers wrap)"; thesis 4.4.3.4, 4.4.3.17): Map E looped with its sensor's noise,
 // parts 2 and 3 and the interval checks with roll-back on (Rules 31–34), the thesis's store of
 // 1200 observations per RltPlane. Structural bounds are asserted at every iteration; the memory
 // itself (peak RSS) is printed by bench/plane_bench.cpp (BM_MapELongRunMemory), never asserted.
@@ -92,7 +92,7 @@ void run_looped_map_e(int loops, int iterations, Extremes& out) {
 }
 
 // The map's own counts per loop are not bounded, only their growth: each corner starts a new
-// motion-model group (the thesis makes a new one every time, spec §5.10.4 [T]), so groups grow by
+// motion-model group (the thesis makes a new one every time, thesis 4.3.6 [T]), so groups grow by
 // four a loop; and with noise a wall now and then gets a second RltPlane. (Before the motion model
 // ended once a second plane on the map was in view, the fourth corner's lasted from the third
 // loop on, the pose drifted along the start wall, and up to three RltPlanes a loop were new.)

@@ -1,5 +1,5 @@
 // The Relative Plane algorithm (thesis Chapter 4, part 1: Rules 1–12) on the simulator's planar
-// maps (scenarios/maps/*.json, spec §3.7), scored against the truth as eval scores it (spec §7):
+// maps (scenarios/maps/*.json), scored against the truth as eval scores it:
 // E03 (Map A with noise), E04 (Map B), E05 (Map C's edge-on wall) through the real sensor.
 #include "test_support.hpp"
 
@@ -26,7 +26,7 @@ using plane::RelativePlaneOptions;
 using plane::RelativePlaneStep;
 using plane::RltXPointsS;
 
-// Spec §8: noise-free runs keep map and pose within 1e-6 wherever the pose is valid.
+// noise-free runs keep map and pose within 1e-6 wherever the pose is valid.
 constexpr double kNoiseFree = 1e-6;
 
 sim::PlanarMap map_file(const std::string& name) {
@@ -41,7 +41,7 @@ sim::PlanarMap noise_free(sim::PlanarMap map) {
 struct IterationScore {
   bool pose_valid = false;
   PlanarPoseError pose;
-  PlaneMapError map;     // spec §7.2: e_ends against the majority wall, key point to key point
+  PlaneMapError map;     // e_ends against the majority wall, key point to key point
   double map_faced = 0;  // the sum of e_ends with a plane facing away scored against the wall turned round
   int rlt_planes = 0;    // RltPlanes so far
   int on_map = 0;        // RltPlanes on the map
@@ -169,7 +169,7 @@ void expect_one_plane_per_wall(const SimRun& run, const sim::PlanarMap& map) {
 }
 
 // E03 (thesis 4.3.1, Figs 64, 70; Rules 1–5): Map A, always visible, ten loops, Gaussian noise
-// (σ_p = 0.01, σ_r = 0.3°, spec §3.8). No drift: the map error (sum of e_ends over the four
+// (σ_p = 0.01, σ_r = 0.3°). No drift: the map error (sum of e_ends over the four
 // walls) averaged over the last loop is within 10 % of the first loop's — measured: seed 1
 // 0.0373 → 0.0358, seed 2 0.0684 → 0.0680, seed 3 0.0507 → 0.0474 — and the pose error stays
 // at single-iteration noise level (measured at most 0.06 and 0.011 rad) in every loop.
@@ -297,7 +297,7 @@ TEST(PlaneScenario, MapCEdgeOnWallBreaksThePoseOnlyWithoutRule10) {
 // the frustum are compared by their key points (Rules 13–15, 18, 19), chained with size
 // correction (Rule 28), placed at their largest size from their key point (Rule 17, A47) and
 // grown to that size for the pose (Rule 16); at a corner, where one partial wall is in view
-// (spec §3.7), the motion model (Rules 23–27) carries the pose. Noise-free the growth phases
+//, the motion model (Rules 23–27) carries the pose. Noise-free the growth phases
 // are split without a moving average (window 1: Fig 105's lag puts samples of the next phase
 // into a piece) and "the same size" is exact (τ_len 1e-9: an end cut by less than τ_len would
 // otherwise be taken for the whole plane).
@@ -348,7 +348,7 @@ TEST(PlaneScenario, MapDSmallFrustumPassesTheFirstCornersExactlyWithTheMotionMod
 // the real ends; without it no chain places the next plane and the pose is lost for good. Rule
 // 36's reserves keep each plane's comparison from the interval where it was anchored on the
 // same end as its canonical size (without them a plane never seen whole is chained across its
-// two ends from 831 on: spec §5.7.2's mixed anchor, off by the part never seen, 0.207).
+// two ends from 831 on: thesis 4.3.6's mixed anchor, off by the part never seen, 0.207).
 // Two refinements make the run exact wherever the pose is valid (2475 of 2501 iterations):
 // - rigid_sigma: at 718–720 (and 1318–1320, the same corner a loop later) the far corner of the
 //   frustum sweeps wall 31 in during a turn, cut at both ends; the thesis compares it anyway
@@ -397,7 +397,7 @@ TEST(PlaneScenario, MapDSmallFrustumWholeRunIsExactWhereverThePoseIsValid) {
   EXPECT_LT(worst_of(run_map(map, 1, rule15_only), 838).valid, 10);
 }
 
-// The save system (Rules 35, 36; spec §5.12, E19 / Figs 98–99 in small): with a store of 300
+// The save system (Rules 35, 36; thesis 4.3.7.3, E19 / Figs 98–99 in small): with a store of 300
 // observations per RltPlane the iterations two planes shared are overwritten long before the loop
 // ends, their comparison can no longer be made, and without the save system their group loses
 // them — the planes vanish from the map (measured: 31 of 36 walls left; 12 before Rule 11 came
@@ -481,7 +481,7 @@ TEST(PlaneScenario, MapDSlowRobotThesisStoreLosesPlanesWithoutTheSaveSystemOnly)
   EXPECT_LT(worst, 0.01);
 }
 
-// Rule 37 (CheckForLoopClosing and MendMergeAfterLoopClosing, spec §5.5.5) on Map E with noise,
+// Rule 37 (CheckForLoopClosing and MendMergeAfterLoopClosing, thesis 4.3.6) on Map E with noise,
 // two loops (seed 2). While a motion model runs, a group counts as holding a plane in view also
 // through the plane's duplicate (another RltPlane global matching finds for the same wall); a
 // group holding all of them becomes current, and each plane in view gets a one-way link to its
@@ -541,7 +541,7 @@ TEST(PlaneScenario, Rule37OneWayLinksChartOnlyAndLeaveTheGroupsAlone) {
   }
 }
 
-// The large frustum (spec §3.8: half-angle 35°, 30 deep) keeps walls in view longer, and still
+// The large frustum (half-angle 35°, 30 deep) keeps walls in view longer, and still
 // shows one partial wall at each corner: the whole run (one loop and the partial second that
 // closes it) is exact wherever the pose is valid (measured: 2477 of 2501 iterations, 1e-14),
 // every one of the 36 walls is mapped with its key-point end exact, and a motion model carried
@@ -570,7 +570,7 @@ TEST(PlaneScenario, MapDLargeFrustumLoopIsExactAndMapsEveryWall) {
   expect_one_end_exact(run, map);
 }
 
-// Map D with the sensor's noise (spec §3.8: σ_p 0.01, σ_r 0.3°), large frustum, parts 2 and 3 on
+// Map D with the sensor's noise (σ_p 0.01, σ_r 0.3°), large frustum, parts 2 and 3 on
 // with their default constants, five seeds. Measured (seeds 1–5): all 36 walls mapped in every
 // run; final mean e_ends 0.025–0.041 (noise-free: 0.0085, the parts of walls never seen whole);
 // median position error 0.018–0.033 (the pose is taken against a map chained through a dozen
@@ -642,11 +642,11 @@ TEST(PlaneScenario, MapDSmallFrustumWithNoiseMapsOnlyWall3Twice) {
   }
 }
 
-// Map E (spec §3.7; paper Fig 5, thesis Figs 69, 83–102), noise-free, its own large frustum, both
+// Map E (paper Fig 5, thesis Figs 69, 83–102), noise-free, its own large frustum, both
 // loops, parts 2 and 3 on with the noise-free constants above (the interval checks off, their
 // default). Every wall is mapped and the pose is exact wherever it is valid (measured: 2841 of
 // 2881 iterations, 1e-14); the map holds the one error the thesis accepts:
-//  - Rule 17 maps a plane at the largest size it was seen (spec §5.8, A47), so a plane never
+//  - Rule 17 maps a plane at the largest size it was seen (thesis 4.4.3.11, A47), so a plane never
 //    seen whole keeps its key-point end exact and is short by the part never seen. Three are:
 //    the inner block's side walls (walls 6, x = 17, and 9, x = 7; z ∈ [5.5, 10.5], 4.5 beside the
 //    path, so the 35° frustum shows them from z = 2.5 + 4.5 / tan 35° = 8.927 on: at most 1.573 of
@@ -698,20 +698,20 @@ TEST(PlaneScenario, MapENoiseFreeTwoLoopsIsExactButForThePartsNeverSeen) {
   EXPECT_NEAR(final_ends, 0.5 * (23 - 7.929629983144714) + 4.5 / std::tan(35 * std::numbers::pi / 180) - 3, 1e-6);
 }
 
-// Spec §3.7's checks on Map E, at every corner of both loops (noise-free, as above): as the robot
+// 's checks on Map E, at every corner of both loops (noise-free, as above): as the robot
 // nears a corner the side walls leave the 35° frustum and only the end wall is in view, cut on
 // both sides, from 1.6 units (32 iterations) before the corner; after three iterations without a
 // pose (Rule 26) the motion model starts, and carries the pose through the turn. The end wall
 // widens as the robot turns (Rule 23 grows the plane), until its far end comes into view; then
 // it shrinks a little — the planar frustum's far corners reach further than straight ahead
-// (Fig 89, spec §5.10.4). The next wall comes into view about 47° into the turn: at the
+// (Fig 89, thesis 4.3.6). The next wall comes into view about 47° into the turn: at the
 // corners where it is 13.5 ahead, its end 2 beyond the path, at 82° − 35° = 46.6° (the first
 // iteration past it: 48°); where it is 21.5 ahead, at 49.7° (51°). The motion model ends there:
 // within min_readings − 1 iterations in the first loop (the new plane is grouped, Rules 8, 12), at
 // once in the second (Rule 29: a group holds every plane in view). At the fourth corner the next
 // wall, the east wall, is on the map already, but no group holds it with the start wall and it is
 // in too many groups to start one (Rule 21's cap): neither Rule 29 nor a new group ends the motion
-// model, so the chart's group does, at once (spec §5.10.4: it ends once a second plane is in view;
+// model, so the chart's group does, at once (thesis 4.3.6: it ends once a second plane is in view;
 // before, it lasted until an inner-block wall that may still start a group came into view, 11 and
 // 16 iterations late, and from the third loop on none may: the pose drifted along the start wall).
 TEST(PlaneScenario, MapEMotionModelStartsAndEndsWhereSpec37Says) {
@@ -765,7 +765,7 @@ TEST(PlaneScenario, MapEMotionModelStartsAndEndsWhereSpec37Says) {
     }
     EXPECT_TRUE(far_end_seen);
     const double entry_deg = std::abs(wrap_angle(heading(enters) - heading(corner))) * 180 / std::numbers::pi;
-    EXPECT_NEAR(entry_deg, c % 2 == 0 ? 48 : 51, 1e-9);  // spec §3.7: "at ψ ≈ 47°"
+    EXPECT_NEAR(entry_deg, c % 2 == 0 ? 48 : 51, 1e-9);  // "at ψ ≈ 47°"
     // The motion model's start and end.
     EXPECT_EQ(start, lone + options.motion_model.start_after - 1);
     const int late = end - enters;

@@ -249,7 +249,7 @@ TEST(Rawlog, NonFiniteMeasurementsAreRejectedWithRecordAndIndex) {
 }  // namespace
 }  // namespace relslam::eval
 
-// Our own bounds on MRPT's framing (issue 18): the mutations the fuzzer found, on a file we write.
+// Our own bounds on MRPT's framing: the mutations the fuzzer found, on a file we write.
 namespace relslam::eval {
 namespace {
 
@@ -385,7 +385,7 @@ TEST(RawlogBounds, MrptDemoLogsPassTheBounds) {
 }  // namespace
 }  // namespace relslam::eval
 
-// Sensor fields are checked for sense, not only finiteness (issue 34): a negative field of view,
+// Sensor fields are checked for sense, not only finiteness: a negative field of view,
 // a maximum range below the minimum or readings of 3e38 ran the EKF for minutes, a sensor 1e300
 // away from the robot gave NaN, and two finite odometry readings differed by infinity.
 namespace relslam::eval {

@@ -1,4 +1,4 @@
-// aggregate.csv's cells (issue 18): a run that is missing or failed stays visible in its
+// aggregate.csv's cells: a run that is missing or failed stays visible in its
 // combination's rows instead of vanishing from the statistics.
 
 #include "relslam/eval/experiments/sweep_tables.hpp"

@@ -100,7 +100,7 @@ TEST(VictoriaParkExperiment, TheWholeLogRunsEndToEndWhenBridgedByDeadReckoning) 
   EXPECT_EQ(r.experiment.rows[0].status.text(), "ok");
   EXPECT_EQ(r.experiment.rows[0].iterations, 7249);
   // Hundreds of trees mapped over the whole park (measured 454; over 500 before dead reckoning
-  // checked the registrations, issue 19).
+  // checked the registrations).
   EXPECT_GT(r.experiment.rows[0].landmarks_on_map, 300);
   const test::CsvTable rp = test::read_csv(dir / "relative_point/iterations.csv");
   int bridged = 0;
@@ -108,7 +108,7 @@ TEST(VictoriaParkExperiment, TheWholeLogRunsEndToEndWhenBridgedByDeadReckoning) 
   EXPECT_GT(bridged, 0);
 }
 
-// Dead reckoning checks and stands in for weak registrations (issue 19: odometry_max_turn_deg,
+// Dead reckoning checks and stands in for weak registrations (odometry_max_turn_deg,
 // odometry_max_shift), and the global bound is 2.5 m: scenarios/victoria-park-bridged.json
 // follows GPS over the whole log within the issue's goal of 5 m with the relaxation off and on
 // (measured 2.36, 2.58 and 1.78 m; the EKF with odometry 1.50 m; before the gate, 83-137 m).
@@ -126,7 +126,7 @@ TEST(VictoriaParkExperiment, TheBridgedWholeLogFollowsGpsWithinFiveMetresWithAnd
   }
 }
 
-// The global relaxation on the whole log (issue 19): with the adaptive preset and no bridges a
+// The global relaxation on the whole log: with the adaptive preset and no bridges a
 // periodic solve meets a Levenberg-Marquardt step whose linear solve fails (CHOLMOD: not positive
 // definite), which Ceres reported through an uninitialised glog in the middle of the run. The
 // solver retries with more damping; the run ends ok and prints nothing.

@@ -128,7 +128,7 @@ TEST(VictoriaPark, MalformedFilesNameTheFileAndLine) {
   EXPECT_EQ(error_reading(dir.path()), (dir / "gps.dat").string() + ": file not found");
 }
 
-// Issue 18: each of these crashed or misread the log without saying where.
+// each of these crashed or misread the log without saying where.
 TEST(VictoriaPark, SensorsManagerWithoutALaserLineIsAnError) {  // back() on no scans before
   test::ScratchDir dir;
   write_small_log(dir.path(), "1.000 10.0 1.0 0.2\n");

@@ -1,5 +1,5 @@
 #pragma once
-// Test-only clipped walls for the key-point tests (spec §8): a wall of which the robot sees a
+// Test-only clipped walls for the key-point tests: a wall of which the robot sees a
 // scripted part that grows and shrinks as a frustum would cut it, observed from a moving,
 // turning robot, with the plane sensor's noise. Exact geometry, so the truth of every offset
 // and key point is known.
@@ -33,7 +33,7 @@ struct ClippedWall {
 std::function<double(int)> constant(double s);
 std::function<double(int)> moving(double s0, double per_iteration);  // s0 + per_iteration·t
 
-// Per-observation noise of the plane sensor (spec §3.6): the whole wall moved by a Gaussian
+// Per-observation noise of the plane sensor (thesis 4.3.3): the whole wall moved by a Gaussian
 // translation and turned about its midpoint before it is clipped, and each frustum-cut end
 // jittered along the wall (the frustum meets the moved wall elsewhere) — so the sizes are noisy.
 struct ClipNoise {
@@ -51,7 +51,7 @@ std::vector<PlaneObject> observe_clipped(const ClippedWall& wall, int first, int
                                          relslam::test::SeededRandom& random);
 
 // The truth for pair (k1, k2): the second wall's part of length l2 from its end k2 in the frame
-// of the first wall's part of length l1 from its end k1 (spec §5.6.3).
+// of the first wall's part of length l1 from its end k1 (thesis 4.3.4).
 PlanarPose anchored_delta(const ClippedWall& w1, double l1, KeyPoint k1, const ClippedWall& w2, double l2, KeyPoint k2);
 
 }  // namespace relslam::plane::test

@@ -52,7 +52,7 @@ TEST(GrowthPhaseSplits, SharpPeakSplitsHalfAWindowLate) {
   EXPECT_EQ(growth_phase_splits(peak, 1, 0.03), std::vector<int>{29});  // no average: no lag
 }
 
-// Spec §8: grow → plateau → shrink with noise splits once, within ± w_ma of the plateau.
+// grow → plateau → shrink with noise splits once, within ± w_ma of the plateau.
 TEST(GrowthPhaseSplits, GrowPlateauShrinkWithNoiseSplitsOnceInsideThePlateau) {
   const int grow = 30, plateau = 15, shrink = 30;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {

@@ -44,7 +44,7 @@ void expect_pose_near(const PlanarPose& actual, const PlanarPose& expected, doub
 }
 
 constexpr int kIterations = 40;
-constexpr Noise kSpecNoise{0.01, 0.3 * 3.14159265358979 / 180, 0.01};  // spec §3.8 σ_p, σ_r; cut jitter σ_p
+constexpr Noise kSpecNoise{0.01, 0.3 * 3.14159265358979 / 180, 0.01};  // σ_p, σ_r; cut jitter σ_p
 constexpr double kNoisyDelta = 0.03;  // mean of 40 samples of σ ≈ 0.03, plus L_max's upward bias ≈ 2σ_cut
 
 // Two walls of a corner ahead: `wall1` across the view, `wall2` along the right.
@@ -143,7 +143,7 @@ TEST(KeyPointPairs, SeriesOfDifferentLengthsAreRejected) {
   EXPECT_EQ(key_point_pairs({}, {}).samples, 0);
 }
 
-// Spec §8: both full size the whole interval → both static, no key point, the offset valid.
+// both full size the whole interval → both static, no key point, the offset valid.
 TEST(ChooseKeyPoints, StaticStaticGivesBothStatic) {
   for (const Noise& noise : {Noise{}, kSpecNoise}) {
     const ClippedWall w1 = across(constant(0), constant(8)), w2 = along_right(constant(0), constant(8));

@@ -44,7 +44,7 @@ TEST(RelativePlaneOptions, ViolationsNameTheirField) {
 
 TEST(RelativePlaneOptions, KeyPointTiesAreTheSpecValuesAndChecked) {
   RelativePlaneOptions o;
-  EXPECT_EQ(o.key_point_ties.relative, 0.3);  // spec §5.14 r_tie, ε_σ
+  EXPECT_EQ(o.key_point_ties.relative, 0.3);  // r_tie, ε_σ
   EXPECT_EQ(o.key_point_ties.absolute, 0.002);
   o.key_point_ties.relative = 1.5;
   o.key_point_ties.absolute = -1;
@@ -56,7 +56,7 @@ TEST(RelativePlaneOptions, KeyPointTiesAreTheSpecValuesAndChecked) {
 
 TEST(RelativePlaneOptions, GrowthPhaseBoundsAreTheSpecValuesAndChecked) {
   RelativePlaneOptions o;
-  EXPECT_EQ(o.growth_phase.window, 5);  // spec §5.14 w_ma, h, n_min_cmp
+  EXPECT_EQ(o.growth_phase.window, 5);  // w_ma, h, n_min_cmp
   EXPECT_EQ(o.growth_phase.hysteresis, 0.03);
   EXPECT_EQ(o.growth_phase.min_samples, 3);
   EXPECT_EQ(o.interval_choice, IntervalChoice::MostIterations);  // Rule 18

@@ -73,7 +73,7 @@ TEST(MatchPlane, OffsetJumpFails) {
   EXPECT_EQ(match_plane(wall_ahead(), current, MatchBounds{}), -1);
 }
 
-// The sensor's rotation noise turns a plane about its own midpoint (spec §3.8). A piece far along
+// The sensor's rotation noise turns a plane about its own midpoint. A piece far along
 // its wall — 27 units from the foot of the perpendicular, as a far wall in the large frustum —
 // turned by 1° moves its offset d by 27·sin 1° = 0.47, past c_d = 0.3; the robot turning by the
 // same angle would leave d unchanged. The offset test allows what the angle explains.

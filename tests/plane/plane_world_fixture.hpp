@@ -13,14 +13,14 @@
 namespace relslam::plane::test {
 
 // A wall in the world: `a` to `b` ordered so its front normal Rot(+90°)(b − a) faces the
-// walkable side (spec §3.1).
+// walkable side (thesis 4.4.2).
 struct Wall {
   Eigen::Vector2d a;
   Eigen::Vector2d b;
 };
 
 // Which walls the robot reports, always whole (full size): every front-facing wall, or those
-// with some part in the robot-frame box near ≤ x ≤ far, |z| ≤ half_width (spec §3.7 Map B's
+// with some part in the robot-frame box near ≤ x ≤ far, |z| ≤ half_width (Map B's
 // scripted window [x_r + 1, x_r + 8], turned with the robot).
 struct Visibility {
   bool always = false;
@@ -29,7 +29,7 @@ struct Visibility {
   double half_width = 3;
 };
 
-// A path of in-place turns and straight moves, one pose per iteration (spec §3.2).
+// A path of in-place turns and straight moves, one pose per iteration (thesis 4.4.2).
 class PathBuilder {
  public:
   explicit PathBuilder(const PlanarPose& start) : poses_{start} {}
@@ -52,7 +52,7 @@ PlaneFrame observe(const std::vector<Wall>& walls, const PlanarPose& world_T_rob
                    const Visibility& visibility, std::vector<int>* wall_ids = nullptr);
 PlaneRun run_path(const std::vector<Wall>& walls, const std::vector<PlanarPose>& path, const Visibility& visibility);
 
-// Map A, the four planes problem (spec §3.7): four walls of length 8 at distance 5.
+// Map A, the four planes problem: four walls of length 8 at distance 5.
 std::vector<Wall> four_planes_walls();
 // Its square path: from (−2, −2) facing +x, MOVE 4, TURN +90° four times a loop.
 std::vector<PlanarPose> four_planes_path(int loops, double step, double turn_step_rad);

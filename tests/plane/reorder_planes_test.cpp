@@ -50,7 +50,7 @@ bool is_permutation_of_all(std::vector<int> order, int n) {
   return order == all;
 }
 
-// Spec §5.7.3: the exact search finds the heaviest path over usable pairs, whatever the graph.
+// thesis 4.3.7.1: the exact search finds the heaviest path over usable pairs, whatever the graph.
 TEST(BestComparisonPath, ExactSearchMatchesEveryOrderTried) {
   relslam::test::SeededRandom random(30);
   for (int trial = 0; trial < 60; ++trial) {

@@ -12,11 +12,11 @@
 namespace relslam::plane {
 namespace {
 
-constexpr double kExact = 1e-12;  // spec §8: Rule 3 invariance to 1e-12
+constexpr double kExact = 1e-12;  // Rule 3 invariance to 1e-12
 constexpr double kPi = std::numbers::pi;
 
 // Whether both walls' midpoints lie ahead of the robot within ±60° of its heading: E01's poses
-// have both walls in view (spec §6.1), here of a wide viewing cone.
+// have both walls in view, here of a wide viewing cone.
 bool both_in_view(const PlanarPose& robot, const PlaneObject& wall1, const PlaneObject& wall2) {
   const auto ahead = [&](const PlaneObject& wall) {
     const Eigen::Vector2d m = robot.inverse_apply(wall.midpoint());

@@ -1,4 +1,4 @@
-// RltXMMPoint (thesis 4.3.6, Rules 23–27; spec §5.10): the motion model tracks the robot from one
+// RltXMMPoint (thesis 4.3.6, Rules 23–27): the motion model tracks the robot from one
 // partial plane under forward-only motion and grows the plane as more of it comes into view.
 #include "relslam/plane/rlt_xmm_point.hpp"
 

@@ -1,4 +1,4 @@
-// Rule 36 (RltXPointRef::DoBackupCheck, thesis 4.4.3.5; spec §5.12) on constructed references:
+// Rule 36 (RltXPointRef::DoBackupCheck, thesis 4.4.3.5; thesis 4.3.7.3) on constructed references:
 // which of the current comparison and the pair's reserve the chain gets, and what is kept.
 #include "relslam/plane/rlt_xpoint_ref.hpp"
 
@@ -71,7 +71,7 @@ TEST(RltXPointRefBackup, SmallerReserveIsOverwritten) {
 }
 
 // The circular array overwrote the pair's shared iterations: no comparison, the reserve stands
-// in (spec §5.8 step 5); an unplaceable result (Rule 15's tie) is never kept.
+// in; an unplaceable result (Rule 15's tie) is never kept.
 TEST(RltXPointRefBackup, ReserveStandsInWhenNoComparisonCanBeMade) {
   RltXPointRef ref = with_reserve(comparison(2.0, 90, 3.0, KeyPoint::Left, 2.0));
   CompareResult none;
@@ -95,7 +95,7 @@ TEST(RltXPointRefBackup, AnotherPartnerDropsTheReserve) {
   EXPECT_EQ(ref.reserve->length2, 2.0);
 }
 
-// The test Rule 35's snapshot shares (spec §5.12).
+// The test Rule 35's snapshot shares (thesis 4.3.7.3).
 TEST(RltXPointRefBackup, ReplacesSavedOrdersBySizeThenInterval) {
   EXPECT_TRUE(replaces_saved(5.0, 1, 4.0, 100, kSameLength));
   EXPECT_FALSE(replaces_saved(3.0, 100, 4.0, 1, kSameLength));

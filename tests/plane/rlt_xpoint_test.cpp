@@ -12,7 +12,7 @@ namespace relslam::plane {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Spec §6 E31: chain orders agree to 1e-9 without noise or with position-only noise.
+// E31: chain orders agree to 1e-9 without noise or with position-only noise.
 constexpr double kSameMap = 1e-9;
 
 // RltPlanes of the four planes world over one loop, every wall seen in every iteration; with
@@ -106,7 +106,7 @@ TEST(RltXPoint, Rule7JoinsOnlyAPlaneSeenWithEveryMember) {
   EXPECT_THROW(group.set_chain({0, 1, 3}), std::logic_error);
 }
 
-// Rule 37 (spec §5.5.5): a one-way link is for charting only. The group does not list the plane,
+// Rule 37 (thesis 4.3.6): a one-way link is for charting only. The group does not list the plane,
 // the plane has no membership in it, and the group computes exactly what it computes without the
 // link (every field of every reference and edge bit for bit).
 TEST(RltXPoint, Rule37OneWayLinkNeitherJoinsTheGroupNorChangesItsComputation) {

@@ -15,7 +15,7 @@ namespace relslam::plane {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Spec §8: noise-free runs keep map and pose within 1e-6 wherever the pose is valid.
+// noise-free runs keep map and pose within 1e-6 wherever the pose is valid.
 constexpr double kNoiseFree = 1e-6;
 
 struct RunSummary {
@@ -316,7 +316,7 @@ TEST(RltXPointsS, Rule12LinkPlacesTheNewPlaneExactly) {
 }
 
 // Part 1 (options.key_points off) has no Rule 22 charting (thesis 4.3.5 ff.): the current group
-// is the one last created (spec §5.5.1 [R]: a new group becomes the working group), and it stays
+// is the one last created (thesis 4.3.2 [R]: a new group becomes the working group), and it stays
 // current when the robot is back among an older group's planes only.
 TEST(RltXPointsS, CurrentGroupIsTheGroupLastCreated) {
   const std::vector<PlaneFrame> frames = scripted_frames(kShortLivedGroup, 71);

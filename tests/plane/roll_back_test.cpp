@@ -1,5 +1,5 @@
 // Rules 31–34: hints, the stored inputs and checkpoints, and RltXPointsS's roll-back and replay
-// (thesis 4.3.7.2, 4.4.3.15–17, walkthrough 4.5; spec §5.11, §8).
+// (thesis 4.3.7.2, 4.4.3.15–17, walkthrough 4.5).
 #include "relslam/plane/hints.hpp"
 #include "relslam/plane/roll_back.hpp"
 #include "relslam/plane/rlt_xpoints_s.hpp"
@@ -188,7 +188,7 @@ RelativePlaneOptions with_key_points() {
   return o;
 }
 
-// Spec §8, roll-back idempotence: a roll-back with no hint restores an earlier state and replays
+//, roll-back idempotence: a roll-back with no hint restores an earlier state and replays
 // the stored inputs; every step after it is the step the run without it had, bit for bit. Forced
 // every 37 iterations 25 back (so replays start from checkpoints before and after the target),
 // part 1 and parts 2–3, on the hallway there and back (groups made and re-acquired during a
@@ -233,7 +233,7 @@ TEST(RltXPointsS, RequestedRollBackWithIntervalChecksReplaysTheSameRun) {
   EXPECT_EQ(replayed.counts.rollbacks, plain.counts.rollbacks + 3);
 }
 
-// Spec §5.11.3: a roll-back further back than the oldest state kept is refused and counted, and
+// thesis 4.3.7.2: a roll-back further back than the oldest state kept is refused and counted, and
 // the run goes on as if it had not been asked for.
 TEST(RltXPointsS, RollBackOlderThanTheOldestCheckpointIsRefusedAndCounted) {
   const test::PlaneRun world = hallway_there_and_back();

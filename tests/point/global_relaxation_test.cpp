@@ -1,4 +1,4 @@
-// The Relative Point algorithm with the global relaxation on (beyond the thesis, issue 19):
+// The Relative Point algorithm with the global relaxation on (beyond the thesis):
 // whole runs on simulated figure eights (label `scenario`).
 #include "mapper_run.hpp"
 
@@ -94,7 +94,7 @@ TEST(GlobalRelaxation, TriggerSkipsSolvesWhereTheGroupsAgreeButNotTheLoopClosure
   EXPECT_LT(t.final_mean_landmark_error, 1.1 * a.final_mean_landmark_error);
 }
 
-// The point of it (issue 19): one noisy loop (sigma 0.1) ends with a smaller map error when the
+// The point of it: one noisy loop (sigma 0.1) ends with a smaller map error when the
 // loop closure relaxes the chain of groups than with the thesis's algorithm, same input.
 TEST(GlobalRelaxation, LoopClosureLowersTheFinalLandmarkError) {
   const RunReport off = run(one_loop(0.1), 1, PointSlamOptions{});
@@ -157,7 +157,7 @@ Displacement displacement(const RunReport& reference, const RunReport& planted, 
   return d;
 }
 
-// A deliberately wrong global match in a whole run (issue 19): from the planted iteration on,
+// A deliberately wrong global match in a whole run: from the planted iteration on,
 // one old point carries a new landmark's observations, so every group built on it ties two
 // places far apart (18 units: the first pair plan_wrong_match finds). Under the Cauchy loss such a tie pulls with at most half the loss scale
 // (0.15), and dozens of correct ties hold each group, so no other landmark may end up as far as

@@ -1,4 +1,4 @@
-// The global relaxation problem as built from and written back to an RltMap (issue 19), on
+// The global relaxation problem as built from and written back to an RltMap, on
 // noise-free maps from MapFeed: no solver here (tests/relax/ has the Ceres one).
 #include "relslam/point/group_relaxation.hpp"
 

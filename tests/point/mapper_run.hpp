@@ -35,7 +35,7 @@ int majority(const std::map<int, int>& votes);
 sim::SimOptions one_loop(double noise);
 
 // A deliberately wrong match planted in a run: at `iteration`, the observation of true landmark
-// `observed` goes to the RltPoint standing for true landmark `assigned_to` (issue 19).
+// `observed` goes to the RltPoint standing for true landmark `assigned_to`.
 struct WrongMatch {
   int iteration = -1;  // -1: none
   int observed = -1;

@@ -1,4 +1,4 @@
-// estimate_noise_sigma and estimate_noise_online (issue 16) on the simulator's figure eight:
+// estimate_noise_sigma and estimate_noise_online on the simulator's figure eight:
 // data that states no noise gets it from the residuals of the groups' averages.
 #include "relslam/point/noise_estimate.hpp"
 
@@ -18,7 +18,7 @@ constexpr int kPilotIterations = 300;
 
 // The density-100 figure eight's first iterations give the simulator's sigma within 30 %, which
 // is what the bounds need: they grow in proportion to sigma, and the thesis's held from 0.1 to
-// nearly 0.2 (issue 16's table). Measured: within 6 % at 0.05 to 0.3.
+// nearly 0.2 (the table). Measured: within 6 % at 0.05 to 0.3.
 TEST(NoiseEstimate, GroupAveragesGiveTheSensorNoiseWithinThirtyPercent) {
   for (const double sigma : {0.05, 0.1, 0.2, 0.3}) {
     sim::SimOptions world;

@@ -20,7 +20,7 @@ TEST(PointSlamOptions, DefaultsAreValidAndFollowTheThesis) {
   EXPECT_EQ(o.final_group.next_min, 1);
 }
 
-// Issue 16: PrevGroupMin from the points in view, between a rigid registration's 3 and the
+// PrevGroupMin from the points in view, between a rigid registration's 3 and the
 // level's own prev_min; the thesis preset ignores what is in view.
 TEST(PointSlamOptions, AdaptivePrevGroupMinFollowsThePointsInView) {
   const GroupLevelOptions final_level = final_level_defaults();  // prev_min 20, share 0.2
@@ -32,7 +32,7 @@ TEST(PointSlamOptions, AdaptivePrevGroupMinFollowsThePointsInView) {
   EXPECT_EQ(prev_group_min(temporary_level_defaults(), Preset::Adaptive, 100.0), 6);
 }
 
-// Two-point registration (issue 16) places a group on two anchors: PrevGroupMin's floor is then
+// Two-point registration places a group on two anchors: PrevGroupMin's floor is then
 // 2, reached only where the points in view are few; the thesis preset never has it.
 TEST(PointSlamOptions, TwoPointRegistrationLowersTheAdaptiveFloorToTwo) {
   const GroupLevelOptions final_level = final_level_defaults();

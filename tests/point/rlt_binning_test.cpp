@@ -9,7 +9,7 @@
 namespace relslam::point {
 namespace {
 
-// Synthetic untransformed tracks (spec 8.6): static points jitter by sigma 0.1 per axis around
+// Synthetic untransformed tracks (thesis 6.5.3): static points jitter by sigma 0.1 per axis around
 // fixed positions; uncorrelated points jitter by 1.0 more. 60 iterations each. The
 // uncorrelated ones are a random subset; `noisy` says which.
 std::vector<ObservationRing> tracks(int n, int uncorrelated, std::uint64_t seed, std::vector<bool>* noisy = nullptr) {

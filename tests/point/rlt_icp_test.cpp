@@ -86,7 +86,7 @@ TEST(RltICP, FitsNoisyPointsInTheLeastSquaresSense) {
   EXPECT_LT(Eigen::AngleAxisd(Eigen::Matrix3d(fit->rotation.transpose() * truth.rotation)).angle(), 1e-3);
 }
 
-// Two pairs fix b_T_a up to a rotation about their line; the prior supplies it (issue 16). A
+// Two pairs fix b_T_a up to a rotation about their line; the prior supplies it. A
 // robot on a floor (robot frame: +y up) errs in yaw: for a level line that error is removed
 // exactly, so a prior whose yaw is off by any angle still gives the true motion.
 TEST(RegisterTwoPoints, RemovesAPriorsYawErrorExactlyForALevelLine) {
@@ -131,7 +131,7 @@ TEST(RegisterTwoPoints, RejectsASteepLineAndCoincidentPoints) {
   EXPECT_FALSE(register_two_points(origin, level, level, level, identity, up, sine_45)) << "b's pair coincides";
 }
 
-// Two-anchor groups average their rotation prior over their iterations (issue 16): the chordal
+// Two-anchor groups average their rotation prior over their iterations: the chordal
 // mean of noisy copies of one rotation comes back to it, far closer than a single copy.
 TEST(MeanRotation, AveragesNoisyCopiesOfOneRotation) {
   test::SeededRandom rng(16);
@@ -156,7 +156,7 @@ TEST(MeanRotation, AveragesNoisyCopiesOfOneRotation) {
 }
 
 // A registration rejected as a mismatch (a swap of two pairs) leaves the pose to the predicted
-// rotation and the pairs' centroids (issue 16): the swap does not move the centroid.
+// rotation and the pairs' centroids: the swap does not move the centroid.
 TEST(RegisterCentroids, PutsTheCentroidOnItsImageAndIgnoresASwap) {
   test::SeededRandom rng(17);
   const Rigid3 truth = random_motion(rng);

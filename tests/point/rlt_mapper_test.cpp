@@ -113,7 +113,7 @@ TEST(RltMapper, TooFewPointsAtTheFirstIterationIsReportedAsAFailure) {
   EXPECT_EQ(mapper.group_stats().created, 0);
 }
 
-// The adaptive preset (issue 16) on a start the thesis cannot root: one point in view for 40
+// The adaptive preset on a start the thesis cannot root: one point in view for 40
 // iterations, then a static scene of five. The map frame moves to the first iteration with
 // three points in view, and noise-free observations then map the five exactly in that frame.
 TEST(RltMapper, AdaptivePresetMovesTheMapFramePastASparseStart) {
@@ -166,7 +166,7 @@ TEST(RltMapper, EmptyAndSparseFramesDoNotDisturbTheRun) {
   EXPECT_LT((mapper.pose().translation - sim.path().world_T_robot(299).translation).norm(), 0.5);
 }
 
-// With use_odometry (Victoria Park's --bridge, issue 19), a registration that lands far from
+// With use_odometry (Victoria Park's --bridge), a registration that lands far from
 // where the frame's dead reckoning puts the robot is a mismatch: at iteration 200 every
 // observation is forced onto the point of another landmark, so each registration (to mapped or
 // provisional points) is garbage; the pose is then the dead-reckoned one, within

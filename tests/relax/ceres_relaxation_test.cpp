@@ -1,4 +1,4 @@
-// The Ceres global relaxation (issue 19) on synthetic chains of groups with a known truth.
+// The Ceres global relaxation on synthetic chains of groups with a known truth.
 #include "relslam/relax/ceres_relaxation.hpp"
 
 #include <gtest/gtest.h>

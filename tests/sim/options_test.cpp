@@ -79,7 +79,7 @@ TEST(SimOptions, RunSizeIsBoundedOnceTheTopLevelFieldsAreValid) {
   EXPECT_EQ(check(o)[0].field, "scale");
 }
 
-// A loop rounded to zero iterations gave a step length of 0/0 and NaN truth poses (issue 34).
+// A loop rounded to zero iterations gave a step length of 0/0 and NaN truth poses.
 TEST(SimOptions, ScaleBelowItsMinimumOrUnderAnIterationPerLoopIsRefused) {
   SimOptions o;
   o.scale = 1e-5;

@@ -73,7 +73,7 @@ TEST(PlanarPath, ArcEndsOnItsCircle) {
 }
 
 TEST(PlanarPath, SquareLoopsReturnToTheStartEveryLoop) {
-  // Map A's path (spec §3.7): MOVE 4, TURN +90, four times, counter-clockwise, 10 loops.
+  // Map A's path: MOVE 4, TURN +90, four times, counter-clockwise, 10 loops.
   std::vector<PathOperation> square;
   for (int side = 0; side < 4; ++side) {
     square.push_back(PathOperation::move(4));

@@ -12,7 +12,7 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 // Robot-frame ends computed two ways (inverse_apply vs. the pose inverse): a few ulps of ~10.
 constexpr double kFrameTolerance = 1e-12;
 
-// Map A (spec §3.7): four walls of length 8 at distance 5, facing in; a square of side 4.
+// Map A: four walls of length 8 at distance 5, facing in; a square of side 4.
 PlanarMap four_planes(int loops = 2) {
   PlanarMap map;
   map.name = "A FourPlanes";
@@ -67,7 +67,7 @@ TEST(PlanarSimulator, FourPlanesAlwaysVisibleAreExactRobotFrameWalls) {
 }
 
 TEST(PlanarSimulator, RelativePoseOfTwoWallsDoesNotDependOnTheRobotPose) {
-  // Spec §2.4: P1⁻¹ ∘ P2 is the same from every viewpoint (noise-free).
+  // thesis 4.3.1: P1⁻¹ ∘ P2 is the same from every viewpoint (noise-free).
   PlanarMap map = four_planes(1);
   map.sensor.noise = PlaneNoiseOptions::none();
   const PlanarSimulator sim(map, 1);

@@ -55,7 +55,7 @@ TEST(ViewingFrustum, WallAcrossTheViewIsCutOnBothSideEdges) {
 
 TEST(ViewingFrustum, PlanarTrapezoidReachesFartherAtTheSidesThanTheRadialSector) {
   // Along z = 3: the side edge at x = 3/tan 30°; the planar far line at x = 7, the radial far
-  // circle at x = √(49 − 9) (spec §3.3: the trapezoid's corners lie beyond `far`).
+  // circle at x = √(49 − 9) (thesis 4.4.2: the trapezoid's corners lie beyond `far`).
   ViewingFrustum planar;
   const Piece p = seen(planar, {0, 3}, {10, 3});
   expect_point(p.a, {3 / kTan30, 3});

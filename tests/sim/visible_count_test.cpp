@@ -1,5 +1,5 @@
 // Calibration of the point band against the thesis: about 0.97 visible points per unit of
-// density (spec 4.3; the paper reports 98 at density 100, the thesis 537 at 550).
+// density (thesis 6.6.2; the paper reports 98 at density 100, the thesis 537 at 550).
 #include "relslam/sim/simulator.hpp"
 
 #include <gtest/gtest.h>

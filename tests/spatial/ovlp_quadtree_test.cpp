@@ -1,4 +1,4 @@
-// Every spatial index variant against brute force on random data (issue #4).
+// Every spatial index variant against brute force on random data.
 #include "relslam/spatial/ovlp_quadtree.hpp"
 #include "relslam/spatial/global_index.hpp"
 #include "relslam/spatial/incremental_ovlp_quadtree.hpp"

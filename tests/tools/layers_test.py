@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fails on any #include that runs up a layer (style.md 2.1: folders are layers).
+"""Fails on any #include that runs up a layer (folders are layers).
 
     tests/tools/layers_test.py SOURCE_DIR
 
@@ -20,7 +20,7 @@ import sys
 from pathlib import Path
 
 # libslam: relslam/<folder>/..., ranked by folder.
-# relax (the Ceres solve of the Relative Point relaxation, issue 19) sits on point.
+# relax (the Ceres solve of the Relative Point relaxation) sits on point.
 LIBSLAM = {"core": 0, "spatial": 1, "point": 2, "plane": 2, "scan": 2, "em": 2, "relax": 3}
 # sim: one concept per file, ranked by file stem (src/ and include/relslam/sim/ alike).
 SIM = {

@@ -1,5 +1,5 @@
 // MRPT's 6D range-bearing EKF-SLAM (CRangeBearingKFSLAM) as one algorithm of a run: the
-// thesis's baseline (6.7), driven as spec mrpt §1.8 and §6 say to avoid MRPT 2.5.8's traps.
+// thesis's baseline (6.7), driven so as to avoid MRPT 2.5.8's traps.
 #include "ekf6d.hpp"
 
 #include "mrpt_filter.hpp"
@@ -35,7 +35,7 @@ class Ekf6d final : public MrptFilter {
  public:
   Ekf6d(const Ekf6dOptions& options, const RangeBearingSensor& sensor)
       : MrptFilter("ekf6d", {options.time_budget_ms, options.budget_iterations}), options_(options), sensor_(sensor) {
-    // Fixed in code and logged with the run (spec mrpt §6.2).
+    // Fixed in code and logged with the run.
     filter_.KF_options.method =
         options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
     // Without use_odometry the actions are empty anyway; the flag is belt and braces.
@@ -54,7 +54,7 @@ class Ekf6d final : public MrptFilter {
  private:
   void process(const ObservationFrame& observation, const TruthFrame& truth) override {
     // Known association: every row carries its true id; otherwise none does (never mixed,
-    // spec mrpt §1.8 item 4).
+    // see above).
     static const std::vector<int> unknown;
     const std::vector<int>& ids = options_.association == EkfAssociation::Known ? truth.landmark_ids : unknown;
     mrpt::obs::CSensoryFrame::Ptr sf = std::make_shared<mrpt::obs::CSensoryFrame>();

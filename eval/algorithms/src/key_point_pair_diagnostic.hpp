@@ -1,6 +1,6 @@
 #pragma once
 // Internal to the algorithms layer: E02's diagnostic of Rule 13 (thesis 4.3.4, Fig 68; paper
-// Fig 4; spec relative_plane_em.md §6.1 E02, §7.3): the four cross-pair offset series of one
+// Fig 4): the four cross-pair offset series of one
 // pair of RltPlanes, one growing and one shrinking, over the growth-phase piece ComparePlanes
 // would use (Rule 18), and the four spreads with the key points Rules 13–15 choose.
 

@@ -1,8 +1,7 @@
 #pragma once
 // Internal to the algorithms layer: what MRPT's EKF baselines (6D, 2D) share as algorithms of
 // a run — a map copied out of the filter after each step (an update moves every landmark), the
-// landmarks.csv columns, the time budget, and MRPT's exception text cut to its message
-// (spec mrpt §1.8).
+// landmarks.csv columns, the time budget, and MRPT's exception text cut to its message.
 
 #include "relslam/eval/algorithms/algorithm.hpp"
 

@@ -1,7 +1,7 @@
 // The Relative Plane algorithm (libslam's RltXPointsS, thesis Chapter 4) as an algorithm of a
 // planar run: its structure counts and the Profiler's part timings (thesis 4.4.2.5) as
 // iterations.csv columns, each RltPlane's observations and group in planes.csv, and its groups
-// and links as groups.csv and links.csv (spec relative_plane_em.md §7.3), every roll-back
+// and links as groups.csv and links.csv, every roll-back
 // (Rules 31–34) as rollbacks.csv and their counts in summary.csv; with key points also edges.csv
 // and E02's pairs.csv / pair_sigma.csv.
 #include "relative_plane.hpp"
@@ -63,7 +63,7 @@ const Columns<IterationRow> kIterationColumns = {
     {"rollbacks_refused", [](const IterationRow& r) { return csv_field(r.step.roll_back.refused); }},
     {"replayed_iterations", [](const IterationRow& r) { return csv_field(r.step.roll_back.replayed_iterations); }},
     {"t_rollback_ms", [](const IterationRow& r) { return csv_field(r.step.timings.roll_back_ms); }},
-    // The motion model (Rules 23–27, spec §5.10): the tracked robot in its frame.
+    // The motion model (Rules 23–27, thesis 4.3.6): the tracked robot in its frame.
     {"mm_active", [](const IterationRow& r) { return csv_field(r.step.motion_model != nullptr); }},
     {"mm_distance", [](const IterationRow& r) { return mm_field(r, [](const auto& s) { return s.distance; }); }},
     {"mm_delta_normal",
@@ -74,7 +74,7 @@ const Columns<IterationRow> kIterationColumns = {
        return mm_field(r, [](const auto& s) { return s.mm_T_robot.heading * 180.0 / std::numbers::pi; });
      }},
     // The one plane it tracks and its extent along the plane's tangent from the plane's map
-    // midpoint at the start (spec §5.10.3 [s_min, s_max]; Rule 23 only ever widens it).
+    // midpoint at the start (thesis 4.3.6 [s_min, s_max]; Rule 23 only ever widens it).
     {"mm_plane", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.plane(); }); }},
     {"mm_s_min", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.s_min(); }); }},
     {"mm_s_max", [](const IterationRow& r) { return mm_extent(r, [](const auto& m) { return m.s_max(); }); }},
@@ -171,7 +171,7 @@ class RelativePlane final : public PlaneAlgorithm {
   bool claims_key_points() const override { return slam_.options().key_points; }
   std::vector<KeyPointClaim> key_point_claims() const override {
     // Each observed plane's memberships with a key point valid at this iteration: what Rule 16
-    // grows a partial observation from (spec §5.9). A motion model's membership is not one: the
+    // grows a partial observation from (thesis 4.4.3.11). A motion model's membership is not one: the
     // end it holds is the track's as a whole (Rule 23), in a given view it can be the frustum's
     // cut, and the pose takes no key point from it (RltXPointRef::tracked).
     std::vector<KeyPointClaim> out;
@@ -208,7 +208,7 @@ class RelativePlane final : public PlaneAlgorithm {
   }
 
  private:
-  // edges.csv (diagnostic, spec §7.3): each group's last comparison of every chain edge — the piece
+  // edges.csv (diagnostic): each group's last comparison of every chain edge — the piece
   // it used, both planes' lengths there and their canonical sizes in the group (Rule 28's L_e vs
   // L*, Fig 87), key points, static flags, the Rule 15 tie, the offset and the chosen pair's σ.
   void write_edges(const std::filesystem::path& path) const {
@@ -228,7 +228,7 @@ class RelativePlane final : public PlaneAlgorithm {
     edges.close();
   }
 
-  // rollbacks.csv (spec §7.3): every roll-back request (Rules 33, 34), the plane, group and hint
+  // rollbacks.csv: every roll-back request (Rules 33, 34), the plane, group and hint
   // level that set it off (empty for a forced one), how many iterations it replayed, and whether
   // it was served (too_old, nesting: refused).
   void write_roll_backs(const std::filesystem::path& path) const {

@@ -90,7 +90,7 @@ const Columns<IterationRow> kIterationColumns = {
      [](const IterationRow& r) {
        return r.groups.alive > 0 ? csv_field(static_cast<double>(r.groups.alive_members) / r.groups.alive) : CsvField{};
      }},
-    // Global relaxation (beyond the thesis, issue 19): the solve's time, empty when none ran.
+    // Global relaxation (beyond the thesis): the solve's time, empty when none ran.
     {"t_relax_ms",
      [](const IterationRow& r) { return r.step.relaxed ? csv_field(r.step.timings.relax_ms) : CsvField{}; }},
 };

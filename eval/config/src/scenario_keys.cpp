@@ -47,7 +47,7 @@ std::string parse_number(const json& v, double& out) {
   return "";
 }
 
-// Stored in radians, written and read in degrees (style.md 2.4: units convert at the boundary).
+// Stored in radians, written and read in degrees (units convert at the boundary).
 std::string parse_degrees(const json& v, double& out) {
   if (!v.is_number()) return expected("a number", v);
   out = v.get<double>() * std::numbers::pi / 180.0;

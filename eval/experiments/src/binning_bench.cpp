@@ -18,7 +18,7 @@ struct Tracks {
 };
 
 // Static points jitter around fixed positions in the box [-50,50]x[-5,5]x[0,100]; an
-// uncorrelated point jitters more; a correlated group shares a random walk (spec 8.6). Which
+// uncorrelated point jitters more; a correlated group shares a random walk (thesis 6.5.3). Which
 // points are which is shuffled: member order matters to the binning.
 Tracks make_tracks(int n, int uncorrelated, int groups, const BinningBenchOptions& o, std::uint64_t seed) {
   sim::RandomSequence rng(seed, sim::Stream::Field, static_cast<std::uint64_t>(n));

@@ -19,10 +19,10 @@ namespace {
 
 // Iterations of the pilot run that estimates the noise of a rawlog without a sensor model: a
 // few final groups (look-ahead 60) and many temporary ones form in them, hundreds of member
-// pairs at the densities of issue 16 [C].
+// pairs at sparse densities [C].
 constexpr long long kNoisePilotIterations = 300;
 
-// The noise of data that states none, estimated online (issue 16): pilot runs of Relative Point
+// The noise of data that states none, estimated online: pilot runs of Relative Point
 // over the first iterations, whose groups' averages show the noise (estimate_noise_online). The
 // run itself then starts over with the bounds scaled from it, so that its map never holds what
 // too narrow bounds made of noisier data.

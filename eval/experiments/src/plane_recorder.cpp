@@ -107,7 +107,7 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   append_fields(plane_iteration_columns(), {k, last_map_error_, pose_error, runtime_ms, map.size(), observation.planes.size()},
                 fields_);
   algorithm_->iteration_fields(fields_);
-  // Key-point correctness (spec §7.2): a claim is right when the ends it says are real are the
+  // Key-point correctness: a claim is right when the ends it says are real are the
   // wall's real ends in this observation.
   long long checked = 0, wrong = 0;
   if (keypoints_)

@@ -36,7 +36,7 @@ std::optional<double> parse_number(std::string_view token) {
   return value;
 }
 
-// "MOVE 4", "TURN -90", "ARC 5 90": the operations of spec §3.2, angles in degrees.
+// "MOVE 4", "TURN -90", "ARC 5 90": the operations of thesis 4.4.2, angles in degrees.
 std::optional<sim::PathOperation> parse_step(const std::string& text) {
   std::istringstream in(text);
   std::vector<std::string> words;

@@ -16,7 +16,7 @@ using render::draw_text;
 using render::kText;
 using render::PixelMap;
 
-// Colours (BGR) of spec §6.0, after the thesis's screenshots (Fig. 67, paper Fig. 2): true
+// Colours (BGR) after the thesis's screenshots (Fig. 67, paper Fig. 2): true
 // walls yellow, mapped planes blue, current readings red; true path orange, estimated blue.
 const cv::Scalar kBackground(255, 255, 255);
 const cv::Scalar kWall(0, 215, 255);
@@ -49,7 +49,7 @@ void draw_path(cv::Mat& image, const std::vector<Eigen::Vector2d>& path, const P
   if (px.size() >= 2) cv::polylines(image, px, false, colour, 1, cv::LINE_AA);
 }
 
-// The robot as a triangle pointing along its +x (its viewing direction, spec §2.1).
+// The robot as a triangle pointing along its +x (its viewing direction).
 void draw_robot(cv::Mat& image, const PlanarPose& pose, double size, const PixelMap& map, const cv::Scalar& colour,
                 bool filled) {
   const std::vector<cv::Point> body = {map.pixel(pose * Eigen::Vector2d(size, 0)),

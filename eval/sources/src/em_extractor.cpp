@@ -1,4 +1,4 @@
-// EM2 and EM1 of libslam as plane extractors (thesis 3.5.2, 3.5.3; spec §4.3, §4.4).
+// EM2 and EM1 of libslam as plane extractors (thesis 3.5.2, 3.5.3).
 #include "extractors.hpp"
 
 #include "relslam/em/em1.hpp"

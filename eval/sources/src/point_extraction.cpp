@@ -42,7 +42,7 @@ PointExtraction::PointExtraction(const LoadedScenario& loaded, const std::vector
     : kind_(loaded.scenario.extraction.extractor),
       seed_(loaded.scenario.seed),
       walls_(walls),
-      // Spec §4.5 step 5: an extracted end is a real wall end within max(0.5 s_pt, 3 σ_pt).
+      // Thesis 4.5: an extracted end is a real wall end within max(0.5 s_pt, 3 σ_pt).
       end_tolerance_(std::max(0.5 * sensor.spacing, 3.0 * sensor.sigma)),
       score_options_(ExtractionScoreOptions::for_em(loaded.scenario.extraction.em)) {
   const ExtractorSettings settings{loaded.scenario.extraction.em, loaded.scenario.extraction.ransac};

@@ -1,8 +1,8 @@
-// The baseline plane extractor (issue 14 §3): Open3D's RANSAC plane segmentation
+// The baseline plane extractor: Open3D's RANSAC plane segmentation
 // (PointCloud::SegmentPlane) repeated on the points left, each plane's inliers split into
 // connected pieces by ClusterDBSCAN (RANSAC's plane is infinite: collinear walls and the far
 // side of a gap would otherwise be one plane), each piece refit by TLS and converted by the same
-// spec §4.5 code as EM's planes. Seeded per frame through utility::random::Seed, and Open3D
+// thesis 5.1 code as EM's planes. Seeded per frame through utility::random::Seed, and Open3D
 // runs on one OpenMP thread like EM: SegmentPlane's threads draw from the one generator in
 // whatever order they run, which made two runs differ, and on a shared machine the threads
 // only slowed it down. Open3D stays inside this file. Also here: SegmentPlane alone, repeated on

@@ -16,7 +16,7 @@ std::optional<Eigen::Vector2d> gps_at(const std::vector<GpsFix>& gps, double t, 
 
 VictoriaParkStream::VictoriaParkStream(const VictoriaParkLog& log, const Scenario& scenario)
     : filter_(scenario.victoria_park.filter), dead_reckoning_(log.inputs) {
-  // The laser's range and field of view, for the EKF's gating (spec mrpt §0.5).
+  // The laser's range and field of view, for the EKF's gating.
   sensor_.min_range = filter_.min_range;
   sensor_.max_range = std::min(filter_.max_range, 81.91);  // 13-bit centimetre ranges
   sensor_.field_of_view_yaw_rad = std::numbers::pi;        // 0..180 degrees

@@ -9,7 +9,7 @@ namespace relslam::em {
 bool mergeable(const EmPlane& a, const EmPlane& b, const EmOptions& o) {
   const double cosine = a.normal.dot(b.normal);
   if (!(std::abs(cosine) >= std::cos(o.merge_angle_rad))) return false;
-  // Deviation (spec §4.2 compares the offsets d at the origin): the planes' distances at each
+  // Deviation (thesis 3.5 compares the offsets d at the origin): the planes' distances at each
   // other's centroids. Two fits of one wall differing by a few degrees have offsets at the
   // robot that differ by distance × angle (0.5 at 5 units and 6°), so the origin test kept
   // pieces of one wall apart on noisy frames; near the points, where they must agree, they do.

@@ -7,7 +7,7 @@
 
 namespace relslam::em {
 
-// Options reach libslam validated (style.md 2.5): a violated check here is a bug upstream.
+// Options reach libslam validated: a violated check here is a bug upstream.
 inline void require_valid(const EmOptions& options) {
   const std::vector<OptionIssue> issues = check(options);
   if (!issues.empty())

@@ -25,7 +25,7 @@ void fill_chart(const RltXPointsState& s, std::span<const PlaneId> assignment, b
 }
 
 void chart_current_group(RltXPointsState& s, std::span<const PlaneId> assignment, std::vector<int>& chart) {
-  // RltXPointChart::GetBestXPoint (Rule 22, spec §5.5.6): the group holding most of the planes
+  // RltXPointChart::GetBestXPoint (Rule 22, thesis 4.3.5): the group holding most of the planes
   // seen this iteration; a tie keeps the current group, other ties the lowest id [R]. A motion
   // model stays current until it ends (Rules 26, 29).
   if (s.motion_model_active_ || s.xpoints_.empty()) return;
@@ -41,7 +41,7 @@ void chart_current_group(RltXPointsState& s, std::span<const PlaneId> assignment
 }
 
 void set_current(RltXPointsState& s, XPointId x) {
-  // A motion model lasts while its group is the current one (spec §5.10.4).
+  // A motion model lasts while its group is the current one (thesis 4.3.6).
   if (s.motion_model_active_ && x != s.motion_models_.back().xpoint()) {
     s.motion_model_active_ = false;
     s.motion_models_.back().end(s.iteration_);
@@ -51,7 +51,7 @@ void set_current(RltXPointsState& s, XPointId x) {
 
 bool switch_to_group_holding_all(RltXPointsState& s, std::span<const PlaneId> assignment,
                                  std::span<const DuplicateGroup> through) {
-  // Rule 29 (CheckForLoopClosing, spec §5.5.5): with two or more planes in view, a group that
+  // Rule 29 (CheckForLoopClosing, thesis 4.3.6): with two or more planes in view, a group that
   // holds every one of them becomes current — itself, or (Rule 37's count) through a duplicate
   // listed in `through`; the lowest id wins a tie [R].
   if (assignment.size() < 2) return false;
@@ -73,7 +73,7 @@ std::vector<DuplicateGroup> find_duplicate_groups(const RltXPointsState& s, Plan
                                                   const PlanarPose& world_T_robot,
                                                   const DuplicateSearchOptions& options,
                                                   std::vector<PlaneMatch>& matches) {
-  // MatchPlanetoMap's all-matches form (spec §5.5.5): every plane in view against the whole map
+  // MatchPlanetoMap's all-matches form (thesis 4.3.6): every plane in view against the whole map
   // from `world_T_robot`; a match other than the plane itself is a duplicate of its wall, and
   // each group (motion models aside) holding the duplicate is listed with the plane.
   std::vector<DuplicateGroup> out;
@@ -93,7 +93,7 @@ std::vector<DuplicateGroup> find_duplicate_groups(const RltXPointsState& s, Plan
 }
 
 int mend_merge_after_loop_closing(RltXPointsState& s, std::span<const DuplicateGroup> duplicates) {
-  // MendMergeAfterLoopClosing (Rule 37, spec §5.5.5): each group holding a duplicate of a plane
+  // MendMergeAfterLoopClosing (Rule 37, thesis 4.3.6): each group holding a duplicate of a plane
   // in view (find_duplicate_groups) that does not hold the plane gets a one-way link from it. The
   // groups' plane lists are not touched: ComputeXPoint never compares through such a link.
   int added = 0;

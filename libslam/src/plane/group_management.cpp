@@ -24,7 +24,7 @@ bool GroupManagement::may_join(PlaneId plane, XPointId x) const {
 }
 
 void GroupManagement::manage_xpoints(RelativePlaneStep& result) {
-  // Rule 29 (spec §5.10.4): leaving a motion model where a group already holds every plane in
+  // Rule 29 (thesis 4.3.6): leaving a motion model where a group already holds every plane in
   // view goes back to that group instead of starting a new one.
   if (state_.motion_model_active_ && options_.rules.return_to_visited_group) {
     const bool pseudo_merge = options_.key_points && options_.rules.pseudo_merge;
@@ -40,7 +40,7 @@ void GroupManagement::manage_xpoints(RelativePlaneStep& result) {
       tracked_ref = kept;
       const PlanarPose world_T_robot =
           tracking.world_T_robot(state_.iteration_).value_or(state_.last_valid_pose_.world_T_robot);
-      // CheckForLoopClosing (spec §5.5.5) counts a group as holding a plane in view through the
+      // CheckForLoopClosing (thesis 4.3.6) counts a group as holding a plane in view through the
       // plane's duplicates too: a wall seen again after the motion model as a new plane (Fig
       // 101's plane 8 ≡ 2) still lets the robot return to the group of the old one.
       const std::vector<DuplicateGroup> duplicates = find_duplicate_groups(
@@ -49,7 +49,7 @@ void GroupManagement::manage_xpoints(RelativePlaneStep& result) {
       if (returned) result.oneway_links += mend_merge_after_loop_closing(state_, duplicates);
     }
   }
-  // Spec §5.5.1 step A, with the bootstrap of A23: the first group waits for two planes.
+  // Thesis 4.4.3.5, with a bootstrap: the first group waits for two planes.
   if (state_.xpoints_.empty()) bootstrap(result);
   if (!state_.xpoints_.empty()) {
     std::size_t kept = 0;
@@ -77,7 +77,7 @@ void GroupManagement::manage_xpoints(RelativePlaneStep& result) {
 }
 
 void GroupManagement::regroup_reacquired(RelativePlaneStep& result) {
-  // Rule 21 (spec §5.5.4). A re-acquired plane shares no recent iterations with any group yet,
+  // Rule 21 (thesis 4.3.5). A re-acquired plane shares no recent iterations with any group yet,
   // so it waits, like an unassigned plane, until Rule 7 or linking can take it [R]: it leaves
   // the list when grouped, unseen for unseen_drop iterations, or after unassigned_drop.
   for (PlaneId g : scratch_.reacquired_now_)
@@ -142,8 +142,8 @@ bool GroupManagement::bootstrap(RelativePlaneStep& result) {
 
 bool GroupManagement::join_group(PlaneId plane) {
   if (state_.current_ == kNone) return false;
-  // Rule 7 in the working group, then in its neighbours (spec §5.5.1 A).
-  // A motion-model group never takes a plane (spec §5.5.2).
+  // Rule 7 in the working group, then in its neighbours (thesis 4.3.2 A).
+  // A motion-model group never takes a plane (thesis 4.3.2).
   const auto fits = [&](XPointId x) {
     if (state_.xpoints_[x].motion_model() || state_.planes_[plane].ref(x) != nullptr || !may_join(plane, x))
       return false;
@@ -173,7 +173,7 @@ bool GroupManagement::make_new_xpoint(PlaneId plane, RelativePlaneStep& result) 
     if (link_to_new_xpoint(x, plane, linking)) {
       std::vector<PlaneId> chain = linking;
       chain.push_back(plane);
-      std::ranges::sort(chain);  // creation order (spec §5.5.3)
+      std::ranges::sort(chain);  // creation order (thesis 4.3.2)
       set_current(state_, create_xpoint(std::move(chain), x, std::move(linking), plane));
       ++result.groups_created;
       return true;
@@ -208,7 +208,7 @@ bool GroupManagement::link_to_new_xpoint(XPointId from, PlaneId plane, std::vect
   });
   linking.clear();
   if (scratch_.candidates_.empty()) return false;
-  // A motion-model group links through its one plane (spec §5.5.3, special case) [T].
+  // A motion-model group links through its one plane (thesis 4.3.2, special case) [T].
   if (!options_.rules.two_linking_planes || state_.xpoints_[from].motion_model()) {
     linking.push_back(scratch_.candidates_.front());
     return true;
@@ -255,7 +255,7 @@ XPointId GroupManagement::create_xpoint(std::vector<PlaneId> chain, XPointId fro
 }
 
 void GroupManagement::upkeep_unassigned() {
-  // Spec §5.5.1 C [P]: planes that left the view, or were seen too rarely, leave the list.
+  // thesis 4.3.2 C [P]: planes that left the view, or were seen too rarely, leave the list.
   std::erase_if(state_.unassigned_, [&](PlaneId q) {
     const RltPlane& p = state_.planes_[q];
     return state_.iteration_ - p.last_iteration() > options_.unseen_drop ||

@@ -22,7 +22,7 @@ Eigen::Vector2d median_of(std::vector<Eigen::Vector2d> v) {
   return m;
 }
 
-// Rule 18's split points are known only to within the moving average (spec §5.6.2: ± w_ma), and a
+// Rule 18's split points are known only to within the moving average (thesis 4.3.4: ± w_ma), and a
 // plane first seen cut at both ends (the frustum's far corner, Fig 105) or whose real end leaves
 // the view at the piece's end opens or closes the piece with samples in which its real end was
 // not in view: the series of the pair of real ends then jumps there and is constant elsewhere,

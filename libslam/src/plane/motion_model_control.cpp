@@ -13,7 +13,7 @@
 namespace relslam::plane {
 
 void end_motion_model_on_the_map(RltXPointsState& s, std::span<const PlaneId> assignment, std::vector<int>& chart) {
-  // Spec §5.10.4 [T/P]: the motion model ends once a second plane comes into view. Rule 29 ends
+  // thesis 4.3.6 [T/P]: the motion model ends once a second plane comes into view. Rule 29 ends
   // it when one group holds every plane in view, a new group when the second plane is new. When
   // the second plane is on the map already, in no group with the motion model's plane and at
   // Rule 21's membership cap, neither comes (Map E's fourth corner from the third loop: the
@@ -40,7 +40,7 @@ PlaneId check_for_motion_model(RltXPointsState& s, std::span<const PlaneId> assi
   ++s.no_pose_count_;
   if (!options.enabled || !s.last_valid_pose_.valid) return kNone;
   if (s.no_pose_count_ < options.start_after) return kNone;
-  // [R, spec §5.10.2] exactly one plane in view, and it is on the map; blind or lost otherwise.
+  // [R, thesis 4.3.6] exactly one plane in view, and it is on the map; blind or lost otherwise.
   if (assignment.size() != 1 || !s.builder_.map()[assignment.front()].mapped) return kNone;
   return assignment.front();
 }

@@ -8,7 +8,7 @@
 namespace relslam::plane {
 namespace {
 
-// A plane's 3-D axis-aligned box (x, y up, z), widened by a margin (spec §5.4.1: a vertical
+// A plane's 3-D axis-aligned box (x, y up, z), widened by a margin (thesis 4.3.1: a vertical
 // wall along an axis has no thickness).
 struct Box {
   Eigen::Vector3d lo, hi;
@@ -65,7 +65,7 @@ double match_plane(const PlaneObject& previous, const PlaneObject& current, cons
     if (gap > bounds.max_iteration_gap) return -1;
     gap_score = 25.0 * (1.0 - static_cast<double>(gap) / (bounds.max_iteration_gap + 1));
   }
-  // Spec §5.4.1's score: each test contributes how comfortably it passed.
+  // thesis 4.3.1's score: each test contributes how comfortably it passed.
   const double normal_score = min_dot < 1 ? 25.0 * (aligned - min_dot) / (1.0 - min_dot) : 25.0;
   const double offset_score =
       bounds.max_offset_change > 0 ? 25.0 * (1.0 - offset_change / bounds.max_offset_change) : 25.0;

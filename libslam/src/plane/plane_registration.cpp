@@ -39,7 +39,7 @@ PlaneId create_plane(RltXPointsState& s, RltXPointsScratch& in, const PlaneObjec
 
 void register_matches(RltXPointsState& s, RltXPointsScratch& in, int& counter,
                       std::vector<PlaneId>* registered = nullptr) {
-  // Best score first across all pairs (spec §5.4.1: at most one observation per RltPlane per
+  // Best score first across all pairs (thesis 4.3.1: at most one observation per RltPlane per
   // iteration); ties in input order, then creation order, so runs are deterministic.
   std::ranges::sort(in.matches_, [](const PlaneMatch& x, const PlaneMatch& y) {
     if (x.score != y.score) return x.score > y.score;
@@ -90,7 +90,7 @@ void add_planes(RltXPointsState& s, RltXPointsScratch& in, const PlaneFrame& fra
 
   // Rule 1: each observation against the previous observation of every recently seen RltPlane
   // (thesis 4.2.1: "the last added untransformed plane in every rltplane"), in the thesis's
-  // order (4.5 AddPlane, spec §5.4.2): the RltPlanes in groups first, then the map (Rule 11),
+  // order (4.5 AddPlane, thesis 4.3.1): the RltPlanes in groups first, then the map (Rule 11),
   // and only then the unassigned list. Deviation: the thesis tries the current group and its
   // neighbours before the other groups, as a saving; every RltPlane that can pass the gap test
   // is in `recent_`, and the best score wins among them, so the outcome is the same. The

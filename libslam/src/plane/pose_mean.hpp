@@ -1,5 +1,5 @@
 #pragma once
-// The mean of several planar poses (spec §2.6, A27): translations averaged, headings by their
+// The mean of several planar poses (A27): translations averaged, headings by their
 // circular mean atan2(Σ sin, Σ cos). Used by RltPlaneCompare, BuildMap and GetPoset alike.
 
 #include "relslam/core/planar_pose.hpp"

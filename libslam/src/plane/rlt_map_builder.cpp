@@ -55,12 +55,12 @@ std::optional<PlanarPose> RltMapBuilder::first_observation_pose(const RltXPoint&
   if (!options.key_points || !options.rules.first_reading_resize ||
       std::abs(first.length() - ref->max_length) <= options.same_length)
     return first.pose();
-  // Rule 4's first reading smaller than the plane (spec §5.8 step 1, Fig 90): grown to the size
+  // Rule 4's first reading smaller than the plane (Fig 90): grown to the size
   // in X0 from the key point valid in the first observation's piece, found against X0's planes.
   std::vector<const RltPlane*> others;
   for (PlaneId p : x0.planes()) others.push_back(&planes[p]);
   const KeyPoint kp = key_point_at(plane, first.iteration, others, options);
-  if (kp == KeyPoint::None) return std::nullopt;  // cannot be grown: says nothing [R, spec §5.6.5]
+  if (kp == KeyPoint::None) return std::nullopt;  // cannot be grown: says nothing [R, thesis 4.3.4]
   return adjust_size(first, ref->max_length, kp).pose();
 }
 
@@ -69,7 +69,7 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
                               const RelativePlaneOptions& options) {
   const bool anchor = options.rules.anchor_first_observation;
   const double same_length = options.same_length;
-  // Rebuilt from the links every iteration (spec §5.8): a group recomputed this iteration moves
+  // Rebuilt from the links every iteration (thesis 4.4.3.11): a group recomputed this iteration moves
   // every group chained after it.
   map_.assign(planes.size(), MapPlane{});
   mapped_count_ = 0;
@@ -77,7 +77,7 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
     RltXPoint& to = xpoints[link.to];
     PoseMean world_T_to;
     if (to.motion_model()) {
-      // Rule 27: a motion-model group stays where the last valid pose put it (spec §5.8 step 2).
+      // Rule 27: a motion-model group stays where the last valid pose put it.
       world_T_to.add(*to.anchor());
     } else if (link.first) {
       // Rule 4: X0's planes first seen in the earliest iteration were seen from the start pose,
@@ -114,7 +114,7 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
         PlanarPose from_T_plane = in_from->pose, to_T_plane = in_to->pose;
         if (options.key_points && std::abs(in_from->max_length - in_to->max_length) > same_length) {
           // Rule 17: the smaller membership re-anchored to the larger size on its own key point;
-          // without one it cannot be resized and the plane does not link (spec §5.6.5).
+          // without one it cannot be resized and the plane does not link (thesis 4.3.4).
           const bool from_smaller = in_from->max_length < in_to->max_length;
           const RltXPointRef* smaller = from_smaller ? in_from : in_to;
           const double larger = std::max(in_from->max_length, in_to->max_length);
@@ -135,7 +135,7 @@ void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltP
   for (PlaneId p : xpoint.planes()) {
     const RltXPointRef* ref = planes[p].ref(xpoint.id());
     MapPlane& entry = map_[p];
-    // Part 2: a plane that changed size and has no key point has no known anchor (spec §5.6.5).
+    // Part 2: a plane that changed size and has no key point has no known anchor (thesis 4.3.4).
     if (key_points && ref->key_point == KeyPoint::None && !ref->size_static) continue;
     // The first group to place a plane keeps it unless a later one knows it larger [T].
     if (!ref->valid || (entry.mapped && ref->max_length <= entry.length + same_length)) continue;
@@ -182,7 +182,7 @@ RltPoset RltMapBuilder::get_poset(std::span<const RegisteredObservation> observa
       add(o, adjust_size(*o.observation, entry.length, kp));
   }
   // Rule 19 for the rest: key points from comparisons with the good planes of this iteration,
-  // then with the other bad ones (spec §5.9).
+  // then with the other bad ones (thesis 4.4.3.11).
   for (const RegisteredObservation* o : bad) {
     std::vector<const RltPlane*> others = good_planes;
     for (const RegisteredObservation* b : bad)
@@ -198,7 +198,7 @@ void RltMapBuilder::match_plane_to_map(int observation_index, const PlaneObject&
                                        const PlanarPose& world_T_robot, const MatchBounds& bounds,
                                        bool same_normal_direction, const std::vector<char>& taken,
                                        std::vector<PlaneMatch>& out) const {
-  // Deviation (spec §5.4.2 compares in the world): the map plane is brought into the robot
+  // Deviation (thesis 4.3.1 compares in the world): the map plane is brought into the robot
   // frame instead, so the offset test measures the distance to the robot as local matching
   // does. In the world frame a heading error of the previous pose moves a plane's offset by
   // the robot's distance from the world origin times the error, which rejects correct

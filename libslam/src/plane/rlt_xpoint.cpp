@@ -36,7 +36,7 @@ EdgeSide side(const CompareResult& edge, bool first) {
 
 }  // namespace
 
-// A plane's canonical size in the group (spec §5.7.2, A18): the largest length any of its chain
+// A plane's canonical size in the group (thesis 4.3.6, A18): the largest length any of its chain
 // edges saw it at, and the key point of that edge.
 struct RltXPoint::Canonical {
   bool valid = false;
@@ -105,7 +105,7 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlan
   const RltPlaneInterval* within = comparison_window(planes, options);
   scratch_observations_.resize(n);
   observations_filled_.assign(n, 0);
-  // W[i][j] (spec §5.7.3): the iterations ComparePlanes(i, j) used when both planes get a key
+  // W[i][j] (thesis 4.3.7.1): the iterations ComparePlanes(i, j) used when both planes get a key
   // point from it (or are static there); −1 otherwise: the pair cannot place one from the other.
   std::vector<std::vector<int>> weight(n, std::vector<int>(n, -1));
   for (int i = 0; i < n; ++i)
@@ -129,7 +129,7 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlan
   if (current_usable && (!periodic || total(*path) <= total(current))) return false;
   std::vector<PlaneId> order(n);
   for (int k = 0; k < n; ++k) order[k] = chain_[(*path)[k]];
-  // Spec §5.7.3: the reserves (Rule 36) of the edges that changed are cleared; a plane keeping
+  // thesis 4.3.7.1: the reserves (Rule 36) of the edges that changed are cleared; a plane keeping
   // its parent keeps its reserve.
   for (int k = 0; k < n; ++k) {
     const PlaneId parent = k > 0 ? order[k - 1] : kNone;
@@ -152,7 +152,7 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
     compute_with_key_points(planes, options, within);
     return;
   }
-  // The base plane's reference point is the group's origin (spec §5.7.1).
+  // The base plane's reference point is the group's origin (thesis 4.4.3.2).
   RltXPointRef* parent = planes[chain_.front()].ref(id_);
   parent->valid = true;
   parent->pose = PlanarPose::identity();
@@ -177,7 +177,7 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
     child->height = edge.height2;
     child->key_point = edge.key_point2;
     // Chaining is SE(2) composition: each offset is in the previous plane's turned frame
-    // (spec §5.7.2 [D]; the thesis's "add the running offset"). Part 2 re-anchors planes whose
+    // (thesis 4.3.6 [D]; the thesis's "add the running offset"). Part 2 re-anchors planes whose
     // two edges saw them at different sizes here (Rule 28).
     if (child->valid) child->pose = parent->pose * edge.delta;
     parent = child;
@@ -234,7 +234,7 @@ void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const Re
   }
   const bool same_chain = snapshot_ && snapshot_->chain == chain_;
   if (complete) {
-    // Σ L* at least the snapshot's; about equal sizes: the longer total interval [T, spec §5.12].
+    // Σ L* at least the snapshot's; about equal sizes: the longer total interval [T, thesis 4.3.7.3].
     const bool better = !same_chain || replaces_saved(total_length, total_samples, snapshot_->total_length,
                                                       snapshot_->total_samples, options.same_length);
     if (!better) return;
@@ -288,9 +288,9 @@ void RltXPoint::compare_edges(std::vector<RltPlane>& planes, const RelativePlane
       edges_[k - 1] =
           compare_with_key_points(observations(planes, k - 1, within), observations(planes, k, within), options);
     }
-    // Rule 36 (DoBackupCheck, spec §5.7.1, §5.12): the pair's best result so far when it beats
+    // Rule 36 (DoBackupCheck, thesis 4.4.3.2, 4.3.7.3): the pair's best result so far when it beats
     // this one; so a plane whose shared iterations the circular array overwrote stays placed
-    // (BuildMap's "invalid reference uses its reserve", spec §5.8 step 5, happens here).
+    // (BuildMap's "invalid reference uses its reserve", happens here).
     if (options.rules.save_reserve)
       do_backup_check(*planes[chain_[k]].ref(id_), chain_[k - 1], edges_[k - 1], options.same_length);
   }
@@ -311,7 +311,7 @@ KeyPoint RltXPoint::key_point_in(const std::vector<RltPlane>& planes, const Rela
 std::vector<RltXPoint::Canonical> RltXPoint::canonical_sizes(const std::vector<RltPlane>& planes,
                                                              const RelativePlaneOptions& options,
                                                              const RltPlaneInterval* within) {
-  // Canonical size and key point of each plane (spec §5.7.2, A18): the largest length among
+  // Canonical size and key point of each plane (thesis 4.3.6, A18): the largest length among
   // the edges touching it, with that edge's key point; the other edge's key point when that
   // one could not tell, and Rule 19 when neither could.
   const std::size_t n = chain_.size();
@@ -327,7 +327,7 @@ std::vector<RltXPoint::Canonical> RltXPoint::canonical_sizes(const std::vector<R
       c = {true, s.length, s.key_point, s.is_static, edges_[e].interval, edges_[e].samples, s.height};
     }
     if (c.valid && c.key_point == KeyPoint::None) c.key_point = fallback;
-    // Rule 19 (CalculateMissingKeyPoints, spec §5.7.4): against every other plane of the group,
+    // Rule 19 (CalculateMissingKeyPoints, thesis 4.3.4): against every other plane of the group,
     // forced into the plane's own interval.
     if (c.valid && c.key_point == KeyPoint::None && !c.is_static)
       c.key_point = key_point_in(planes, options, within, k, c.interval.end);
@@ -337,7 +337,7 @@ std::vector<RltXPoint::Canonical> RltXPoint::canonical_sizes(const std::vector<R
 
 void RltXPoint::chain_with_size_correction(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
                                            const RltPlaneInterval* within, const std::vector<Canonical>& canonical) {
-  // Chaining with size correction (Rules 2, 6, 28; spec §5.7.2): each edge's offset joins the
+  // Chaining with size correction (Rules 2, 6, 28; thesis 4.3.6): each edge's offset joins the
   // two planes' reference points at the sizes that edge saw; the parent's canonical point is
   // moved to its edge size first and the child's edge point to its canonical size after, each
   // on the key point the edge anchored it at (the canonical one when the edge had none: the
@@ -386,7 +386,7 @@ void RltXPoint::chain_with_size_correction(std::vector<RltPlane>& planes, const 
           child->valid = false;
         }
       }
-      // A size change needs a key point to anchor it (spec §5.6.5): without one the plane's
+      // A size change needs a key point to anchor it (thesis 4.3.4): without one the plane's
       // place is unknown.
       const bool parent_resized = std::abs(cp.length - edge.length1) > options.same_length;
       const bool child_resized = std::abs(cc.length - edge.length2) > options.same_length;

@@ -103,7 +103,7 @@ void RltXPointsS::start_iteration(int iteration) {
   iteration_ = iteration;
   started_ = true;
   // Only RltPlanes seen within the iteration gap can pass MatchPlane's last test, so Rule 1
-  // needs to look at no others (spec §5.15: registration linear in the planes seen).
+  // needs to look at no others (thesis 4.3.8: registration linear in the planes seen).
   const int gap = options_.local_match.max_iteration_gap;
   std::erase_if(recent_, [&](PlaneId p) {
     const bool stale = gap >= 0 && iteration - planes_[p].last_iteration() > gap;
@@ -118,14 +118,14 @@ void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
   const bool reorder = options_.key_points && (options_.rules.reorder_planes || options_.rules.reorder_broken_chains);
   for (RltXPoint& x : xpoints_)
     if (x.needs_compute() && !x.motion_model()) {
-      if (reorder) x.reorder_if_due(planes_, options_, iteration_);  // Rule 30 (spec §5.7.1)
+      if (reorder) x.reorder_if_due(planes_, options_, iteration_);  // Rule 30 (thesis 4.4.3.2)
       x.compute(planes_, options_);
       if (options_.rules.interval_check)  // Rules 31, 32 (walkthrough 4.5)
         result.roll_back.hints +=
             check_interval_sizes(*this, x, options_.rollback, hints_, failed_, roll_back_request_);
       ++result.groups_computed;
     }
-  // A motion model re-runs its track over its plane's observations (spec §5.10.3).
+  // A motion model re-runs its track over its plane's observations (thesis 4.3.6).
   for (RltXMMPoint& mm : motion_models_) {
     RltXPoint& x = xpoints_[mm.xpoint()];
     if (!x.needs_compute()) continue;
@@ -143,7 +143,7 @@ void RltXPointsS::get_poset() {
     const PlaneId plane = check_for_motion_model(*this, assignment_, MotionModelStartOptions::of(options_));
     if (plane != kNone) create_motion_model(*this, plane, world_T_start_, options_);
   }
-  // While a motion model is active its track is the pose (spec §5.10.3), also for Rule 11.
+  // While a motion model is active its track is the pose (thesis 4.3.6), also for Rule 11.
   if (motion_model_active_) {
     const std::optional<PlanarPose> tracked = motion_models_.back().world_T_robot(iteration_);
     pose_ = {tracked.value_or(PlanarPose{}), tracked.has_value(), tracked ? 1 : 0};
@@ -171,7 +171,7 @@ void RltXPointsS::send_hint(const RltTemporalHint& hint) {
 }
 
 void RltXPointsS::roll_back(RelativePlaneStep& result) {
-  // RollBack (Rule 33, spec §5.11.3): restore the end of target − 1 and replay the stored inputs
+  // RollBack (Rule 33, thesis 4.3.7.2): restore the end of target − 1 and replay the stored inputs
   // up to now with the hints held; a roll-back asked for while replaying is served after that
   // replayed iteration (nesting), up to rollback.max_nesting in one step.
   const Clock::time_point start = Clock::now();
@@ -191,7 +191,7 @@ void RltXPointsS::roll_back(RelativePlaneStep& result) {
       if (restored >= rb.max_nesting) {
         event.outcome = RollBackOutcome::Nesting;
       } else if (from == nullptr) {
-        event.outcome = RollBackOutcome::TooOld;  // spec §5.11.3: refused, and logged
+        event.outcome = RollBackOutcome::TooOld;  // thesis 4.3.7.2: refused, and logged
       } else {
         event.outcome = RollBackOutcome::Replayed;
         ++restored;

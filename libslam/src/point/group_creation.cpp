@@ -64,7 +64,7 @@ bool GroupCreation::try_create(RltMap& map, GroupLevel level, const RltUngrouped
 }
 
 void GroupCreation::create_level3_groups(RltMap& map, int k, const PointSlamOptions& options, CreationReport& report) {
-  // A point is ready once out of view; it gets this one chance (spec 5.12).
+  // A point is ready once out of view; it gets this one chance (thesis 6.5.5).
   std::size_t kept = 0;
   for (PointId id : level3_waiting_) {
     const RltPoint& p = map.points[id];
@@ -109,7 +109,7 @@ void GroupCreation::build_group(RltMap& map, GroupLevel level, int c0, int k, co
     RltPoint& p = map.points[plan.members[i]];
     p.groups.push_back({id, static_cast<int>(i)});
     if (plan.anchor[i]) continue;
-    // Ownership (spec 5.6): level 3 and final groups always take their new members; a
+    // Ownership (thesis 6.4): level 3 and final groups always take their new members; a
     // temporary group only those no final or level-3 group owns. The higher levels thus map
     // everything they hold (6.5.5).
     switch (level) {

@@ -58,13 +58,13 @@ bool GroupPlanner::previously_mapped(const RltPoint& p, const LevelContext& leve
   if (!p.on_map()) return false;
   if (level.level == GroupLevel::Temporary) return true;
   // Final groups build only on final groups (thesis 6.5.5). Until the first final group exists,
-  // a candidate other than the first iteration's may fall back on temporary anchors (spec 5.6).
+  // a candidate other than the first iteration's may fall back on temporary anchors (thesis 6.4).
   return p.final_grouped || (!level.level_mapped && c0 != level.first_iteration);
 }
 
 std::vector<Eigen::Vector3d> GroupPlanner::basis_positions(const std::vector<PointId>& members,
                                                            const std::vector<RltPoint>& points, int c0, int k) const {
-  // The latest iteration with every member observed (spec 5.8); else each one's latest.
+  // The latest iteration with every member observed (thesis 6.5.4); else each one's latest.
   std::vector<Eigen::Vector3d> positions(members.size());
   for (int t = k; t >= c0; --t) {
     bool all = true;
@@ -238,7 +238,7 @@ PlanOutcome GroupPlanner::plan_level3(PointId c, int k, const std::vector<RltPoi
     used = intersect(points[known[i]], usable);
   }
   // The rest, merged by count: a member is worth its lost iterations when the usable
-  // observations (iterations x members) grow (spec 5.12 step 4).
+  // observations (iterations x members) grow (thesis 6.5.5 step 4).
   std::size_t a = static_cast<std::size_t>(o.prev_min), b = 0;
   std::vector<char> trial;
   while (a < known.size() || b < fresh.size()) {

@@ -198,7 +198,7 @@ class BinningRun {
   }
 
   // Step 5, after the first round: the threshold from its values, then its merges. A partner
-  // may have been merged elsewhere meanwhile, hence the union-find (spec 5.7).
+  // may have been merged elsewhere meanwhile, hence the union-find (thesis 6.5.3).
   void set_threshold(Round& round) {
     std::vector<double> deviations;
     for (const Round::Pending& p : round.pending) deviations.push_back(p.s);

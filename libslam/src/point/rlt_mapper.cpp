@@ -82,7 +82,7 @@ StepResult RltMapper::step(const ObservationFrame& frame, const std::vector<std:
   if (options_.merge_points) result.merges = merging_.merge_due(map_, k, options_.merge_bound);
   result.timings.merge_ms = ms_since(clock);
 
-  // [compute] Groups with a new observation, oldest first so anchors are fresh (spec 5.5).
+  // [compute] Groups with a new observation, oldest first so anchors are fresh (thesis 6.3.3).
   compute_groups(k);
   result.timings.compute_ms = ms_since(clock);
 
@@ -96,7 +96,7 @@ StepResult RltMapper::step(const ObservationFrame& frame, const std::vector<std:
   if (k % options_.temporary_cleanup_period == 0) creation_.retire_redundant_temporary_groups(map_, k, options_);
   result.timings.create_ms = ms_since(clock);
 
-  // [relax] Beyond the thesis (issue 19): all group-to-world transforms at once. A loop closure
+  // [relax] Beyond the thesis: all group-to-world transforms at once. A loop closure
   // schedules the solve once the groups tying the re-found points to the new ones exist (the
   // final level's look-ahead later); further closures wait for it.
   schedule_relaxation(k, loop_closed, result);
@@ -114,7 +114,7 @@ void RltMapper::build_local_index(int k, const std::optional<Rigid3>& odometry) 
   map_.charting.enumerate_unique(k - options_.match_look_back, k - 1, scratch_ids_);
   local_candidates_.clear();
   // Dynamic points stay locally matchable, so a mover does not start a new RltPoint every frame
-  // (spec 5.4).
+  // (thesis 6.2.5).
   for (PointId id : scratch_ids_) {
     const RltPoint& p = map_.points[id];
     if (!p.merged) local_candidates_.push_back(local_candidate(p, k));
@@ -126,7 +126,7 @@ LocalCandidate RltMapper::local_candidate(const RltPoint& p, int k) const {
   // The latest observation, wherever in the window it was (thesis 6.2.3).
   const Point& latest = p.observations.latest();
   const LocalCandidate observed{p.id, latest.p, latest.iteration};
-  // Deviation (adaptive preset, issue 16): a point on the map seen in the previous iteration is
+  // Deviation (adaptive preset): a point on the map seen in the previous iteration is
   // expected where the map puts it in that iteration's robot frame. Its latest observation
   // carries a whole observation's noise, and once two close landmarks swapped (sigma >= 0.2,
   // landmarks 0.7-2 apart) each point follows the other's observations from then on: the map
@@ -219,7 +219,7 @@ void RltMapper::schedule_relaxation(int k, bool loop_closed, StepResult& result)
 }
 
 void RltMapper::compute_groups(int k) {
-  // Oldest group first, so anchors are refreshed before the groups that build on them (spec 5.5).
+  // Oldest group first, so anchors are refreshed before the groups that build on them (thesis 6.3.3).
   std::sort(queued_groups_.begin(), queued_groups_.end());
   for (GroupId g : queued_groups_) {
     RltGroup& group = map_.groups[g];
@@ -258,7 +258,7 @@ void RltMapper::check_map_frame(int k) {
         "were seen there often enough";
     return;
   }
-  // Adaptive (beyond the thesis, issue 16): a sparse start is no failure; the map frame moves on
+  // Adaptive (beyond the thesis): a sparse start is no failure; the map frame moves on
   // to the first iteration from here that shows three points, and so on until a root forms.
   if (map_.charting.at(k).size() >= 3) move_map_frame(k);
 }
@@ -347,7 +347,7 @@ std::optional<Rigid3> RltMapper::register_seen(const std::vector<PointId>& seen,
     }
   }
   auto registered = rlt_icp(robot, world);
-  // Deviation (adaptive, issue 16; use_odometry, issue 19): a registration that turns the robot
+  // Deviation (adaptive; use_odometry): a registration that turns the robot
   // further from the predicted rotation than max_turn_deg, or strays from the dead-reckoned
   // pose, is a mismatch, not a motion (implausible).
   if (registered && implausible(*registered, prediction.rotation, prediction.dead_reckoned)) {

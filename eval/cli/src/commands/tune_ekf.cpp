@@ -26,8 +26,8 @@ std::string text_of(double v) {
   return s;
 }
 
-// The motion noise the q_scale factors multiply: the spec's starting point (relative_point
-// §7), fixed so a tuning run does not depend on what an earlier one put in the scenario.
+// The motion noise the q_scale factors multiply: our starting point,
+// fixed so a tuning run does not depend on what an earlier one put in the scenario.
 constexpr double kBaseStdsQ[] = {0.35, 0.35, 0.35, 0.005, 0.005, 0.005, 0.005};
 
 // `base_q`: the motion noise q_scale multiplies.

@@ -1,6 +1,6 @@
 #pragma once
 // How option checks report problems without knowing where the options came from.
-// The evaluation layer adds the file, line and key prefix (style.md 2.5).
+// The evaluation layer adds the file, line and key prefix.
 
 #include <stdexcept>
 #include <string>

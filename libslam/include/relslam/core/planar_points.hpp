@@ -1,6 +1,6 @@
 #pragma once
 // One iteration's 3-D points on the planar world's walls, as a point sensor reports them: the
-// input of EM plane extraction (thesis 3.5, Chapter 5; spec relative_plane_em.md §3.5, §4.1).
+// input of EM plane extraction (thesis 3.5, Chapter 5; thesis 5.1, 3.5.1).
 // Part of relslam/core: Eigen only. Truth travels separately, in PlanarPointTruthFrame, which
 // only the evaluation reads.
 
@@ -13,7 +13,7 @@
 namespace relslam {
 
 // Points in the planar world's robot frame at their iteration: the robot at the origin looking
-// along +x, z lateral, y up (spec §2.1; not the point world's frame of observation.hpp).
+// along +x, z lateral, y up (not the point world's frame of observation.hpp).
 // Order carries no meaning (the sensor shuffles; thesis 3.5.4: the order of the incoming
 // points can differ every run).
 struct PlanarPointFrame {

@@ -1,6 +1,6 @@
 #pragma once
-// Poses in the horizontal plane, for the Relative Plane half (thesis Chapter 4; spec
-// relative_plane_em.md §2.1). Part of relslam/core: Eigen only.
+// Poses in the horizontal plane, for the Relative Plane half (thesis Chapter 4).
+// Part of relslam/core: Eigen only.
 //
 // The planar world is 2½D: everything is solved in the (x, z) plane, y is up and only carries
 // the walls' height, and the robot turns about y only. A pose T = (t, ψ) maps robot-frame

@@ -1,7 +1,7 @@
 #pragma once
 // One observed vertical plane (a wall, or the visible part of one) and one iteration's planes:
-// what the Relative Plane algorithm may see (thesis 4.1, 4.4 `PlaneObject`; spec
-// relative_plane_em.md §2.2). Part of relslam/core: Eigen only. Truth travels separately, in
+// what the Relative Plane algorithm may see (thesis 4.1, 4.4 `PlaneObject`).
+// Part of relslam/core: Eigen only. Truth travels separately, in
 // PlaneTruthFrame, which only the evaluation reads.
 
 #include "relslam/core/laser_scan.hpp"

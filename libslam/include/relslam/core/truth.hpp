@@ -1,6 +1,6 @@
 #pragma once
 // Ground truth that accompanies an ObservationFrame. Only the evaluation layer receives it:
-// an algorithm that could read truth could not be shown to ignore it (style.md 2.3).
+// an algorithm that could read truth could not be shown to ignore it.
 
 #include "relslam/core/rigid.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Removing planes that should not be there: too few points (minimum support) and too few
-// points of their own (exclusivity), thesis 3.5.2 steps 9–10, 3.5.3 step 9; spec §4.2. Eigen only.
+// points of their own (exclusivity), thesis 3.5.2 steps 9–10, 3.5.3 step 9. Eigen only.
 
 #include "relslam/em/em_plane.hpp"
 #include "relslam/em/options.hpp"
@@ -11,7 +11,7 @@
 namespace relslam::em {
 
 // Removes planes with fewer than options.min_support points, sparing planes younger than
-// `min_age` E-steps: a fresh 3-point seed would otherwise never get to grow (spec §4.3 note;
+// `min_age` E-steps: a fresh 3-point seed would otherwise never get to grow (
 // em1.cull_age). Returns the number removed.
 int cull_min_support(std::vector<EmPlane>& planes, const EmOptions& options, int min_age);
 

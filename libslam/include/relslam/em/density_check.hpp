@@ -2,7 +2,7 @@
 // EM2's density check (thesis 3.5.3 step 5: "start from the random point again and see how the
 // point density of the plane changes as the plane is gradually expanded. If the density becomes
 // too low then stop expanding and remove any points that are not in the higher density portion
-// of the plane"; spec §4.4 makes it concrete [R]). Eigen only.
+// of the plane"; thesis 3.5.3 makes it concrete [R]). Eigen only.
 
 #include "relslam/em/em_plane.hpp"
 #include "relslam/em/options.hpp"

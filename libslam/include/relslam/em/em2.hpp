@@ -1,7 +1,7 @@
 #pragma once
 // EM algorithm 2, "incremental": one random plane at a time is grown within its seed's cell of
 // an overlapping grid, checked for density, and never revisited; about twice as fast as EM1
-// (thesis 3.5.3, 3.5.4; spec §4.4). Eigen only.
+// (thesis 3.5.3, 3.5.4). Eigen only.
 
 #include "relslam/em/em_plane.hpp"
 #include "relslam/em/options.hpp"
@@ -12,7 +12,7 @@
 namespace relslam::em {
 
 // The planes of one frame's points (robot frame), from scratch, with the EM stream seeded by
-// `seed` (em_frame_seed). Non-finite points are ignored. Per EM iteration (spec §4.4): the
+// `seed` (em_frame_seed). Non-finite points are ignored. Per EM iteration (thesis 3.5.3): the
 // unassigned points (usage 0) are listed; one random one seeds a plane with its two nearest
 // unassigned neighbours from the grid; the plane grows for at most em2.grow_rounds rounds (widen
 // the box by bound_expansion, gather the accepted points of the seed's grid cell, refit, density
@@ -22,10 +22,10 @@ namespace relslam::em {
 // em2.max_iterations, or after seed_attempts failed planes in a row. Last, the exclusivity cull
 // and the rectangles.
 //
-// Deviation (spec §4.4 tests the support after every growth round): the support is tested once
+// Deviation (thesis 3.5.3 tests the support after every growth round): the support is tested once
 // growth has ended. A 3-point seed's first round reaches about (3·e_exp)² of wall, some 20
 // points at the default spacing, so the literal test drops most seeds before they can grow (the
-// same reason as EM1's culls sparing fresh seeds, spec §4.3). A plane that yields nothing
+// same reason as EM1's culls sparing fresh seeds, thesis 3.5.2). A plane that yields nothing
 // (seeding or growth fails) counts as a failure for the stop rule [R].
 // Requires check(options) to be empty (throws std::logic_error otherwise).
 EmResult run_em2(std::span<const Eigen::Vector3d> points, const EmOptions& options, std::uint64_t seed);

@@ -1,5 +1,5 @@
 #pragma once
-// The shared parts of both EM variants (thesis 3.5.2, 3.5.3; spec §4.2): the EM plane, its
+// The shared parts of both EM variants (thesis 3.5.2, 3.5.3): the EM plane, its
 // membership test and refit, the points' usage counters, and what an extraction returns.
 // Eigen only.
 
@@ -30,7 +30,7 @@ struct EmPlane {
   OrientedRectangle rectangle;  // set when the extraction finishes
 
   double distance(const Eigen::Vector3d& p) const { return normal.dot(p) + offset; }
-  // The membership test (spec §4.2): inside the box widened by `expansion` on every side, and
+  // The membership test (thesis 3.5): inside the box widened by `expansion` on every side, and
   // within `inlier_distance` of the plane.
   bool accepts(const Eigen::Vector3d& p, double inlier_distance, double expansion) const;
 };

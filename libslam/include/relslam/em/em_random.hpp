@@ -1,7 +1,7 @@
 #pragma once
 // The random stream of EM's seeding (thesis 3.5: planes start from random points). Standard
 // library only. EM is the only random part of libslam; the stream is seeded from the scenario
-// (spec §3.8: "one RNG for sensor noise, one for EM"), so a run is reproducible.
+// ("one RNG for sensor noise, one for EM"), so a run is reproducible.
 
 #include <cstddef>
 #include <cstdint>

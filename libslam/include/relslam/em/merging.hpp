@@ -1,5 +1,5 @@
 #pragma once
-// Merging planes that model the same surface (thesis 3.5.2 step 8, 3.5.3 step 7; spec §4.2
+// Merging planes that model the same surface (thesis 3.5.2 step 8, 3.5.3 step 7
 // "Merge"). Eigen only.
 
 #include "relslam/em/em_plane.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Every constant of EM plane extraction (thesis 3.5; spec relative_plane_em.md §4.6), with its
+// Every constant of EM plane extraction (thesis 3.5.4), with its
 // default and its source, and beside each struct its describe(): key name, help and checks per
 // field (core/option_fields.hpp). Tags: [T] thesis-stated (often only the concept: the thesis
 // gives no numbers), [R] the spec's recommendation, [C] chosen here. Eigen-free, no I/O.
@@ -16,7 +16,7 @@ namespace relslam::em {
 // How EM1's E-step hands out a point that several planes accept (thesis 3.5.2 step 3).
 enum class AssignMode : unsigned char {
   // To every plane that accepts it; with the exclusivity cull this is the thesis's working
-  // combination (without the cull: the extra bridging plane of Fig. 59) [T, spec §4.3 default].
+  // combination (without the cull: the extra bridging plane of Fig. 59) [T].
   All,
   // Only to the plane it lies closest to: planes that should meet come out detached (Fig. 61) [T].
   Nearest,
@@ -25,7 +25,7 @@ constexpr AssignMode kAssignModes[] = {AssignMode::All, AssignMode::Nearest};
 std::string_view to_string(AssignMode mode);  // "all", "nearest"
 
 // How a finished plane's rendering rectangle (its four corners) is found (thesis 3.5.2 step 11,
-// 3.5.3 step 10; spec §4.4, A9).
+// 3.5.3 step 10, A9).
 enum class RectangleFit : unsigned char {
   // Along the fitted plane's horizontal tangent: the points' extent on it and on y. For
   // vertical walls identical to the search below, and exact [R default].
@@ -41,14 +41,14 @@ constexpr RectangleFit kRectangleFits[] = {RectangleFit::TangentProjection, Rect
                                            RectangleFit::BoxCorners};
 std::string_view to_string(RectangleFit fit);  // "tangent_projection", "rotation_search", "box_corners"
 
-// EM algorithm 1, batch: every plane re-evaluated every EM iteration (thesis 3.5.2; spec §4.3).
+// EM algorithm 1, batch: every plane re-evaluated every EM iteration (thesis 3.5.2).
 struct Em1Options {
   // New random planes per EM iteration [T "the desired quantity of random planes", R value].
   int seeds_per_iteration = 4;
   // Give up after this many EM iterations [T concept, R value].
   int max_iterations = 25;
   // Done once this share of the points belongs to some plane [T "most or all of the points"].
-  // Deviation (spec §4.6: 0.95): at 0.95 EM1 stopped before finding walls that hold under 5 %
+  // Deviation (thesis 3.5.4: 0.95): at 0.95 EM1 stopped before finding walls that hold under 5 %
   // of a frame's points (Map E: a 0.85-long piece of the inner block beside two long walls,
   // 51 of 1166 points); 0.99 leaves ~1 % unexplained [C].
   double done_fraction = 0.99;
@@ -57,7 +57,7 @@ struct Em1Options {
   // last few iterations", R value; C: growth counts, or EM1 stopped with long walls half grown].
   int patience = 3;
   // The support and exclusivity culls spare planes younger than this many E-steps.
-  // Deviation (spec §4.3 note: age >= 1): one E-step grows a 3-point seed only to its box
+  // Deviation: one E-step grows a 3-point seed only to its box
   // widened by e_exp, about (3·e_exp)² of wall or ~20 points at the default spacing, so N_min
   // culls most seeds at age 1 (seen on noisy frames); at age 2 the box spans ~(5·e_exp)² [C].
   int cull_age = 2;
@@ -74,7 +74,7 @@ void describe(OptionsOf<Em1Options> auto& o, auto& f) {
 }
 
 // EM algorithm 2, incremental: one plane grown at a time and never revisited (thesis 3.5.3;
-// spec §4.4).
+// thesis 3.5.3).
 struct Em2Options {
   // Planes tried at most (one per EM iteration) [T concept, R value].
   int max_iterations = 200;
@@ -105,7 +105,7 @@ struct Em2Options {
   double grid_cell = 3.0;
   double grid_overlap = 1.5;
   // Density check (thesis: "see how the point density of the plane changes as the plane is
-  // gradually expanded"; spec §4.4 [R]): a rectangle grown from the seed in steps of
+  // gradually expanded"; thesis 3.5.3 [R]): a rectangle grown from the seed in steps of
   // density_step in ±s and ±y, each direction stopping where its new strip is thinner than
   // density_fraction × the density of the central 2·step square.
   double density_step = 0.25;
@@ -129,7 +129,7 @@ void describe(OptionsOf<Em2Options> auto& o, auto& f) {
           at_least(0.0), at_most(1.0));
 }
 
-// From EM planes to the Relative Plane algorithm's input (spec §4.5) [R: forced by 2½D].
+// From EM planes to the Relative Plane algorithm's input (thesis 5.1) [R: forced by 2½D].
 struct ConversionOptions {
   // Planes with |n_y| above this are not walls (floor, ceiling, noise) and are dropped.
   double max_vertical_normal = 0.2;
@@ -146,7 +146,7 @@ void describe(OptionsOf<ConversionOptions> auto& o, auto& f) {
 struct EmOptions {
   // d_in: a point belongs to a plane within this distance of it ("at least a minimum distance"
   // in the thesis means within). Too large and big planes steal the points of small ones (Fig.
-  // 60) [T]; spec §4.6 sets max(0.05, 3σ_pt), this default is that at σ_pt = 0.05 [R]; use
+  // 60) [T]; thesis 3.5.4 sets max(0.05, 3σ_pt), this default is that at σ_pt = 0.05 [R]; use
   // for_point_sigma() for another noise.
   double inlier_distance = 0.15;
   // e_exp: the plane's box is widened by this before the membership test; without it a 3-point
@@ -170,7 +170,7 @@ struct EmOptions {
   // concept, R values; the centroid test is a deviation, merging.hpp].
   double merge_angle_rad = 8.0 * std::numbers::pi / 180.0;
   double merge_offset_factor = 2.0;
-  AssignMode assign_mode = AssignMode::All;  // EM1's E-step [T both, spec §4.3 default All]
+  AssignMode assign_mode = AssignMode::All;  // EM1's E-step [T both.3 default All]
   RectangleFit rectangle = RectangleFit::TangentProjection;  // [R default, spec A9]
   // RotationSearch: the first pass steps through 180° by this; each later pass searches ±one
   // step of the pass before at a tenth of its step (10°, 1°, 0.1° with 3 passes) [R].
@@ -189,7 +189,7 @@ struct EmOptions {
   Em2Options em2;
   ConversionOptions conversion;
 
-  // The defaults with d_in = max(0.05, 3σ_pt) for points of noise σ_pt (spec §4.6).
+  // The defaults with d_in = max(0.05, 3σ_pt) for points of noise σ_pt (thesis 3.5.4).
   static EmOptions for_point_sigma(double sigma_pt);
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // A finished EM plane's rendering rectangle: the four corners the Relative Plane algorithm gets
-// (thesis 3.5.2 step 11, 3.5.3 step 10; spec §4.4 "Oriented rendering rectangle", A9). Eigen only.
+// (thesis 3.5.2 step 11, 3.5.3 step 10; "Oriented rendering rectangle", A9). Eigen only.
 
 #include <Eigen/Core>
 
@@ -10,7 +10,7 @@ namespace relslam::em {
 
 // A rectangle standing on the floor plane's (x, z) line origin + s·tangent, s in [s_min, s_max],
 // from y_min to y_max. tangent is the unit horizontal tangent u = (n_z, −n_x) of the plane's
-// normal n (spec §2.2), so s grows from key point 1 to key point 2.
+// normal n (thesis 4.2.1), so s grows from key point 1 to key point 2.
 struct OrientedRectangle {
   Eigen::Vector2d origin = Eigen::Vector2d::Zero();  // (x, z)
   Eigen::Vector2d tangent = Eigen::Vector2d::UnitX();
@@ -21,7 +21,7 @@ struct OrientedRectangle {
   double length() const { return s_max - s_min; }
 };
 
-// The unit horizontal tangent u = (n_z, −n_x)/|·| of a normal (spec §2.2); +x for a horizontal
+// The unit horizontal tangent u = (n_z, −n_x)/|·| of a normal (thesis 4.2.1); +x for a horizontal
 // plane, which has none.
 Eigen::Vector2d horizontal_tangent(const Eigen::Vector3d& normal);
 

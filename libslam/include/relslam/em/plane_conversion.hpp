@@ -1,6 +1,6 @@
 #pragma once
 // From EM planes to the Relative Plane algorithm's input: vertical PlaneObjects facing the
-// robot (thesis 3.5: "convert the bounding box to rendering points"; spec §4.5, forced by the
+// robot (thesis 3.5: "convert the bounding box to rendering points"; thesis 5.1, forced by the
 // 2½D assumption [R]). Eigen only.
 
 #include "relslam/core/plane_object.hpp"
@@ -20,12 +20,12 @@ struct ExtractedPlanes {
   std::vector<std::vector<int>> support;
 };
 
-// Spec §4.5 steps 1–4 and 6: drops planes that are not walls (|n_y| > conversion
+// Thesis 4.5: drops planes that are not walls (|n_y| > conversion
 // .max_vertical_normal), shorter than conversion.min_length or with fewer than min_support
 // points; turns each normal towards the robot (the origin) and flattens it to horizontal
 // (n ← (n_x, 0, n_z)/|·|, through the centroid); the top corners are the ends of the plane's
 // rectangle, key point 1 (a) first along u = (n_z, −n_x) so the PlaneObject's front faces the
-// robot (spec §2.2); y_lo, y_hi from the rectangle. Ordered by decreasing support (ties: EM's
+// robot (thesis 4.2.1); y_lo, y_hi from the rectangle. Ordered by decreasing support (ties: EM's
 // order) [R]; the algorithm must not depend on it.
 // What a plane is in the 2½D world of thesis 4.5: a wall (|n_y| at most
 // conversion.max_vertical_normal: converted by to_plane_objects), horizontal (its tilt from
@@ -37,7 +37,7 @@ PlaneLabel label_of(const EmPlane& plane, const ConversionOptions& options);
 
 ExtractedPlanes to_plane_objects(const EmResult& result, const EmOptions& options, int iteration);
 
-// Evaluation only — the extractors never call it (spec §4.5 step 5, §7.1): the true wall of an
+// Evaluation only — the extractors never call it: the true wall of an
 // extracted plane is the majority wall id of its points (ties: the smaller id; -1 for no
 // labelled point), and an end is a real wall end when one of that wall's true ends (robot frame)
 // lies within `end_tolerance` of it (spec: max(0.5·s_pt, 3σ_pt)).

@@ -1,5 +1,5 @@
 #pragma once
-// The M-step's plane fit: total least squares after [DrGe03] (thesis 3.5.2 step 7; spec §4.2).
+// The M-step's plane fit: total least squares after [DrGe03] (thesis 3.5.2 step 7).
 // Eigen only.
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 #pragma once
 // CalculateMissingKeyPoints (thesis 4.3.4 Rule 19, walkthrough 4.5 "RltXPoint
-// CalculateMissingKeyPoints"; spec relative_plane_em.md §5.7.4). A key point is only valid in the
+// CalculateMissingKeyPoints"; thesis 4.3.4). A key point is only valid in the
 // interval it was computed on; when a plane's comparison left it without one (Rule 15's
 // ambiguity, or a partner that could not tell), it is computed again against each other plane of
 // the group, forced into the plane's own interval, and the first valid one is kept. Part of

@@ -1,6 +1,5 @@
 #pragma once
-// GetMaxSize (thesis 4.3.4 Rule 18, walkthrough 4.5 "RltPlaneCompare GetMaxSize"; spec
-// relative_plane_em.md §5.6.2): the iterations two planes are compared over are split wherever
+// GetMaxSize (thesis 4.3.4 Rule 18, walkthrough 4.5 "RltPlaneCompare GetMaxSize"): the iterations two planes are compared over are split wherever
 // either plane switches between growing and shrinking. A wall passed in a hallway first grows
 // from its far end and then shrinks towards it from the near side, so different key points are
 // valid before and after the switch; the four σ of Rules 13–15 are only meaningful inside one
@@ -14,20 +13,20 @@
 
 namespace relslam::plane {
 
-// The constants of the split (spec §5.14; the thesis names only "a moving average" and "some
+// The constants of the split (the thesis names only "a moving average" and "some
 // hysteresis" [T]).
 struct GrowthPhaseBounds {
   // w_ma: trailing moving average of the lengths, "for noise reasons" [T]; 5 [R]. Larger hides
   // noise but misses the switch of a plane seen only briefly (Fig 105) [T].
   int window = 5;
   // h: the average must move this far back from its extreme before the phase counts as
-  // switched, units [R 0.03; spec §5.6.2 suggests max(0.03, 3σ_len)].
+  // switched, units [R 0.03; thesis 4.3.4 suggests max(0.03, 3σ_len)].
   double hysteresis = 0.03;
   // n_min_cmp: sub-intervals with fewer iterations are dropped [R 3].
   int min_samples = 3;
 };
 
-// Which sub-interval a comparison uses (spec §5.6.2, §9 A13).
+// Which sub-interval a comparison uses.
 enum class IntervalChoice : unsigned char {
   MostIterations,  // Rule 18 [T]; ties: the larger L1 + L2
   LargestSize,     // the walkthrough's "greatest total size of both planes" [T]; ties: more iterations
@@ -35,7 +34,7 @@ enum class IntervalChoice : unsigned char {
 
 // The indices (into `lengths`, one plane's lengths at consecutive iterations) at which a growth
 // phase ends: the iteration of the extreme the phase reached. A sub-interval ends there and the
-// next begins one later. The state machine of spec §5.6.2 on the trailing moving average ma:
+// next begins one later. The state machine of thesis 4.3.4 on the trailing moving average ma:
 // NONE becomes GROW or SHRINK once ma leaves its first value by more than `hysteresis`; in a
 // phase, the extreme r follows ma, and ma coming back from r by more than `hysteresis` splits
 // at r's iteration and starts the opposite phase. A plateau continues the phase, so
@@ -61,7 +60,7 @@ struct SizeInterval {
 };
 
 // Every sub-interval of `samples` (sorted by iteration): runs break at every missing iteration
-// (spec §2.7, gap_max = 1, A39) and each run is split wherever either plane's phase switches.
+// (thesis 4.3.3, gap_max = 1, A39) and each run is split wherever either plane's phase switches.
 // Sub-intervals with fewer than bounds.min_samples samples are dropped.
 std::vector<SizeInterval> split_by_growth_phase(std::span<const SizeSample> samples, const GrowthPhaseBounds& bounds);
 

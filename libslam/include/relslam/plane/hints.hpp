@@ -1,5 +1,5 @@
 #pragma once
-// RltTemporalHint / RltTemporalHints (thesis 4.4.3.15–16, Rules 32 and 34; spec §5.11.1–2):
+// RltTemporalHint / RltTemporalHints (thesis 4.4.3.15–16, Rules 32 and 34; thesis 4.3.7.2):
 // what a roll-back sends back in time, so the replay does not repeat what went wrong. Eigen-free
 // values; the algorithm asks them before it puts a plane into a group.
 
@@ -11,7 +11,7 @@
 namespace relslam::plane {
 
 // A plane as a hint names it: the iteration its RltPlane was created and the index of that first
-// observation in the iteration's input (spec §5.11.2). RltPlane ids are not stable across a
+// observation in the iteration's input (thesis 4.3.7.2). RltPlane ids are not stable across a
 // replay (a plane grouped differently can change what global matching creates later); this is,
 // because the stored inputs replay in the same order.
 struct PlaneIdentity {
@@ -20,7 +20,7 @@ struct PlaneIdentity {
   auto operator<=>(const PlaneIdentity&) const = default;
 };
 
-// Rule 32's three levels, in the order a plane gets them (spec §5.11.1).
+// Rule 32's three levels, in the order a plane gets them (thesis 4.3.7.2).
 enum class HintLevel : unsigned char {
   NotInX = 1,       // not into that group: on replay the plane tries the adjacent groups, else a new one
   NoExistingX = 2,  // into no existing group: only a group of its own

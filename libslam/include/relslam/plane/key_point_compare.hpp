@@ -1,6 +1,6 @@
 #pragma once
 // ComparePlanes for growing and shrinking planes (thesis 4.3.4, walkthrough 4.5 "RltPlaneCompare
-// ComparePlanes"; spec relative_plane_em.md §5.6): over the iterations both planes were seen,
+// ComparePlanes"; thesis 4.3.4): over the iterations both planes were seen,
 // GetMaxSize picks one growth phase (Rule 18), and inside it the four assumed-midpoint pairs
 // give the offset and the key points (Rules 13–15). A pure function of two observation series,
 // so CalculateMissingKeyPoints (Rule 19) and the tests need no RltPlane; the group computation

@@ -1,5 +1,5 @@
 #pragma once
-// Key points (thesis 4.3.4, Rules 13–15; spec relative_plane_em.md §2.3, §5.6.3, §5.6.4): which
+// Key points (thesis 4.3.4, Rules 13–15; thesis 4.2.3, 4.3.4): which
 // end of each of two clipped planes stayed put while they were compared. A plane cut by the
 // frustum grows or shrinks at its cut end only, so of the four offsets between the planes'
 // assumed midpoints (one from each top corner, at the plane's maximum length) the one between
@@ -18,11 +18,11 @@
 
 namespace relslam::plane {
 
-// When two standard deviations count as equal (spec §5.6.4): close(x, y) ⇔
+// When two standard deviations count as equal (thesis 4.3.4): close(x, y) ⇔
 // |x − y| ≤ max(absolute, relative·max(x, y)). Noise makes two static pairs differ a little; the
 // relative part covers that, the absolute part the noise-free case where both are ~1e-16.
 struct KeyPointTies {
-  double relative = 0.3;    // [R, spec §5.14 r_tie]
+  double relative = 0.3;    // [R, r_tie]
   double absolute = 0.002;  // units [R, ε_σ]
   // The distance test the thesis proposes for Fig 97 (4.3.7.1): two collinear pieces of one
   // wall line, one shrinking exactly as the other grows, tie on both diagonals (Rule 15), and
@@ -60,13 +60,13 @@ struct KeyPointPairs {
   double length2 = 0;  // assumed midpoints are built with (thesis 4.3.4 "maximum size")
   Eigen::Vector2d mean[2][2] = {{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()},
                                 {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()}};
-  // Pooled 2-D standard deviation sqrt(mean |off − mean|²) (spec §2.6).
+  // Pooled 2-D standard deviation sqrt(mean |off − mean|²).
   double sigma[2][2] = {{0, 0}, {0, 0}};
   double angle = 0;  // circular mean of θ₂ − θ₁, the same for all four pairs
 
   double sigma_of(KeyPoint a, KeyPoint b) const { return sigma[index(a)][index(b)]; }
   // first_T_second of pair (a, b): the second plane's length-L2 reference point anchored at b, in
-  // the frame of the first's length-L1 reference point anchored at a (spec §5.6.3).
+  // the frame of the first's length-L1 reference point anchored at a (thesis 4.3.4).
   PlanarPose delta(KeyPoint a, KeyPoint b) const { return {mean[index(a)][index(b)], angle}; }
 
  private:
@@ -91,7 +91,7 @@ using KeyPointOffsets = std::array<Eigen::Vector2d, 4>;
 KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
                               bool rotate_to_first = true, std::vector<KeyPointOffsets>* offsets = nullptr);
 
-// What the pair with the lowest σ says (spec §5.6.4).
+// What the pair with the lowest σ says (thesis 4.3.4).
 struct KeyPointChoice {
   // The pair whose mean is `delta`: the lowest σ. Its ends are the key points unless the plane
   // is static (either end serves) or the pair is ambiguous.
@@ -100,7 +100,7 @@ struct KeyPointChoice {
   KeyPoint key_point1 = KeyPoint::None;  // Rule 14: None when no end is known to be the static one
   KeyPoint key_point2 = KeyPoint::None;
   // The plane's two assumed midpoints behaved alike: it did not change size in the interval, so
-  // its length is its size there and no key point is needed (spec §5.6.4).
+  // its length is its size there and no key point is needed (thesis 4.3.4).
   bool static1 = false;
   bool static2 = false;
   // Rule 15: the two diagonal pairs tie low while the mixed ones are high — two parallel planes
@@ -109,7 +109,7 @@ struct KeyPointChoice {
   // the distance test (KeyPointTies::collinear_distance) decides instead when it can.
   bool ambiguous = false;
   bool collinear_tie_broken = false;  // the distance test chose the diagonal
-  PlanarPose delta;  // pairs.delta(anchor1, anchor2), in every case (spec §5.6.4)
+  PlanarPose delta;  // pairs.delta(anchor1, anchor2), in every case (thesis 4.3.4)
 };
 
 // The mean distance between key point a of the first plane and key point b of the second over

@@ -1,7 +1,7 @@
 #pragma once
 // Every constant of the Relative Plane algorithm (thesis Chapter 4), with its default and its
 // source. Tags: [T] thesis-stated, [P] companion paper, [R] reconstructed/recommended by
-// ../shared/specs/relative_plane_em.md §5.14 (the thesis gives almost no numbers), [C] chosen
+// (the thesis gives almost no numbers), [C] chosen
 // here. Part 1 of the algorithm: Rules 1–12, planes reported at full size.
 
 #include "relslam/core/option_fields.hpp"
@@ -22,7 +22,7 @@ enum class IntervalMode : unsigned char {
   Group,  // ... and inside the group's common interval: less map noise, but can be very short
 };
 
-// Rule 21's order of attempts for a re-acquired plane (spec §5.5.4, A25).
+// Rule 21's order of attempts for a re-acquired plane (thesis 4.3.5, A25).
 enum class Rule21Order : unsigned char {
   Walkthrough,    // the current group, its neighbours, then a new group (thesis 4.5) [T]
   NewGroupFirst,  // a new group first, as the rule was first stated (4.3.5) [T]
@@ -31,11 +31,11 @@ enum class Rule21Order : unsigned char {
 // The order of a new group's comparison chain (Rule 2: a noise-free map does not depend on it;
 // spec E31 checks that by running both).
 enum class ChainOrder : unsigned char {
-  Creation,  // planes[0], the base, is the RltPlane created first (spec §5.5.3, A38) [T]
+  Creation,  // planes[0], the base, is the RltPlane created first (thesis 4.3.2, A38) [T]
   Reversed,  // the last created first [C, for E31]
 };
 
-// One switch per rule the thesis turns on or off, for the ablations of spec §6. Each comment
+// One switch per rule the thesis turns on or off, for the ablations. Each comment
 // says what "off" does. Rules 2, 5 and 6 have no switch: Rule 2 is a property the chaining
 // has, and Rules 5 and 6 are what the algorithm outputs (pose; map from groups and links).
 struct RuleSwitches {
@@ -86,7 +86,7 @@ struct RuleSwitches {
   // Rule 29: when two or more planes are in view during a motion model and a group holds them
   // all, that group becomes current again. Off: the motion model ends only by a new group.
   bool return_to_visited_group = true;
-  // Rule 30 (ReorderPlanes, spec §5.7.3): a group's comparison chain is re-ordered so it pairs
+  // Rule 30 (ReorderPlanes, thesis 4.3.7.1): a group's comparison chain is re-ordered so it pairs
   // the planes sharing the longest intervals with valid key points. Off: the chain stays in the
   // order the planes joined, and a collinear shrink + grow pair (Fig 97) can leave a plane
   // unplaced. [T: on; C: off for now] Off by default: on our maps it has not helped yet (the
@@ -101,34 +101,34 @@ struct RuleSwitches {
   // the periodic search it leaves placed groups and usable chains alone. Off by default, on in
   // E23/E24's scenarios [C] (measured in docs/experiments/plane-extraction.md).
   bool reorder_broken_chains = false;
-  // Rule 4's first-reading resize (thesis 4.3.6, Fig 90; spec §5.8 step 1): X0 is anchored on
+  // Rule 4's first-reading resize (thesis 4.3.6, Fig 90): X0 is anchored on
   // its planes' first observations, grown first to the plane's size in X0 from its key point
   // when the first reading was smaller. Off: the first reading is used as seen (the wrong
   // global alignment of Fig 90's second issue). Part 2 only.
   bool first_reading_resize = true;
   // Rule 19: a key point is used only in the interval it was computed on, else it is computed
-  // again there against the group's other planes (CalculateMissingKeyPoints, spec §5.7.4). Off:
+  // again there against the group's other planes (CalculateMissingKeyPoints, thesis 4.3.4). Off:
   // a membership's key point is used whatever its interval and none is recomputed (Figs 90–92:
   // planes too small or badly placed). Part 2 only.
   bool missing_key_points = true;
   // Rule 28: chaining moves each plane to the size the next edge saw it at before composing
-  // (spec §5.7.2). Off: the edge offsets are composed as they are, so a plane seen at two
+  // (thesis 4.3.6). Off: the edge offsets are composed as they are, so a plane seen at two
   // sizes in two edges puts the error of the difference into the chain (Fig 87). Part 2 only.
   bool size_correction = true;
-  // Rule 35 (spec §5.12): each group keeps a copy of its best complete result (every plane
+  // Rule 35 (thesis 4.3.7.3): each group keeps a copy of its best complete result (every plane
   // placed; the largest total size, then the longest total interval) and restores it when a
   // comparison can no longer be made — the circular array (plane_capacity) has overwritten the
   // iterations two planes shared. Off: such a group loses those planes and they vanish from the
   // map after the wrap-around (E19, Figs 98–99). Part 2 only.
   bool save_snapshot = true;
-  // Rule 36 (DoBackupCheck, spec §5.12): each chain edge keeps its best comparison so far (the
+  // Rule 36 (DoBackupCheck, thesis 4.3.7.3): each chain edge keeps its best comparison so far (the
   // child plane's largest size, then the longest interval, with the parent's size and key point
   // of that time for Rule 28) and uses it when the current one is smaller or cannot place the
   // plane — also once the circular array has overwritten the iterations the pair shared. Off:
   // only Rule 35's whole-group copy saves a group (E19). Part 2 only. [T: on] (measured in
   // docs/algorithms/relative-plane.md).
   bool save_reserve = true;
-  // Rule 37 (CheckForLoopClosing and MendMergeAfterLoopClosing, spec §5.5.5): during a motion
+  // Rule 37 (CheckForLoopClosing and MendMergeAfterLoopClosing, thesis 4.3.6): during a motion
   // model a group also holds a plane in view through its duplicate (the same wall as another
   // RltPlane, found by global matching), so a group holding them all that way becomes current
   // (Rule 29 through duplicates); then each plane in view with a duplicate gets a one-way link to
@@ -136,7 +136,7 @@ struct RuleSwitches {
   // while no group compares it. Off: a wall seen again as a new plane charts only its own groups
   // (the wrong current group of Fig 101). [T: on]
   bool pseudo_merge = true;
-  // Rules 31–34 (thesis 4.3.7.2, walkthrough 4.5; spec §5.11): a plane whose comparison in a
+  // Rules 31–34 (thesis 4.3.7.2, walkthrough 4.5): a plane whose comparison in a
   // group still covers fewer than rollback.min_interval iterations rollback.confirm_after
   // iterations after it joined gets a hint (first: not this group; then: only a group of its own;
   // then: not on the map), and the algorithm rolls back to the iteration it joined and replays
@@ -147,7 +147,7 @@ struct RuleSwitches {
   bool interval_check = false;
 };
 
-// The motion model (Rules 23–27, thesis 4.3.6; spec §5.10, §5.14).
+// The motion model (Rules 23–27, thesis 4.3.6).
 struct MotionModelOptions {
   // Rule 26: it starts after this many iterations without a pose [R, N_mm_on] ...
   int start_after = 3;
@@ -161,7 +161,7 @@ struct MotionModelOptions {
   double grow_threshold = 0.02;
 };
 
-// When Rule 30 re-orders a group's comparison chain (spec §5.7.3; the thesis: "after some time"
+// When Rule 30 re-orders a group's comparison chain (thesis 4.3.7.1; the thesis: "after some time"
 // and "periodically") and how hard it searches.
 struct ReorderOptions {
   // First at this group age, iterations [R, T_reorder] ...
@@ -187,7 +187,7 @@ enum class IntervalMeasure : unsigned char {
   Piece,
 };
 
-// Hints and roll-back (Rules 31–34, thesis 4.3.7.2, 4.4.3.15–17; spec §5.11, §5.14).
+// Hints and roll-back (Rules 31–34, thesis 4.3.7.2, 4.4.3.15–17).
 struct RollBackOptions {
   // Rules 31/32: a membership is confirmed once the comparison placing the plane (its chain edge
   // from the previous plane) covers this many iterations [R, I_min] ...
@@ -203,13 +203,13 @@ struct RollBackOptions {
   int checkpoint_period = 50;
   // The oldest reachable iteration, iterations back: the PlaneRecord buffer of thesis 4.4.3.17,
   // as deep as RltPlane's circular array [R, storage_capacity]; a roll-back further back is
-  // refused and counted (spec §5.11.3).
+  // refused and counted (thesis 4.3.7.2).
   int max_depth = 1200;
   // Roll-backs in one step (nested: requested while replaying). Each plane has at most three
   // hint levels, so this is only a safety net; beyond it requests are refused and counted [C].
   int max_nesting = 32;
   // Testing hook [C]: every this many iterations a roll-back with no hint to force_depth
-  // iterations back, whose replay must give the same run (spec §8 roll-back idempotence). 0: never.
+  // iterations back, whose replay must give the same run (roll-back idempotence). 0: never.
   int force_every = 0;
   int force_depth = 10;
 };
@@ -238,7 +238,7 @@ struct RelativePlaneOptions {
   // Observations kept per RltPlane: the circular array of thesis 4.4.3.4; 1200 in the runs of
   // Figs 98–99 [T]. Comparisons only see what is still stored.
   int plane_capacity = 1200;
-  // An unassigned RltPlane is grouped once it has this many observations [R, spec §5.14].
+  // An unassigned RltPlane is grouped once it has this many observations [R].
   int min_readings = 5;
   // Unassigned-list upkeep [P concept, R values]: a plane unseen for more than unseen_drop
   // iterations, or still below min_readings unassigned_drop iterations after it was created,
@@ -255,10 +255,10 @@ struct RelativePlaneOptions {
   // others in part 2) [R, τ_len].
   double same_length = 0.02;
   // Rules 13/15: when two of the four key-point pairs' standard deviations count as equal
-  // (static planes, the diagonal tie of Rule 15) [R, spec §5.14 r_tie, ε_σ].
+  // (static planes, the diagonal tie of Rule 15) [R, r_tie, ε_σ].
   KeyPointTies key_point_ties;
   // Rule 18: the comparison interval split where either plane switches between growing and
-  // shrinking (GetMaxSize) [R, spec §5.14 w_ma, h, n_min_cmp].
+  // shrinking (GetMaxSize) [R, w_ma, h, n_min_cmp].
   GrowthPhaseBounds growth_phase;
   // Rule 18 refined: samples at either end of a growth-phase piece whose key-point offsets stand
   // off the rest of the series (a cut end taken for a static one) are left out of the average

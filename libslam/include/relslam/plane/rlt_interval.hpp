@@ -1,5 +1,5 @@
 #pragma once
-// RltInterval (thesis 4.4.3.7; spec §2.7): one span of iterations, both ends inclusive.
+// RltInterval (thesis 4.4.3.7; thesis 4.3.3): one span of iterations, both ends inclusive.
 
 #include <algorithm>
 

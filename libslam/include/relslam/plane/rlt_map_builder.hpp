@@ -1,5 +1,5 @@
 #pragma once
-// RltMapBuilder (thesis 4.4.3.11; spec §5.8, §5.9, §5.4.2 step 3): the global map from the
+// RltMapBuilder (thesis 4.4.3.11): the global map from the
 // groups and their links, the current pose from this iteration's observations, and matching an
 // observation against the map.
 
@@ -19,7 +19,7 @@
 
 namespace relslam::plane {
 
-// One global-map entry per RltPlane (spec §5.8).
+// One global-map entry per RltPlane (thesis 4.4.3.11).
 struct MapPlane {
   bool mapped = false;
   PlaneObject plane;         // world frame, at `length`; plane.iteration is meaningless
@@ -73,7 +73,7 @@ class RltMapBuilder {
   // seen from world_T_start, say (Rule 4; options.rules.anchor_first_observation false leaves
   // it at the identity); every other group where its linking planes' two memberships agree,
   // averaged (Rule 8). With options.key_points a first observation smaller than the plane's
-  // size in X0 is grown from its key point first (Rule 4's first-reading resize, spec §5.8
+  // size in X0 is grown from its key point first (Rule 4's first-reading resize, thesis 4.4.3.11
   // step 1), and a linking plane's smaller membership is re-anchored to the larger (Rule 17).
   void build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
                  const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
@@ -84,7 +84,7 @@ class RltMapBuilder {
   // With options.key_points a partial observation is grown to the map's size from its key point
   // at this iteration (Rule 16) — a membership's key point computed on a piece holding this
   // iteration, else one found by Rule 19 against the other observations of the iteration; an
-  // observation with no static end gives no pose (spec §5.9).
+  // observation with no static end gives no pose (thesis 4.4.3.11).
   RltPoset get_poset(std::span<const RegisteredObservation> observations, const std::vector<RltPlane>& planes,
                      const RelativePlaneOptions& options) const;
 

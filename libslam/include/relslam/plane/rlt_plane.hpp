@@ -1,5 +1,5 @@
 #pragma once
-// RltPlane (thesis 4.2.1, 4.4.3.4; spec §5.2): every untransformed observation of one physical
+// RltPlane (thesis 4.2.1, 4.4.3.4): every untransformed observation of one physical
 // plane, kept in the robot frame it was seen in (Fig 65), and its group memberships.
 
 #include "relslam/core/plane_object.hpp"
@@ -61,7 +61,7 @@ class RltPlane {
   const RltXPointRef* ref(XPointId x) const;
   RltXPointRef* ref(XPointId x);
   RltXPointRef& join(XPointId x, int iteration);
-  // Rule 37's one-way links (spec §5.2 oneway_xpoints, §5.5.5): groups a duplicate of this plane
+  // Rule 37's one-way links: groups a duplicate of this plane
   // is in. Only Rule 22's charting reads them; the groups do not list the plane, so their
   // comparisons never see it.
   const std::vector<XPointId>& oneway_xpoints() const { return oneway_; }

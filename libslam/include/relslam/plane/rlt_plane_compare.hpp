@@ -1,5 +1,5 @@
 #pragma once
-// RltPlaneCompare (thesis 4.4.3.6; spec §2.4, §5.6): the relative pose of two RltPlanes, averaged
+// RltPlaneCompare (thesis 4.4.3.6; thesis 4.3.1, 4.3.4): the relative pose of two RltPlanes, averaged
 // over the iterations both were seen in. Part 1 compares full-size planes by their midpoints;
 // part 2 adds the growth-phase split (Rule 18) and the four assumed-midpoint pairs that find
 // the key points (Rules 13–15), filling the key-point fields below.
@@ -15,8 +15,8 @@ class RltPlane;
 class RltPlaneInterval;
 
 // Rule 3 for one iteration: `second`'s pose in the frame of `first` turned to 0° —
-// P_first⁻¹ ∘ P_second = (Rot(−θ₁)(m₂ − m₁), θ₂ − θ₁), the same from every robot pose (spec
-// §2.4). With `rotate_to_first` false: (m₂ − m₁, θ₂ − θ₁), the raw difference of Fig 66.
+// P_first⁻¹ ∘ P_second = (Rot(−θ₁)(m₂ − m₁), θ₂ − θ₁), the same from every robot pose.
+// With `rotate_to_first` false: (m₂ − m₁, θ₂ − θ₁), the raw difference of Fig 66.
 PlanarPose plane_offset(const PlaneObject& first, const PlaneObject& second, bool rotate_to_first = true);
 
 // ComparePlanes: the mean of plane_offset over every iteration in which both planes have a

@@ -1,5 +1,5 @@
 #pragma once
-// RltPlaneInterval (thesis 4.4.3.8; spec §2.7): the iterations an RltPlane was seen in, as
+// RltPlaneInterval (thesis 4.4.3.8; thesis 4.3.3): the iterations an RltPlane was seen in, as
 // runs — a plane can leave the view and come back (backtracking, loop closing).
 
 #include "relslam/plane/rlt_interval.hpp"
@@ -9,7 +9,7 @@
 namespace relslam::plane {
 
 // Invariant: runs are sorted, disjoint and separated by at least one iteration without an
-// observation (spec §2.7: any missing iteration ends a run), so total_size() is exact.
+// observation (thesis 4.3.3: any missing iteration ends a run), so total_size() is exact.
 class RltPlaneInterval {
  public:
   // AddInterval for one new observation: extends the last run or starts a new one; a

@@ -1,5 +1,5 @@
 #pragma once
-// RltXMMPoint (thesis 4.3.6, 4.4.3.3; spec §5.10): the motion-model group. When only one
+// RltXMMPoint (thesis 4.3.6, 4.4.3.3): the motion-model group. When only one
 // partial plane is in view there is no key point in the current interval and so no pose
 // (Rule 26); the plane's place is already known, only how far it extends is not (Rule 23). The
 // motion model fixes its frame at the last valid pose (Rule 27) and tracks the robot from that
@@ -40,7 +40,7 @@ class RltXMMPoint {
   const PlanarPose& anchor() const { return world_T_anchor_; }
   int start_iteration() const { return start_iteration_; }
 
-  // ComputeXPoint for the motion model (Rules 23–25, spec §5.10.3): re-runs the track over every
+  // ComputeXPoint for the motion model (Rules 23–25, thesis 4.3.6): re-runs the track over every
   // stored observation of the plane from the start, so it depends only on the observations
   // (deterministic replay), and writes the grown plane into its membership of this group.
   void compute(std::vector<RltPlane>& planes, const MotionModelOptions& options);

@@ -1,5 +1,5 @@
 #pragma once
-// RltXPoint (thesis 4.3.2, 4.4.3.2; spec §5.5.2, §5.7): a group of RltPlanes seen together and
+// RltXPoint (thesis 4.3.2, 4.4.3.2): a group of RltPlanes seen together and
 // their relative map, chained from pairwise comparisons.
 
 #include "relslam/core/planar_pose.hpp"
@@ -15,7 +15,7 @@
 
 namespace relslam::plane {
 
-// Rule 35's copy of an RltXPoint's best complete result (spec §5.12), for the chain it was
+// Rule 35's copy of an RltXPoint's best complete result (thesis 4.3.7.3), for the chain it was
 // computed on. At namespace scope, not nested in RltXPoint: clang cannot default-construct a
 // nested struct with default member initialisers (optional::emplace) while the enclosing class
 // is incomplete, which GCC accepts.
@@ -44,7 +44,7 @@ class RltXPoint {
   // The last comparison of each chain edge: edges()[i] compares planes[i] with planes[i+1].
   const std::vector<CompareResult>& edges() const { return edges_; }
 
-  // Rule 7 (CanAdd, spec §5.5.2): `candidate` was seen together with every plane of the group
+  // Rule 7 (CanAdd, thesis 4.3.2): `candidate` was seen together with every plane of the group
   // for at least `min_common` iterations.
   bool can_add(const std::vector<RltPlane>& planes, const RltPlane& candidate, int min_common) const;
   // GetMinimumInterval over all planes: the iterations in which every plane was seen.
@@ -57,14 +57,14 @@ class RltXPoint {
   // says a noise-free map does not depend on it). logic_error if the planes differ.
   void set_chain(std::vector<PlaneId> order);
 
-  // ComputeXPoint (spec §5.7): compares each chain edge and composes the results into every
+  // ComputeXPoint (thesis 4.4.3.2): compares each chain edge and composes the results into every
   // plane's pose in the group frame (SE(2) composition: the thesis's "add the running offset",
   // Rules 2, 6). A plane after an edge with no common iteration is marked invalid. With
   // options.key_points (part 2) each edge is compared by key points (Rules 13–15, 18) and the
-  // chain is composed with size correction (Rule 28, spec §5.7.2).
+  // chain is composed with size correction (Rule 28, thesis 4.3.6).
   void compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
 
-  // ReorderPlanes (Rule 30, spec §5.7.3) when it is due at `iteration`: periodically with
+  // ReorderPlanes (Rule 30, thesis 4.3.7.1) when it is due at `iteration`: periodically with
   // options.rules.reorder_planes (options.reorder), and with rules.reorder_broken_chains while
   // the group is not placed and an edge of its chain could not place both its planes (then only
   // a chain whose edges all can replaces it). The chain becomes the best path by the planes' pairwise comparison
@@ -72,7 +72,7 @@ class RltXPoint {
   // the Rule 36 reserves of the edges that changed are then cleared.
   bool reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration);
 
-  // CheckIntervalSize (Rules 31, 32; spec §5.11.1), after compute(): a plane's membership is
+  // CheckIntervalSize (Rules 31, 32; thesis 4.3.7.2), after compute(): a plane's membership is
   // confirmed once the comparison placing it — the chain edge from the plane before it — averaged
   // options.min_interval iterations; a plane still unconfirmed options.confirm_after iterations
   // after it joined is appended to `failed` (the caller sends a hint back and rolls back, Rule
@@ -90,7 +90,7 @@ class RltXPoint {
   void mark_changed() { needs_compute_ = true; }
 
   // A motion-model group (RltXMMPoint, thesis 4.3.6): its frame is fixed at the last valid pose
-  // (Rule 27), it never takes a plane (spec §5.5.2) and its RltXMMPoint computes it.
+  // (Rule 27), it never takes a plane (thesis 4.3.2) and its RltXMMPoint computes it.
   bool motion_model() const { return anchor_.has_value(); }
   const std::optional<PlanarPose>& anchor() const { return anchor_; }
   void set_anchor(const PlanarPose& world_T_xpoint) { anchor_ = world_T_xpoint; }
@@ -116,7 +116,7 @@ class RltXPoint {
   std::optional<PlanarPose> anchor_;
   void compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
                                const RltPlaneInterval* within);
-  // compute_with_key_points's three parts (spec §5.7.2): edge comparison (ComparePlanes with key
+  // compute_with_key_points's three parts (thesis 4.3.6): edge comparison (ComparePlanes with key
   // points, Rules 13–15, 18, 36), canonical sizes (each plane's largest length and its key point,
   // Rule 19 for a missing one), and chaining with size correction (Rules 2, 6, 15, 28).
   struct Canonical;
@@ -145,7 +145,7 @@ class RltXPoint {
   // what changed (thesis 4.2.2, 4.3.8: time follows the planes in view).
   std::vector<PairComparison> pair_comparisons_;
 
-  // Rule 35's copy of the best complete result (spec §5.12), for the chain it was computed on.
+  // Rule 35's copy of the best complete result (thesis 4.3.7.3), for the chain it was computed on.
   std::optional<RltXPointSnapshot> snapshot_;
   void keep_or_restore_snapshot(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
   // Chain plane k's observations: where they are stored, or only those inside `within`.

@@ -1,5 +1,5 @@
 #pragma once
-// RltXPointLink (thesis 4.4.3.9; spec §5.2): how a group was chained onto an older one.
+// RltXPointLink (thesis 4.4.3.9): how a group was chained onto an older one.
 
 #include "relslam/plane/ids.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// RltXPointRef (thesis 4.4.3.5; spec §5.2): one RltPlane's membership of one RltXPoint, with
+// RltXPointRef (thesis 4.4.3.5): one RltPlane's membership of one RltXPoint, with
 // the plane's place in that group's relative map.
 
 #include "relslam/core/planar_pose.hpp"
@@ -19,12 +19,12 @@ struct RltXPointRef {
   // False until a comparison placed the plane (or when its comparison interval is empty).
   bool valid = false;
   // x_T_plane: the plane's reference point — its midpoint at max_length, anchored on key_point
-  // — and direction in the group's frame (spec §5.7.2).
+  // — and direction in the group's frame (thesis 4.3.6).
   PlanarPose pose;
   RltInterval interval;  // first and last iteration of the comparison that placed it
   int samples = 0;       // iterations that comparison averaged
   KeyPoint key_point = KeyPoint::None;
-  // Part 2: the plane kept its size in the comparison that gave max_length (spec §5.6.4), so it
+  // Part 2: the plane kept its size in the comparison that gave max_length (thesis 4.3.4), so it
   // needs no key point to be placed at that size.
   bool size_static = false;
   double max_length = 0;
@@ -34,7 +34,7 @@ struct RltXPointRef {
   // track, not one that is in view at each of its iterations, so the pose (Rule 16) does not
   // grow an observation from it [C].
   bool tracked = false;
-  // Rule 36 (spec §5.12): the best comparison so far of this plane (second side) with its chain
+  // Rule 36 (thesis 4.3.7.3): the best comparison so far of this plane (second side) with its chain
   // parent `reserve_partner` (first side) — the partner's size and key point at that time
   // included, so Rule 28's size correction stays right when it is used. Cleared when the chain
   // gives the plane another parent (Rule 30).
@@ -48,13 +48,13 @@ struct RltXPointRef {
   bool hinted = false;
 };
 
-// Spec §5.12, the test Rules 35 and 36 share: a result replaces a saved one when it is larger by
+// thesis 4.3.7.3, the test Rules 35 and 36 share: a result replaces a saved one when it is larger by
 // more than `same_length` (τ_len), or about as large (within τ_len) and over at least as many
 // iterations. Lengths are one plane's (Rule 36) or a group's total (Rule 35).
 bool replaces_saved(double length, long long samples, double saved_length, long long saved_samples,
                     double same_length);
 
-// Rule 36, DoBackupCheck (thesis 4.4.3.5; spec §5.12), after each comparison of `ref`'s plane (the
+// Rule 36, DoBackupCheck (thesis 4.4.3.5; thesis 4.3.7.3), after each comparison of `ref`'s plane (the
 // second side of `current`) with its chain parent `partner` (the first side): a reserve the
 // current result does not replace — bigger by more than τ_len, or about as big over more
 // iterations — or any reserve when the current result cannot place the plane (no comparison, a

@@ -1,5 +1,5 @@
 #pragma once
-// RltXPointsS (thesis 4.4.3.1, 4.5; spec §5.4, §5.5, §5.13): the Relative Plane algorithm's
+// RltXPointsS (thesis 4.4.3.1, 4.5; thesis 4.3.1, 4.3.2, 4.5): the Relative Plane algorithm's
 // entry class, one call per iteration. Eigen only: no I/O, JSON or simulator; truth never
 // enters.
 
@@ -36,13 +36,13 @@ class RltXPointsS : private RltXPointsState, private RltXPointsScratch {
   // other inputted coordinate"). logic_error if check(options) finds a problem.
   explicit RltXPointsS(const RelativePlaneOptions& options = {}, const PlanarPose& world_T_start = {});
 
-  // One iteration (spec §5.13): StartIteration, AddPlane for each observation, ManageXPoints,
+  // One iteration (thesis 4.5): StartIteration, AddPlane for each observation, ManageXPoints,
   // ComputeXPoints (with CheckIntervalSize), BuildMap, GetPoset, then RollBack when a check asked
   // for one. Iterations must increase; planes in the robot frame.
   RelativePlaneStep step(const PlaneFrame& frame);
 
   // SetRollBackTo with no hint, served at the end of the next step(): the state at the end of
-  // iteration target − 1 is restored and the stored inputs replayed. A testing hook (spec §8: the
+  // iteration target − 1 is restored and the stored inputs replayed. A testing hook (the
   // replay must give the run that had no roll-back); refused (and counted) when the target is
   // older than the oldest state kept or neither rules.interval_check nor rollback.force_every
   // keeps any.
@@ -50,7 +50,7 @@ class RltXPointsS : private RltXPointsState, private RltXPointsScratch {
   // Rule 34's general form: `hint` is added (deleting later ones) and the run rolled back to the
   // hint's iteration at the end of the next step(), as when CheckIntervalSize sends one.
   void send_hint(const RltTemporalHint& hint);
-  // The plane a hint names (spec §5.11.2).
+  // The plane a hint names (thesis 4.3.7.2).
   using RltXPointsState::identity;
 
   const std::vector<RltPlane>& planes() const { return planes_; }

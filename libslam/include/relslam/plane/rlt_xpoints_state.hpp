@@ -29,13 +29,13 @@ struct RltXPointsState {
   std::vector<PlaneId> recent_;  // RltPlanes seen within local_match.max_iteration_gap
   std::vector<char> in_recent_;  // per RltPlane: in recent_
   // Per RltPlane: the index of its first observation in that iteration's input (its hint
-  // identity with its created iteration, spec §5.11.2).
+  // identity with its created iteration, thesis 4.3.7.2).
   std::vector<int> plane_inputs_;
   // Per RltXPoint: the plane it was made for (MakeNewXPoint), kNone for X0 and motion models.
   std::vector<PlaneId> founders_;
   RltMapBuilder builder_;
   RltPoset pose_;
-  RltPoset last_valid_pose_;  // Rule 11 places observations with it [R, spec §5.9]
+  RltPoset last_valid_pose_;  // Rule 11 places observations with it [R, thesis 4.4.3.11]
   // Adaptive preset: the pose as reported, checked (pose_integrity.hpp); pose_ stays the one the
   // algorithm runs on (Rules 11, 26, 27), the checked pose where that is valid.
   RltPoset checked_pose_;
@@ -50,7 +50,7 @@ struct RltXPointsState {
   int iteration_ = 0;
   bool started_ = false;
 
-  // The plane a hint names (spec §5.11.2): its created iteration and its index in that input.
+  // The plane a hint names (thesis 4.3.7.2): its created iteration and its index in that input.
   PlaneIdentity identity(PlaneId plane) const { return {planes_[plane].created_iteration(), plane_inputs_[plane]}; }
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // Going back in time (Rules 33, 34; thesis 4.2.6, 4.3.7.2, 4.4.3.17, walkthrough 4.5 RollBack;
-// spec §5.11.3): the stored input of every recent iteration (the PlaneRecords of
+// thesis 4.3.7.2): the stored input of every recent iteration (the PlaneRecords of
 // RltPlaneStorage) and copies of the algorithm's whole state, from which RltXPointsS restores the
 // end of the iteration before a roll-back's target and replays the stored inputs. Eigen only.
 
@@ -35,7 +35,7 @@ struct RollBackEvent {
 };
 
 // RltPlaneStorage (thesis 4.4.3.17): the inputs of the recent iterations and checkpoints of the
-// state. Deviation (spec §5.11.3 steps 1–4 cut every buffer back by hand; the thesis notes that
+// state. Deviation (a literal reading cuts every buffer back by hand; the thesis notes that
 // rolling back is quick and the replay is what costs): a checkpoint is a copy of the whole state,
 // kept every rollback.checkpoint_period iterations, so nothing can be left out of the restore;
 // the replay starts at the checkpoint, at most one period before the target.

@@ -11,7 +11,7 @@
 namespace relslam::point {
 
 // Coordinates relative to three basis points: B0 at the origin, B1 on the negative x axis,
-// B2 in the xz plane with z > 0 (spec 3.2). The frame depends only on the three points, so
+// B2 in the xz plane with z > 0 (thesis 6.3.3). The frame depends only on the three points, so
 // coordinates computed from any viewpoint agree: the invariance the group averages rely on.
 struct BasisFrame {
   Eigen::Matrix3d rotation;  // rows ex, ey, ez

@@ -1,5 +1,5 @@
 #pragma once
-// Group creation (thesis 6.4, the algorithm of 6.4.3; levels and clean-up 6.5.5; spec 5.6,
+// Group creation (thesis 6.4, the algorithm of 6.4.3; levels and clean-up 6.5.5,
 // 5.12): turning ready ungrouped RltPoints into RltGroups on the map. Eigen only.
 
 #include "relslam/point/group_planning.hpp"
@@ -24,7 +24,7 @@ struct CreationReport {
 // matching and merging edit them too.
 class GroupCreation {
  public:
-  // A new RltPoint: with level 3 on it waits to leave the view (spec 5.12).
+  // A new RltPoint: with level 3 on it waits to leave the view (thesis 6.5.5).
   void add_point(PointId id, const PointSlamOptions& options);
 
   // Thesis 6.4.3 at iteration k: for the temporary, then the final level, every entry of the
@@ -43,7 +43,7 @@ class GroupCreation {
   void create_level3_groups(RltMap& map, int k, const PointSlamOptions& options, CreationReport& report);
   // Takes in one plan's outcome: its dynamic points are flagged, its group (if any) is built.
   bool apply(RltMap& map, GroupLevel level, int c0, int k, const PlanOutcome& outcome, CreationReport& report);
-  // Builds the planned group, hands its new members over (ownership by level, spec 5.6) and
+  // Builds the planned group, hands its new members over (ownership by level, thesis 6.4) and
   // computes it over [c0, k].
   void build_group(RltMap& map, GroupLevel level, int c0, int k, const GroupPlan& plan);
 

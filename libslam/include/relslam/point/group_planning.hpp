@@ -1,5 +1,5 @@
 #pragma once
-// Choosing an RltGroup's members and basis (thesis 6.4.3 steps 1–4 and 6, spec 5.6).
+// Choosing an RltGroup's members and basis (thesis 6.4.3 steps 1–4 and 6).
 
 #include "relslam/point/options.hpp"
 #include "relslam/point/rlt_group.hpp"
@@ -45,7 +45,7 @@ class GroupPlanner {
   // points, c itself too rarely seen or dynamic, or no usable basis).
   PlanOutcome plan(PointId c, int c0, int k, const LevelContext& level, const std::vector<RltPoint>& points,
                    RltPointCharting& charting, const PointSlamOptions& options);
-  // Level 3 (spec 5.12) for point c, out of view at iteration k.
+  // Level 3 (thesis 6.5.5) for point c, out of view at iteration k.
   PlanOutcome plan_level3(PointId c, int k, const std::vector<RltPoint>& points, RltPointCharting& charting,
                           const PointSlamOptions& options);
 

@@ -1,5 +1,5 @@
 #pragma once
-// Global relaxation of the Relative Point map (beyond the thesis, issue 19): the problem of
+// Global relaxation of the Relative Point map (beyond the thesis): the problem of
 // solving every group-to-world transform at once, built from and written back to an RltMap.
 // Eigen only: the solver itself (Ceres) lives in relslam/relax/ and is reached through
 // GroupRelaxer, so libslam never sees its headers.

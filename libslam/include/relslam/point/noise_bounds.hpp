@@ -1,5 +1,5 @@
 #pragma once
-// Matching bounds scaled with the sensor noise (beyond the thesis, issue 16). The thesis tuned
+// Matching bounds scaled with the sensor noise (beyond the thesis). The thesis tuned
 // its bounds to noise sigma 0.1 (thesis 6.6.1); at sigma 0.2 a quarter of the map came out as
 // duplicates, because two observations of one point then differ by more than the bounds allow.
 

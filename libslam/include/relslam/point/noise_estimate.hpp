@@ -1,6 +1,6 @@
 #pragma once
 // The sensor noise of data that states none, estimated from the residuals of the group averages
-// (beyond the thesis, issue 16), so that noise_bounds.hpp can scale the bounds from it. Eigen only.
+// (beyond the thesis), so that noise_bounds.hpp can scale the bounds from it. Eigen only.
 
 #include "relslam/point/options.hpp"
 #include "relslam/point/rlt_group.hpp"

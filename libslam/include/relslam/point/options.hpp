@@ -1,7 +1,7 @@
 #pragma once
 // Every constant of the Relative Point algorithm, with its default and its source, and beside
 // each struct its description: key name, help and checks per field (core/option_fields.hpp).
-// Tags: [T] thesis-stated, [I] inferred, [C] chosen (../shared/specs/relative_point.md §5.14).
+// Tags: [T] thesis-stated, [I] inferred, [C] chosen.
 
 #include "relslam/core/option_fields.hpp"
 #include "relslam/core/option_issue.hpp"
@@ -85,7 +85,7 @@ inline GroupLevelOptions final_level_defaults() {
           .binning = true};
 }
 
-// Level 3 (thesis 6.5.5, spec 5.12): a constant-free level. When a point has gone out of view,
+// Level 3 (thesis 6.5.5): a constant-free level. When a point has gone out of view,
 // a group is formed over its first visible run from the points seen in it: three mapped ones
 // to register it (level-3 grouped first, then final, then temporary [C: the spec falls back on
 // final only, which Victoria Park's sparse scans rarely form]), then every other one that adds
@@ -93,7 +93,7 @@ inline GroupLevelOptions final_level_defaults() {
 struct Level3Options {
   bool enabled = false;  // the thesis used it in the Victoria Park timing only
   // A point unseen for more than `gap` iterations is out of view; a visible run may have gaps
-  // of up to this many iterations [C, spec 5.12].
+  // of up to this many iterations [C, thesis 6.5.5].
   int gap = 3;
   int prev_min = 3;     // registering members (three fix a rigid motion) [T outline]
   bool binning = true;  // RltBinning removes dynamic members
@@ -175,7 +175,7 @@ struct PointSlamOptions {
 
   // RltPoint merging (thesis 6.5.2): merge_delay iterations after its creation, a mapped point
   // whose map position lies within merge_bound of an older, temporally disjoint mapped point is
-  // merged into it, and the groups recompute over the copied iterations [C values, spec 5.9].
+  // merged into it, and the groups recompute over the copied iterations [C values, thesis 6.5.2].
   bool merge_points = true;
   int merge_delay = 20;
   double merge_bound = 2.0;

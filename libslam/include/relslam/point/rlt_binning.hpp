@@ -19,7 +19,7 @@ enum class BinPairing {
   // stated best case. [C]
   Disjoint,
   // Every valid bin initiates one comparison per round with the first bin after it not yet
-  // compared (spec 5.7's reading of thesis 6.5.3): redundant comparisons in the first round
+  // compared (thesis 6.5.3's reading of thesis 6.5.3): redundant comparisons in the first round
   // (n instead of n - 1 for all-static input) and, without the heuristic, the thesis's
   // polynomial growth from 20-30 % uncorrelated points (Fig 113).
   EveryBin,
@@ -30,7 +30,7 @@ struct BinningOptions {
   BinPairing pairing = BinPairing::Disjoint;
   // The automatic threshold (thesis 6.5.3): the first gap between consecutive sorted
   // first-round standard deviations that exceeds both abs_gap and rel_gap times the lower one
-  // [C values; spec 5.7: static pairs have ~sigma·sqrt(2) ≈ 0.14 at sigma 0.1].
+  // [C values; thesis 6.5.3: static pairs have ~sigma·sqrt(2) ≈ 0.14 at sigma 0.1].
   double abs_gap = 0.05;  // units
   double rel_gap = 0.5;
   // Threshold = lower value of the gap plus half the minimum gap (a margin for pairs just above
@@ -77,7 +77,7 @@ struct BinningResult {
 // cannot be computed). In rounds, bins are compared through their first points; a comparison
 // within the threshold merges the two bins. The first round's values set the threshold, and
 // its merges are applied afterwards through a union-find (a partner may have been merged
-// elsewhere meanwhile, spec 5.7). Uncorrelated points cost up to n^2/2 comparisons (6.5.3).
+// elsewhere meanwhile, thesis 6.5.3). Uncorrelated points cost up to n^2/2 comparisons (6.5.3).
 BinningResult rlt_binning(int n, const std::function<double(int, int)>& pair_std, const BinningOptions& options);
 
 // Standard deviation of |a(t) - b(t)| over the iterations in [start, end] where both were

@@ -16,7 +16,7 @@ namespace relslam::point {
 enum class GroupLevel : unsigned char {
   Temporary,  // short look-ahead: maps new points quickly (thesis 6.5.5)
   Final,      // long look-ahead: the groups the map's accuracy rests on
-  Level3,     // formed when a point leaves the view, over its whole visible run (spec 5.12)
+  Level3,     // formed when a point leaves the view, over its whole visible run (thesis 6.5.5)
 };
 
 // How a group finds its place on the map (thesis 6.3.3 step 4).

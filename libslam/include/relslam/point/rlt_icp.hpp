@@ -17,7 +17,7 @@ namespace relslam::point {
 // Spans, so callers can pass scratch buffers they keep between iterations.
 std::optional<Rigid3> rlt_icp(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b);
 
-// Deviation (adaptive preset, issue 16): two matched pairs fix b_T_a up to a rotation about
+// Deviation (adaptive preset): two matched pairs fix b_T_a up to a rotation about
 // their line. That one freedom comes from `prior_b_R_a`: the result's rotation is the one
 // closest to the prior (smallest angle between them) that maps a's line onto b's, i.e. the
 // prior followed by the shortest rotation turning the prior's image of a's line onto b's line;
@@ -31,21 +31,21 @@ std::optional<Rigid3> register_two_points(const Eigen::Vector3d& a0, const Eigen
                                           const Eigen::Matrix3d& prior_b_R_a, const Eigen::Vector3d& b_up,
                                           double max_line_sine);
 
-// Deviation (adaptive preset, issue 16): b_T_a from one pair, a0 ↦ b0, with the rotation given
+// Deviation (adaptive preset): b_T_a from one pair, a0 ↦ b0, with the rotation given
 // (one point fixes only the translation).
 Rigid3 register_one_point(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0, const Eigen::Matrix3d& b_R_a);
 
-// Deviation (adaptive preset, issue 16): b_T_a from matched pairs with the rotation given: the
+// Deviation (adaptive preset): b_T_a from matched pairs with the rotation given: the
 // translation maps the pairs' centroid a onto b's (register_one_point of the centroids). A swap
 // of two pairs leaves it where it was.
 Rigid3 register_centroids(std::span<const Eigen::Vector3d> a, std::span<const Eigen::Vector3d> b,
                           const Eigen::Matrix3d& b_R_a);
 
-// Deviation (adaptive preset, issue 16): the rotation `weight` of the way from `from` to `to`
+// Deviation (adaptive preset): the rotation `weight` of the way from `from` to `to`
 // (spherical interpolation; 0: from, 1: to).
 Eigen::Matrix3d interpolate_rotation(const Eigen::Matrix3d& from, const Eigen::Matrix3d& to, double weight);
 
-// Deviation (adaptive preset, issue 16): the rotation closest (Frobenius) to `sum`, a sum of
+// Deviation (adaptive preset): the rotation closest (Frobenius) to `sum`, a sum of
 // rotations: their chordal mean. Many noisy estimates of one rotation average to it.
 Eigen::Matrix3d mean_rotation(const Eigen::Matrix3d& sum);
 

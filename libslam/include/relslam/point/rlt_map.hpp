@@ -61,9 +61,9 @@ struct RltMap {
   void compute(RltGroup& group, int from, int k);
   // Thesis 6.3.3 step 4: registers the group (as its Registration says) and writes the map
   // position of every member it owns; anchors are registration sources and never rewritten by
-  // this group (spec 5.5).
+  // this group (thesis 6.3.3).
   void anchor(RltGroup& group);
-  // Deviation (adaptive preset, issue 16, PointSlamOptions::two_point_registration): the robot
+  // Deviation (adaptive preset, PointSlamOptions::two_point_registration): the robot
   // poses registered to the map (the map frame's, to three or more mapped points, or to two),
   // kept for history_window iterations as the priors of two-point registration. A no-op when it
   // is off.
@@ -111,7 +111,7 @@ struct RltMap {
     int last = -1;
   };
   std::unordered_map<GroupId, TwoAnchorPrior> two_anchor_priors_;
-  // Deviation (adaptive preset, issue 16, PointSlamOptions::root_rotation_window): a root group
+  // Deviation (adaptive preset, PointSlamOptions::root_rotation_window): a root group
   // registered to the map frame's observations with its rotation fitted over its first
   // iterations from the map frame on (rotation_fit.hpp), the translation putting its members'
   // centroid on their first observations. Nothing before three such iterations.

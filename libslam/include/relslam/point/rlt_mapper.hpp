@@ -80,7 +80,7 @@ struct StepResult {
   StepTimings timings;
 };
 
-// Sequences one iteration (spec 5.3): matching, merging (rlt_point_merging.hpp), group
+// Sequences one iteration (thesis 6.4.3): matching, merging (rlt_point_merging.hpp), group
 // computation, group creation (group_creation.hpp) and the current pose, all on one RltMap.
 class RltMapper {
  public:
@@ -89,11 +89,11 @@ class RltMapper {
   // without one.
   explicit RltMapper(const PointSlamOptions& options = {}, GroupRelaxer relaxer = {});
 
-  // One iteration (thesis 6.2–6.5 as ordered in spec 5.3). Iterations must increase; points
+  // One iteration (thesis 6.2–6.5 as ordered in thesis 6.4.3). Iterations must increase; points
   // are robot-frame observations in any order. The first frame defines the world frame.
   StepResult step(const ObservationFrame& frame);
   // The same with some matches forced (observation index -> RltPoint id) over what matching
-  // found: how a test plants a deliberately wrong global match in a whole run (issue 19).
+  // found: how a test plants a deliberately wrong global match in a whole run.
   StepResult step(const ObservationFrame& frame, const std::vector<std::pair<int, PointId>>& forced_matches);
 
   RltMapper(RltMapper&&) noexcept;
@@ -122,7 +122,7 @@ class RltMapper {
   // point unseen for relaxation_loop_gap iterations (a loop closure).
   bool load(const ObservationFrame& frame, const std::vector<std::pair<int, PointId>>& forced_matches,
             StepResult& result);
-  // [relax] When global relaxation runs (beyond the thesis, issue 19).
+  // [relax] When global relaxation runs (beyond the thesis).
   void schedule_relaxation(int k, bool loop_closed, StepResult& result);
 
   // [pose] Current position (thesis 6.1): prediction, registration, then the provisional fallback.

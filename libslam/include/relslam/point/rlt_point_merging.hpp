@@ -1,5 +1,5 @@
 #pragma once
-// RltPoint merging (thesis 6.5.2, spec 5.9): a new RltPoint that turns out to be an old landmark
+// RltPoint merging (thesis 6.5.2): a new RltPoint that turns out to be an old landmark
 // found again (global matching missed it) is merged into the old RltPoint. Eigen only.
 
 #include "relslam/point/rlt_map.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Deviation (adaptive preset, issue 16): one rotation read off a run of noisy rotations of a
+// Deviation (adaptive preset): one rotation read off a run of noisy rotations of a
 // steadily turning frame, by a straight-line fit of their rotation vectors. Eigen only.
 
 #include <Eigen/Core>

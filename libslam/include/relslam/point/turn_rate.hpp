@@ -1,5 +1,5 @@
 #pragma once
-// Deviation (adaptive preset, issue 16): the robot's turn rate, measured from the rotations of
+// Deviation (adaptive preset): the robot's turn rate, measured from the rotations of
 // the poses whose registration fixed the rotation, to predict the rotation of an iteration
 // whose registration cannot (one point in view). Eigen only.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The Chapter 6 figure-eight track (spec 4.1). Part of relslam/sim.
+// The Chapter 6 figure-eight track (thesis 6.6.1). Part of relslam/sim.
 
 #include "relslam/sim/centerline.hpp"
 

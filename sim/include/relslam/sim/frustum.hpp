@@ -26,7 +26,7 @@ std::string_view to_string(FarCap cap);
 std::optional<FarCap> parse_far_cap(std::string_view name);
 
 // A horizontal trapezoid extruded vertically (spec 4.5, A6) in the robot frame
-// (+x left, +y up, +z forward). Culling is applied to the *noisy* points (spec 2.2): with a
+// (+x left, +y up, +z forward). Culling is applied to the *noisy* points (thesis 4.2.1): with a
 // symmetric height band this reproduces the thesis's unbiased vertical behaviour (6.6.1).
 struct Frustum {
   double near = 1.0;   // units; closer points are not seen [C]

@@ -2,7 +2,7 @@
 // Everything that defines a simulated world and sensor, with one documented default each and,
 // beside each struct, its description: key name, help and checks per field
 // (core/option_fields.hpp). Part of relslam/sim: no I/O. Tags: [T] thesis-stated,
-// [I] inferred, [C] chosen (../shared/specs/relative_point.md §4).
+// [I] inferred, [C] chosen (thesis 6.6.1).
 
 #include "relslam/core/option_fields.hpp"
 #include "relslam/core/option_issue.hpp"
@@ -146,7 +146,7 @@ double scaled_loop_length(const SimOptions& options);
 // Arc length advanced per iteration: one loop in scale·iterations_per_loop iterations,
 // constant speed (spec 4.1.2).
 double step_length(const SimOptions& options);
-// Length of the centre line the point band is generated along (spec 4.3): one loop, or the
+// Length of the centre line the point band is generated along (thesis 6.6.2): one loop, or the
 // straight run plus line_margin.
 double field_length(const SimOptions& options);
 // Number of static points the band gets: density per 100 units times the field length.

@@ -1,6 +1,6 @@
 #pragma once
 // Everything one planar-world run is built from: the walls, the robot's path and the sensor the
-// map was made for (relative_plane_em.md §3.7). Part of relslam/sim: no I/O; map files are read
+// map was made for. Part of relslam/sim: no I/O; map files are read
 // in eval/io (planar_map_file.hpp).
 
 #include "relslam/sim/planar_path.hpp"

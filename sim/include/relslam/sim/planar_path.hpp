@@ -1,7 +1,7 @@
 #pragma once
 // The robot's path in the planar world: a program of MOVE / TURN / ARC operations run at
 // constant speeds, and the true pose it gives at every iteration (thesis 4.4.2.3 `RobotObject`
-// "moves the robot along a predesignated path"; relative_plane_em.md §3.2). Part of
+// "moves the robot along a predesignated path"; thesis 4.4.2). Part of
 // relslam/sim: Eigen only.
 
 #include "relslam/core/option_issue.hpp"
@@ -37,7 +37,7 @@ struct PathProgram {
   double turn_rate_rad = 1.5 * std::numbers::pi / 180.0;
   int loops = 1;  // `steps` run this many times, each loop starting where the last one ended
   std::vector<PathOperation> steps;
-  // Run once after the loops: Map D's partial second loop, which closes the loop (spec §3.7) [R].
+  // Run once after the loops: Map D's partial second loop, which closes the loop [R].
   std::vector<PathOperation> then;
 };
 
@@ -51,7 +51,7 @@ std::vector<OptionIssue> check(const PathProgram& program);
 long long iteration_count(const PathProgram& program);
 
 // Invariants: world_T_robot(0) is the start pose; every operation ends exactly on its target
-// (its last step is shortened, spec §3.2), computed from the operation's start rather than by
+// (its last step is shortened, thesis 4.4.2), computed from the operation's start rather than by
 // adding up steps, so no rounding accumulates within an operation; a TURN keeps the translation
 // bit for bit.
 class PlanarPath {

@@ -1,5 +1,5 @@
 #pragma once
-// The seeded planar-world simulator of thesis Chapters 4 and 5 (relative_plane_em.md §3): a
+// The seeded planar-world simulator of thesis Chapters 4 and 5 (thesis 4.4.2): a
 // robot on its path, reporting the walls it sees as planes (Chapter 4) or as points on them
 // (Chapter 5). Part of relslam/sim.
 
@@ -30,12 +30,12 @@ class PlanarSimulator {
   const PlanarPath& path() const { return path_; }
   const PlaneSensorOptions& sensor() const { return sensor_.options(); }
 
-  // The true pose at k (spec §3.2) and what the sensor reports there (spec §3.4).
+  // The true pose at k (thesis 4.4.2) and what the sensor reports there (thesis 4.4.2).
   PlaneSimFrame frame(int k) const;
 
   bool has_point_sensor() const { return point_sensor_.has_value(); }
   const PointSensor& point_sensor() const;  // throws std::logic_error without one
-  // What the point sensor reports at k (spec §3.5); pure in (map, options, seed, k) like
+  // What the point sensor reports at k (thesis 5.1); pure in (map, options, seed, k) like
   // frame(k). Throws std::logic_error when the simulator was built without a point sensor.
   PointSimFrame point_frame(int k) const;
 

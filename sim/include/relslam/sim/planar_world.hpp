@@ -1,6 +1,6 @@
 #pragma once
 // The planar world: vertical, infinitely thin walls of constant height on a flat floor
-// (thesis 4.4.2.4 `PlaneManager`; relative_plane_em.md §3.1). Part of relslam/sim: Eigen only.
+// (thesis 4.4.2.4 `PlaneManager`). Part of relslam/sim: Eigen only.
 
 #include "relslam/core/option_issue.hpp"
 
@@ -29,7 +29,7 @@ struct Wall {
   // behind. A two-sided wall is always seen, with the face that looks at the robot [R].
   bool one_sided = true;
   // For the scripted sensor only: the iterations in which the wall is reported, at full size
-  // (the thesis's `RltMapBuilderUnitTest` table of Fig. 71, spec §3.4) [T].
+  // (the thesis's `RltMapBuilderUnitTest` table of Fig. 71, thesis 4.4.2) [T].
   std::vector<IterationWindow> scripted_windows;
 
   // A one-sided wall of the default height from a to b (front on the left of a→b).
@@ -47,10 +47,10 @@ struct Wall {
     return {-u.y(), u.x()};
   }
   double length() const { return (b - a).norm(); }
-  // True when p lies strictly on the front side (the back-face test of spec §3.4 step 1).
+  // True when p lies strictly on the front side (the back-face test).
   bool faces(const Eigen::Vector2d& p) const { return normal().dot(p - a) > 0.0; }
   // Whether the wall may be seen from behind: back-face culling is off, or the wall is
-  // two-sided (spec §3.4 step 1; shared by the plane and the point sensor).
+  // two-sided (shared by the plane and the point sensor).
   bool seen_from_both_sides(bool backface_cull) const { return !backface_cull || !one_sided; }
   // Whether a viewer at p (world) sees a face of the wall at all.
   bool visible_from(const Eigen::Vector2d& p, bool backface_cull) const {
@@ -62,7 +62,7 @@ struct Wall {
 // segment's end p (the point lies on that wall) or lying on the same line does not block it:
 // walls are infinitely thin and span their whole height, so this 2D test is the exact
 // occlusion test of the point sensor (thesis 2.4: "a ray is projected from the point's
-// location to the robot viewpoint"; spec §3.5 step 2).
+// location to the robot viewpoint").
 bool segment_crosses_wall(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Wall& wall);
 
 // The map. Its order is the sensor's output order: the thesis's comparison order inside X0

@@ -1,6 +1,6 @@
 #pragma once
 // Per-plane sensor noise of the planar world: each wall moved by its own small rigid motion
-// every iteration (thesis `PlaneObject::GenerateNoisyPosition`; relative_plane_em.md §3.6,
+// every iteration (thesis `PlaneObject::GenerateNoisyPosition`; thesis 4.3.3,
 // A4). Part of relslam/sim: Eigen only.
 
 #include "relslam/core/option_issue.hpp"
@@ -30,7 +30,7 @@ enum class PlaneNoiseModel {
 std::string_view to_string(PlaneNoiseModel model);
 std::optional<PlaneNoiseModel> parse_plane_noise_model(std::string_view name);
 
-// The thesis adds noise per plane but gives no magnitudes [T]; the values are spec §3.8's [R].
+// The thesis adds noise per plane but gives no magnitudes [T]; the values are ours [R].
 struct PlaneNoiseOptions {
   PlaneNoiseModel model = PlaneNoiseModel::Gaussian;  // "with noise" is the default run [R]
   // σ_p (Gaussian) or the half-width e_p (Uniform) of the translation on each axis, units.
@@ -42,7 +42,7 @@ struct PlaneNoiseOptions {
   double end_sigma = 0.0;
 
   static PlaneNoiseOptions with_noise() { return {}; }
-  // Spec §3.6's "small noise": half of each magnitude [R].
+  // thesis 4.3.3's "small noise": half of each magnitude [R].
   static PlaneNoiseOptions small_noise() {
     return {PlaneNoiseModel::Gaussian, 0.005, 0.15 * std::numbers::pi / 180.0, 0.0};
   }

@@ -2,7 +2,7 @@
 // The planar world's plane sensor: every iteration, the visible part of each wall as a noisy
 // PlaneObject in the robot frame, with the truth that goes with it (thesis 4.4.2.3
 // `RobotObject`: "enumerates all of the planes in the map ... uses the frustum to cull planes";
-// relative_plane_em.md §3.4). Part of relslam/sim: Eigen only.
+// thesis 4.4.2). Part of relslam/sim: Eigen only.
 
 #include "relslam/core/option_issue.hpp"
 #include "relslam/core/planar_pose.hpp"
@@ -42,7 +42,7 @@ struct PlaneSensorOptions {
   // led to Rule 10 (Fig. 72). Off, every wall is reported with the face that looks at the robot.
   bool backface_cull = true;
   // Shorter visible parts are not seen: a sliver at the frustum's edge carries no usable
-  // extent (spec §3.4 step 4) [R].
+  // extent [R].
   double min_length = 0.05;
   PlaneNoiseOptions noise;
   // Map order is the output order (spec A38) [T]; shuffling is an option only [R].
@@ -67,7 +67,7 @@ class PlaneSensor {
 
   const PlaneSensorOptions& options() const { return options_; }
 
-  // Per wall in map order (spec §3.4): the back-face test on the true wall; into the robot
+  // Per wall in map order (thesis 4.4.2): the back-face test on the true wall; into the robot
   // frame; the wall's noise as a rigid motion of the whole wall *before* clipping, so noise also
   // changes the visible length at frustum cuts while real wall ends simply move with it [R];
   // the visibility mode; the face towards the robot when the wall may be seen from behind; no

@@ -2,7 +2,7 @@
 // The planar world's point sensor of thesis Chapter 5 (the "third simulation", thesis 2.4):
 // a static point field on every wall face, of which each iteration reports the points that are
 // on a face towards the robot, inside the frustum and not hidden behind another wall, with
-// fresh noise, in the robot frame (relative_plane_em.md §3.5). Part of relslam/sim: Eigen only.
+// fresh noise, in the robot frame (thesis 5.1). Part of relslam/sim: Eigen only.
 
 #include "relslam/core/option_fields.hpp"
 #include "relslam/core/option_issue.hpp"
@@ -19,12 +19,12 @@
 
 namespace relslam::sim {
 
-// Tags: [T] thesis, [R] spec relative_plane_em.md §3.8 recommendation, [C] chosen here.
+// Tags: [T] thesis, [R] recommendation, [C] chosen here.
 struct PointSensorOptions {
-  // The footprint the points must lie in (spec §3.3). The harness copies the map's frustum
+  // The footprint the points must lie in (thesis 4.4.2). The harness copies the map's frustum
   // (matching()); the small frustum is the many-planes runs' [R].
   ViewingFrustum frustum = ViewingFrustum::small();
-  // A one-sided wall's points are seen only from its front (spec §3.5 step 2a) [T].
+  // A one-sided wall's points are seen only from its front [T].
   bool backface_cull = true;
   // s_pt: grid spacing of the static point field on each wall face, units. Each wall gets
   // ceil(L / s_pt) × ceil(H / s_pt) cells, so the real spacing is at most this [R].
@@ -82,7 +82,7 @@ struct WallPoint {
 };
 
 // The points of every wall face, created once from the seed (thesis 2.4: "each polygon has
-// points statically created") on a jittered grid over [0, L] × [0, H] (spec §3.5 step 1).
+// points statically created") on a jittered grid over [0, L] × [0, H].
 // Walls appear in world order, each wall's points in one run (first_point[w] ..
 // first_point[w + 1]).
 struct PointField {
@@ -112,7 +112,7 @@ class PointSensor {
   const PointSensorOptions& options() const { return options_; }
   const PointField& field() const { return field_; }
 
-  // Spec §3.5 step 2–4: a field point is reported iff its wall shows the robot a face
+  // Thesis 5.1: a field point is reported iff its wall shows the robot a face
   // (Wall::visible_from, the plane sensor's back-face test), the point lies in the frustum
   // footprint, and (occlusion on) the segment from it to the robot crosses no other wall
   // (segment_crosses_wall). Visibility is judged on the true point; the report is the point in

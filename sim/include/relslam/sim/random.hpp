@@ -8,11 +8,11 @@
 
 namespace relslam::sim {
 
-// Independent streams, so that e.g. changing the noise never moves a landmark (issue #2, spec 4.5).
+// Independent streams, so that e.g. changing the noise never moves a landmark.
 // The planar world's sensor has its own: a wall's rigid pose noise, its end jitter (so turning
 // σ_end on leaves the pose noise unchanged) and the optional output shuffle
-// (relative_plane_em.md §3.6, A38). The point sensor has three more: the static point field's
-// jitter, the per-point noise and the output shuffle (§3.5).
+// (thesis 4.3.3, A38). The point sensor has three more: the static point field's
+// jitter, the per-point noise and the output shuffle.
 enum class Stream : std::uint64_t {
   Field = 1,
   Noise = 2,

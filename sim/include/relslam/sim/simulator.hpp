@@ -1,5 +1,5 @@
 #pragma once
-// The seeded point-world simulator of thesis Chapter 6 (spec §4). Part of relslam/sim.
+// The seeded point-world simulator of thesis Chapter 6 (thesis 6.6.1). Part of relslam/sim.
 
 #include "relslam/core/observation.hpp"
 #include "relslam/core/truth.hpp"
@@ -34,7 +34,7 @@ class Simulator {
   const Path& path() const { return path_; }
   const World& world() const { return world_; }
 
-  // Per iteration (spec 4.5): true pose; every landmark into the robot frame; white Gaussian
+  // Per iteration: true pose; every landmark into the robot frame; white Gaussian
   // noise; the frustum test on the noisy point (thesis 6.6.1); survivors shuffled, because an
   // algorithm must not rely on detection order.
   SimFrame frame(int k) const;

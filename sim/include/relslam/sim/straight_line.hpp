@@ -1,5 +1,5 @@
 #pragma once
-// A flat straight centre line along +z from the origin (spec 4.2). Part of relslam/sim.
+// A flat straight centre line along +z from the origin (thesis 6.7.2). Part of relslam/sim.
 
 #include "relslam/sim/centerline.hpp"
 

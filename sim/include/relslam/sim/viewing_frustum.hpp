@@ -1,6 +1,6 @@
 #pragma once
 // The planar world's viewing frustum: its horizontal footprint in the robot frame and the
-// clipping of a wall segment to it (thesis 4.4.2.2 `ViewingFrustum`; relative_plane_em.md §3.3).
+// clipping of a wall segment to it (thesis 4.4.2.2 `ViewingFrustum`).
 // Part of relslam/sim: Eigen only.
 
 #include "relslam/core/option_issue.hpp"
@@ -36,9 +36,9 @@ struct SegmentClip {
   bool cuts_b() const { return exit < 1.0; }
 };
 
-// The robot sits at the origin looking along +x; z is lateral (spec §2.1). No vertical
+// The robot sits at the origin looking along +x; z is lateral. No vertical
 // clipping: walls span their whole height in view, because the algorithm treats height as
-// static [T 4.2.3] (spec §3.3).
+// static [T 4.2.3] (thesis 4.4.2).
 struct ViewingFrustum {
   FrustumShape shape = FrustumShape::Planar;  // the thesis's trapezoid [T]
   // Half the horizontal field of view; must stay below 90° so the footprint is convex and

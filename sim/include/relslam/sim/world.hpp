@@ -22,7 +22,7 @@ struct DynamicMotion {
 // anchor(i) + motion.offset(k) at iteration k.
 class World {
  public:
-  // Generates the point band along the path (spec 4.3) and picks the dynamic points (spec 4.4).
+  // Generates the point band along the path (thesis 6.6.2) and picks the dynamic points (thesis 6.7.3).
   // Throws OptionError when the options cannot be honoured (too few visible points for
   // dynamic.count).
   World(const SimOptions& options, const Path& path, std::uint64_t seed);

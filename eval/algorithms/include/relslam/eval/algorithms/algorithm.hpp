@@ -37,7 +37,7 @@ class Algorithm {
   virtual const std::string& name() const = 0;
 
   // The timed work: one step on this frame. The algorithm may read `truth` only where a
-  // setting says it is given the truth (the EKF's known association, spec mrpt §1.8); throws
+  // setting says it is given the truth (the EKF's known association); throws
   // when it fails, which ends its run.
   virtual void step(const ObservationFrame& observation, const TruthFrame& truth) = 0;
   // Untimed, after step(): copy out whatever the accessors below report.

@@ -1,5 +1,5 @@
 #pragma once
-// When a run is lost (issue 35): an algorithm whose pose came from something other than a
+// When a run is lost: an algorithm whose pose came from something other than a
 // registration to its own map (Relative Point: provisional positions of unmapped points, one or
 // two points, a held pose, dead reckoning) for most of the run has not mapped the run, whatever
 // its last pose says; its summary.csv status is then "lost: pose from ... in N of M iterations",

@@ -1,7 +1,7 @@
 #pragma once
 // Where the evaluation puts Relative Point's map frame. The map frame is the robot's frame at
 // the mapper's first iteration (thesis 6.3.3), where the truth's world frame also starts. When
-// the adaptive preset moves it to a later frame (a sparse start, issue 16), the evaluation
+// the adaptive preset moves it to a later frame (a sparse start), the evaluation
 // places it at the robot's true pose there: the same gauge, one frame later. The algorithm never
 // sees it; the run's scoring and `relslam render` both go through this one class.
 

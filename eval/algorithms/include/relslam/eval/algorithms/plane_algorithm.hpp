@@ -21,8 +21,8 @@ namespace relslam::eval {
 using MappedPlane = std::pair<int, PlaneObject>;
 
 // A group of planes as the algorithm keeps it (thesis RltXPoint, 4.4.3.2): where the map placed
-// its origin and which planes (ids of map()) belong to it. Read by pictures only (spec §6.0,
-// thesis Fig. 67: each group's label joined to its planes).
+// its origin and which planes (ids of map()) belong to it. Read by pictures only
+// (thesis Fig. 67: each group's label joined to its planes).
 struct PlaneGroup {
   int id = 0;
   PlanarPose world_pose;
@@ -30,7 +30,7 @@ struct PlaneGroup {
 };
 
 // What an algorithm says about which ends of an observed plane are real wall ends (thesis Rule
-// 14's key point; spec §7.2 key-point correctness), scored against the truth in keypoints.csv.
+// 14's key point; key-point correctness), scored against the truth in keypoints.csv.
 struct KeyPointClaim {
   int observation = 0;  // index in this iteration's frame
   int group = -1;       // where the claim comes from (-1: none)

@@ -1,5 +1,5 @@
 #pragma once
-// Settings of the synthetic RltBinning benchmark S-BIN (thesis 6.5.3, Figs 111-116; spec 8.6);
+// Settings of the synthetic RltBinning benchmark S-BIN (thesis 6.5.3, Figs 111-116);
 // describe() gives each field's key, help and checks (relslam/core/option_fields.hpp).
 
 #include "relslam/core/option_fields.hpp"
@@ -9,7 +9,7 @@
 namespace relslam::eval {
 
 struct BinningBenchOptions {
-  // Points per binning (Fig 111's x axis) [C, spec 8.6].
+  // Points per binning (Fig 111's x axis) [C, thesis 6.5.3].
   std::vector<int> points = {20, 40, 60, 80, 100, 120, 140, 160, 180, 200};
   // Shares of uncorrelated points, percent: 0-90 in tens (Figs 111-115) and 41-49 (Fig 116).
   std::vector<double> percentages = {0, 10, 20, 30, 40, 41, 42, 43, 44, 45, 46, 47, 48, 49, 50, 60, 70, 80, 90};

@@ -1,6 +1,6 @@
 #pragma once
 // Settings of MRPT's planar EKF-SLAM (CRangeBearingKFSLAM2D), the Victoria Park reference
-// (thesis 6.8; spec mrpt §1.5, §5). Run with the vehicle's odometry (algorithm ekf2d) and,
+// (thesis 6.8). Run with the vehicle's odometry (algorithm ekf2d) and,
 // for comparison with the odometry-free algorithms, without it (ekf2d_no_odometry).
 // describe() gives each field's key, help and checks (relslam/core/option_fields.hpp).
 

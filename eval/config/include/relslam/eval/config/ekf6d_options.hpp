@@ -1,5 +1,5 @@
 #pragma once
-// Settings of the MRPT 6D EKF baseline (thesis 6.7; spec mrpt §1, §6.2). The defaults are
+// Settings of the MRPT 6D EKF baseline (thesis 6.7). The defaults are
 // the thesis's choices where it states them; describe() gives each field's key, help and
 // checks (relslam/core/option_fields.hpp).
 
@@ -38,7 +38,7 @@ struct Ekf6dOptions {
   EkfMethod method = EkfMethod::Davison;
   EkfAssociation association = EkfAssociation::Known;
   // The sensor model's standard deviations, the "three options" the thesis tuned to minimise
-  // the landmark error. MRPT takes R from these only (spec mrpt §0.6). The defaults are what
+  // the landmark error. MRPT takes R from these only. The defaults are what
   // `relslam tune-ekf scenarios/s-ekf-f8.json` chose for the simulated noise of 0.1 units per
   // axis (seed 1001, 1000 iterations, 60 trials) [C, tuned]; only their ratio to stds_q matters.
   double std_range = 0.2;                               // units
@@ -46,7 +46,7 @@ struct Ekf6dOptions {
   double std_pitch_rad = 0.5 * std::numbers::pi / 180.0;
   // Constant-position motion noise (x, y, z, qr, qx, qy, qz): without odometry it must cover a
   // step's motion, 0.3 units and ~0.3° on the figure eight; half the spec's starting point
-  // (0.35, 0.005) after tuning [C, spec 6.2, tuned].
+  // (0.35, 0.005) after tuning [C, tuned].
   std::vector<double> stds_q = {0.175, 0.175, 0.175, 0.0025, 0.0025, 0.0025, 0.0025};
   // Feed each frame's odometry to the filter as MRPT's kf-slam does: the action's pose increment
   // with a Gaussian of these standard deviations (x, y, z; yaw, pitch, roll). Off by default: the

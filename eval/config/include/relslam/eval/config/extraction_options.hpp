@@ -1,7 +1,7 @@
 #pragma once
 // Which plane extractor turns the point sensor's frames into the Relative Plane algorithm's
-// plane frames (planar.sensor "points"; thesis Chapter 5, spec relative_plane_em.md §4), and
-// the settings of the Open3D RANSAC baseline (issue 14 §3). The EM constants are libslam's
+// plane frames (planar.sensor "points"; thesis Chapter 5, 3.5), and
+// the settings of the Open3D RANSAC baseline. The EM constants are libslam's
 // (em/options.hpp), taken at EmOptions::for_point_sigma(planar.noise.point_sigma). Keys under
 // relative_plane.* (extractor, ransac.*). Tags: [T] thesis, [R] spec, [C] chosen here.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Bad input from a file or the command line (style.md 2.5). Thrown by eval/, caught only in main.
+// Bad input from a file or the command line. Thrown by eval/, caught only in main.
 
 #include <stdexcept>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
-// Settings of a planar-world run (scenario kind "planar"; thesis Chapter 4, spec
-// relative_plane_em.md §3): which map, how much of its path, and the sensor and noise that
+// Settings of a planar-world run (scenario kind "planar"; thesis Chapter 4):
+// which map, how much of its path, and the sensor and noise that
 // override what the map file was made for. describe() gives each field's key, help and checks
 // (relslam/core/option_fields.hpp).
 
@@ -19,7 +19,7 @@ namespace relslam::eval {
 // "map" in a setting below: keep what the map file says.
 inline constexpr std::string_view kFromMap = "map";
 
-// The sensor's noise (spec §3.6, §3.8). Position and rotation both 0 is the noise-free run.
+// The sensor's noise (thesis 4.3.3). Position and rotation both 0 is the noise-free run.
 struct PlanarNoiseSettings {
   // map, none, gaussian, uniform or three_valued_rotation (Figs 74/75) [R: gaussian].
   std::string model = std::string(kFromMap);
@@ -27,7 +27,7 @@ struct PlanarNoiseSettings {
   double rotation_sigma_rad = 0.3 * std::numbers::pi / 180.0;    // σ_r about the wall midpoint [R]
   double end_sigma = 0.0;                                        // jitter of each end along the wall [R]
   // σ_pt of the point sensor (planar.sensor "points"): Gaussian noise per axis of each
-  // reported point, units; 0 is noise-free (spec §3.5, §3.8) [R 0.05].
+  // reported point, units; 0 is noise-free (thesis 5.1) [R 0.05].
   double point_sigma = 0.05;
 };
 
@@ -47,7 +47,7 @@ void describe(OptionsOf<PlanarNoiseSettings> auto& n, auto& f) {
 }
 
 // The sensor's output kind: plane observations (Chapter 4) or points on the walls, from which
-// relative_plane.extractor finds the planes (Chapter 5; spec §3.5, §4); or a range sensor ray
+// relative_plane.extractor finds the planes (Chapter 5; thesis 5.1, 3.5); or a range sensor ray
 // casting the walls (sim/laser_sensor.hpp, sim/depth_camera.hpp), whose frames carry the plane
 // sensor's planes at the same pose beside the raw scan or image.
 enum class PlanarSensorKind { Planes, Points, Laser, Depth };
@@ -89,10 +89,10 @@ struct PlanarOptions {
   int loops = 0;       // times the path's steps run; 0: as the map says
   int iterations = 0;  // stop after this many iterations; 0: the whole path
   // The path's speed and turn rate times this [C 1]: below 1 the robot goes the same way in more
-  // iterations. The thesis gives no speed (spec §9 row 1; ours is [R] 0.05 a step), and what a
+  // iterations. The thesis gives no speed (ours is [R] 0.05 a step), and what a
   // store of plane_capacity observations holds depends on it: E19 runs at 0.25.
   double speed_scale = 1.0;
-  std::string frustum = std::string(kFromMap);        // map, small or large (spec §3.3)
+  std::string frustum = std::string(kFromMap);        // map, small or large (thesis 4.4.2)
   std::string frustum_shape = std::string(kFromMap);  // map, planar (thesis) or radial (Fig 89's fix)
   // map, frustum, full_size, always_visible (Map A) or scripted (Map B).
   std::string visibility = std::string(kFromMap);

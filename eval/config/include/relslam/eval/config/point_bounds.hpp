@@ -1,5 +1,5 @@
 #pragma once
-// The adaptive preset's matching bounds (issue 16): Relative Point's local, compensated, global
+// The adaptive preset's matching bounds: Relative Point's local, compensated, global
 // and merge bounds and RltBinning's gaps scaled from the sensor noise (libslam's
 // noise_bounds.hpp), unless the file or --set gives them. Where each came from goes to
 // manifest.json ("derived").

@@ -55,7 +55,7 @@ struct OutputOptions {
   // EKF) or -1 so a filter must associate by itself.
   bool rawlog_landmark_ids = true;
   // The simulator's noise as the rawlog's sensor model (range std), or none: data from a
-  // sensor that states no noise, whose run must then estimate it (issue 16).
+  // sensor that states no noise, whose run must then estimate it.
   bool rawlog_sensor_noise = true;
   // gzip the rawlog; MRPT reads both. Off because compressing costs more than writing.
   bool rawlog_gzip = false;

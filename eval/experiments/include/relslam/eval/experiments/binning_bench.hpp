@@ -1,5 +1,5 @@
 #pragma once
-// The synthetic RltBinning benchmark S-BIN (thesis 6.5.3, Figs 111-116; spec 8.6): pairwise
+// The synthetic RltBinning benchmark S-BIN (thesis 6.5.3, Figs 111-116): pairwise
 // comparisons against the number of points, for shares of uncorrelated points, with and
 // without the priority heuristic.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The EKF baselines' settings on a recorded log (issue 35, "a fair EKF"): the sensor noise the
+// The EKF baselines' settings on a recorded log ("a fair EKF"): the sensor noise the
 // log states, its odometry's own uncertainty and the scale of its motion, unless the scenario
 // sets them, and where each value came from, for manifest.json ("noise_sources") and the console.
 

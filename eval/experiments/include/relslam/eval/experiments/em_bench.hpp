@@ -1,5 +1,5 @@
 #pragma once
-// The plane-extraction test bench of thesis Figs 55–61 (E30; issue 14 §4): small scenes of
+// The plane-extraction test bench of thesis Figs 55–61 (E30): small scenes of
 // walls in front of a robot at the origin, seen by the point sensor (large frustum), each
 // extracted by EM1, EM2 and the Open3D baseline (when built) and scored like em_frames.csv
 // (SegComp at 0.8, metrics/extraction_score.hpp). Cases: random walls (Fig 55), two close

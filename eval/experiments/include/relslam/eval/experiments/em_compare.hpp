@@ -1,5 +1,5 @@
 #pragma once
-// E29 (thesis 3.5.4; spec relative_plane_em.md §6.1, §7.2): EM1, EM2 and the Open3D baseline
+// E29 (thesis 3.5.4): EM1, EM2 and the Open3D baseline
 // (when built) on the identical point frames of a planar point-sensor scenario, one frame at a
 // time, each frame through every extractor in turn (the order rotating from frame to frame, so
 // no extractor always finds the points warm in the cache). Each extractor is scored and timed

@@ -3,7 +3,7 @@
 // of run_replay.hpp: the planar simulator is a pure function of (map, seed, k) and the plane
 // algorithm is deterministic, so feeding the manifest's scenario to the same algorithm rebuilds
 // its groups and map at any iteration — which the run folder's tables hold only for the end.
-// Used by `relslam render` for the overlay of spec relative_plane_em.md §6.0.
+// Used by `relslam render` for the overlay of thesis Fig. 67.
 
 #include "relslam/eval/experiments/replay_manifest.hpp"
 #include "relslam/eval/io/planar_render.hpp"

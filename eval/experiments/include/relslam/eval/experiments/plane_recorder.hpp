@@ -1,7 +1,7 @@
 #pragma once
 // The recorder of a plane algorithm's run (the counterpart of algorithm_recorder.hpp for the
 // Relative Plane half): it times each step, scores the pose and the map of planes against the
-// frame's truth (spec relative_plane_em.md §7.1–7.2), writes iterations.csv (the shared score
+// frame's truth, writes iterations.csv (the shared score
 // columns, the algorithm's own, the key-point scores, then the source's own such as the
 // extraction time), keypoints.csv when the algorithm
 // claims key points, trajectory.tum, planes.csv and the algorithm's tables,

@@ -1,5 +1,5 @@
 #pragma once
-// The one CSV writer (style.md 2.8): a header row, commas, '.' decimals, shortest round-trip
+// The one CSV writer: a header row, commas, '.' decimals, shortest round-trip
 // doubles, empty fields for missing values, no comment lines.
 
 #include "relslam/eval/io/text_output.hpp"

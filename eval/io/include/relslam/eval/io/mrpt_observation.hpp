@@ -11,7 +11,7 @@ namespace relslam::eval {
 
 // Range, yaw, pitch in MRPT's sensor frame (x forward, y left, z up; pitch = negative
 // elevation), sensor at the robot origin: MRPT 2.5.8's analytic 6D observation Jacobian is wrong
-// for any other sensor pose (spec mrpt §0.2). landmark_ids parallel to frame.points, or empty
+// for any other sensor pose. landmark_ids parallel to frame.points, or empty
 // for -1 (unknown association).
 std::shared_ptr<mrpt::obs::CObservationBearingRange> bearing_range_observation(const ObservationFrame& frame,
                                                                                const std::vector<int>& landmark_ids,

@@ -1,6 +1,6 @@
 #pragma once
 // Planar-world map files (scenarios/maps/*.json): the walls, the robot's path and the sensor the
-// map was made for, read into sim::PlanarMap (relative_plane_em.md §3.7; the format is in
+// map was made for, read into sim::PlanarMap (the format is in
 // sim/README.md). Maps are data, so JSON stays out of sim/.
 
 #include "relslam/sim/planar_map.hpp"

@@ -1,6 +1,6 @@
 #pragma once
-// A picture of one iteration of a planar run (thesis Chapter 4), the top-down overlay of spec
-// relative_plane_em.md §6.0: true walls (yellow), mapped planes (blue), the planes seen now
+// A picture of one iteration of a planar run (thesis Chapter 4), the top-down overlay of
+// the thesis's screenshots (Fig. 67): true walls (yellow), mapped planes (blue), the planes seen now
 // placed at the estimated pose (red, the thesis's "current readings"), each group's label at its
 // position with thin lines to its member planes (as thesis Fig. 67 / paper Fig. 2), the true
 // (orange) and estimated (blue) paths and the frustum at the estimated pose. Plain data in, an

@@ -42,13 +42,13 @@ RangeBearing range_bearing_of(const Eigen::Vector3d& p_mrpt);
 Eigen::Vector3d point_of(const RangeBearing& m);
 
 // Sensor description written into every CObservationBearingRange. MRPT's EKF gates landmark
-// predictions with these, so they must describe the real sensor (spec mrpt §0.5).
+// predictions with these, so they must describe the real sensor.
 struct RangeBearingSensor {
   double min_range = 0.0;
   double max_range = 0.0;
   double field_of_view_yaw_rad = 0.0;
   double field_of_view_pitch_rad = 0.0;
-  double std_range = 0.0;  // informative only: MRPT's EKFs ignore them (spec mrpt §0.6)
+  double std_range = 0.0;  // informative only: MRPT's EKFs ignore them
   double std_yaw_rad = 0.0;
   double std_pitch_rad = 0.0;
 };

@@ -58,7 +58,7 @@ struct Rawlog {
   enum class Format { ActionsSensoryFrames, ObservationsOnly };
   Format format = Format::ActionsSensoryFrames;
   // True for files written SF, action, SF, ... (MRPT's simul-landmarks). kf-slam drops their
-  // first frame, so its step k is our frame k + 1 (spec mrpt §0.7); we keep every frame.
+  // first frame, so its step k is our frame k + 1; we keep every frame.
   bool sensory_frame_first = false;
   int records = 0;               // serialized objects read
   int skipped_observations = 0;  // observations of other types, ignored

@@ -1,5 +1,5 @@
 #pragma once
-// One folder per run (style.md 2.8): created fresh, never silently mixed with an old run.
+// One folder per run: created fresh, never silently mixed with an old run.
 
 #include "relslam/eval/config/scenario.hpp"
 
@@ -29,12 +29,12 @@ struct Invocation {
 };
 
 // manifest.json: the resolved scenario, seed, invocation, git revision, library versions,
-// host, the engine that ran it (engine_info) and UTC time — enough to rerun (style.md 2.8).
+// host, the engine that ran it (engine_info) and UTC time — enough to rerun.
 // `extra` entries are merged in at the top. "status" tells a finished run from a killed one:
 // a run writes the manifest first as kRunStatusRunning and again at its end as kRunStatusOk,
 // kRunStatusInterrupted (SIGINT/SIGTERM) or "failed: <why>"; one left "running" was killed
 // (SIGKILL, power loss). The file is replaced by rename, so it is never seen half written.
-// What a preset derived instead of reading it, and from what (issue 16: the bounds and the
+// What a preset derived instead of reading it, and from what (the bounds and the
 // noise): manifest.json's "derived".
 nlohmann::json derived_json(const Scenario& scenario);
 

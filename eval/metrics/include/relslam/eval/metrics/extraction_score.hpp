@@ -1,5 +1,5 @@
 #pragma once
-// How well one frame's plane extraction did (spec relative_plane_em.md §7.1–7.2, issue 14 §4):
+// How well one frame's plane extraction did:
 // the visible wall pieces as ground truth, SegComp's five counts (segcomp.hpp) between them and
 // the extracted planes' points, and the errors of the correct detections against their walls.
 
@@ -66,7 +66,7 @@ ExtractionFrameScore score_extraction(std::span<const Eigen::Vector3d> points, s
                                       const ExtractionScoreOptions& options);
 
 // The score's columns of em_frames.csv and bench.csv (n_points ... mean_end_err, in the
-// order of issue 14 §4) and a score's fields for them (NaN means empty).
+// order of the extraction scores) and a score's fields for them (NaN means empty).
 const std::vector<std::string>& extraction_score_columns();
 void append_score_fields(const ExtractionFrameScore& score, std::vector<CsvField>& out);
 

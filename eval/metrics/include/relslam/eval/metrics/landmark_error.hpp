@@ -1,5 +1,5 @@
 #pragma once
-// The thesis's landmark (mapping) error (6.5.5, spec 7.1): the sum over the landmarks on the
+// The thesis's landmark (mapping) error (6.5.5, thesis 6.6.1): the sum over the landmarks on the
 // estimated map of the distance to the nearest true landmark at that iteration.
 
 #include "relslam/eval/metrics/landmark_truth.hpp"

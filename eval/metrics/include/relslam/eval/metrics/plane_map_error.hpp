@@ -1,5 +1,5 @@
 #pragma once
-// Scores of the Relative Plane half (spec relative_plane_em.md §7.1–7.2): how far a mapped plane
+// Scores of the Relative Plane half: how far a mapped plane
 // is from the wall it stands for, which wall an estimated plane stands for (majority vote over
 // its observations), and the planar pose error. Truth walls and mapped planes are both
 // PlaneObjects in the world frame, key point 1 = a, key point 2 = b (thesis Rule 14).
@@ -12,7 +12,7 @@
 
 namespace relslam::eval {
 
-// One mapped plane against its true wall [R, spec §7.2].
+// One mapped plane against its true wall [R].
 struct PlaneError {
   double ends = 0;       // e_ends = ½(|A_p − A_W| + |B_p − B_W|): corresponding key points; too small a plane pays
   double angle_rad = 0;  // e_ang = |wrap(θ_p − θ_W)|
@@ -31,8 +31,8 @@ struct PlanarPoseError {
 };
 PlanarPoseError planar_pose_error(const PlanarPose& estimate, const PlanarPose& truth);
 
-// Which true wall each estimated plane stands for: the wall behind most of its observations
-// (spec §7.1). Votes accumulate over a run.
+// Which true wall each estimated plane stands for: the wall behind most of its observations.
+//Votes accumulate over a run.
 class WallVotes {
  public:
   // Estimated plane `plane` was given an observation of true wall `wall` (-1 unknown: ignored).

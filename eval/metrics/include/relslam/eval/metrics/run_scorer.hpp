@@ -1,5 +1,5 @@
 #pragma once
-// Scores one algorithm's run against the truth, iteration by iteration (spec 7.1): landmark
+// Scores one algorithm's run against the truth, iteration by iteration (thesis 6.6.1): landmark
 // error, position error per axis, run time, and which true landmark each estimate stands for.
 
 #include "relslam/core/rigid.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// summary.csv: one row per algorithm of a run (issue #3 harness).
+// summary.csv: one row per algorithm of a run (harness).
 
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/metrics/trajectory_error.hpp"
@@ -51,7 +51,7 @@ struct RunStatus {
 // The kind alone: "ok", "failed", "stopped", "interrupted", "lost", "ratio", "not run".
 std::string_view to_string(RunStatus::Kind kind);
 
-// The scores of a planar run (spec relative_plane_em.md §7.2) that the point columns lack.
+// The scores of a planar run that the point columns lack.
 struct PlanarScores {
   double final_heading_error_deg = 0;  // at the last iteration with a pose
   double max_position_error = 0;       // over the iterations with a pose

@@ -1,5 +1,5 @@
 #pragma once
-// Trajectory error as the TUM benchmark and evo define it (spec mrpt §4.3): absolute
+// Trajectory error as the TUM benchmark and evo define it: absolute
 // trajectory error (ATE) RMSE without and with a rigid Umeyama/Horn alignment, and relative
 // pose error (RPE) per frame.
 

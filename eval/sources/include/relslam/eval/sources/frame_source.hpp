@@ -2,7 +2,7 @@
 // A frame source: where an experiment's frames come from (a simulated world, an MRPT rawlog,
 // the Victoria Park data set; planar worlds and point clouds plug in the same way). Each frame
 // pairs what the algorithms may see with the truth only scoring may read, so the truth travels
-// with the frames (style.md 2.3), never through callbacks into the source.
+// with the frames, never through callbacks into the source.
 
 #include "relslam/core/observation.hpp"
 #include "relslam/core/truth.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // A plane extractor: one point frame in (robot frame), the planes the Relative Plane algorithm
-// takes out, each with the points behind it (thesis Chapter 5; spec relative_plane_em.md §4).
+// takes out, each with the points behind it (thesis Chapter 5; thesis 3.5).
 // make_plane_extractor.hpp builds one.
 
 #include "relslam/core/planar_points.hpp"
@@ -16,13 +16,13 @@ namespace relslam::eval {
 class PlaneExtractor {
  public:
   virtual ~PlaneExtractor() = default;
-  // The frame's planes converted by spec §4.5 (em::to_plane_objects), and their supports.
+  // The frame's planes converted by thesis 5.1 (em::to_plane_objects), and their supports.
   // `seed`: this frame's random stream (em::em_frame_seed of the scenario seed). Non-finite
   // points are ignored; too few points give no planes.
   virtual em::ExtractedPlanes extract(const PlanarPointFrame& frame, std::uint64_t seed) = 0;
 };
 
-// What every extractor is built from: EM's constants (also the §4.5 conversion's, shared by
+// What every extractor is built from: EM's constants (also the thesis 4.5 conversion's, shared by
 // all) and the baseline's.
 struct ExtractorSettings {
   em::EmOptions em;

@@ -2,7 +2,7 @@
 // A source of plane frames for the Relative Plane half (thesis Chapter 4): the planar
 // simulator's plane sensor, or its point sensor with a plane extractor (Chapter 5). Like FrameSource for the point
 // half, each frame pairs what the algorithm may see (PlaneFrame) with the truth only scoring
-// may read (PlaneTruthFrame), so the truth travels with the frames (style.md 2.3).
+// may read (PlaneTruthFrame), so the truth travels with the frames.
 
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"

@@ -1,7 +1,7 @@
 #pragma once
-// The point sensor's frames turned into plane frames (planar.sensor "points"; issue 14 §4):
+// The point sensor's frames turned into plane frames (planar.sensor "points"):
 // each frame's points through the scenario's extractor (relative_plane.extractor, timed), the
-// truth of every extracted plane (its points' majority wall, which ends are real; spec §4.5
+// truth of every extracted plane (its points' majority wall, which ends are real; thesis 5.1
 // step 5), and the extraction's score (metrics/extraction_score.hpp), one em_frames.csv row
 // per frame when recording.
 

@@ -24,7 +24,7 @@ struct RawlogFiles {
   int end_frame = -1;
 };
 
-// What kind of log it is, decided once where the log is read (issue 35). A planar log keeps
+// What kind of log it is, decided once where the log is read. A planar log keeps
 // every observation in one plane, as MRPT's 2D range-bearing data (kf-slam_demo.rawlog, 2D
 // odometry CActionRobotMovement2D) and Victoria Park's laser do: every pitch 0, the sensor
 // level on the robot at one height, the odometry (if any) in the floor plane. Such a log runs

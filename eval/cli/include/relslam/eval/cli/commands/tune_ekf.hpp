@@ -1,6 +1,6 @@
 #pragma once
 // `relslam tune-ekf`: the thesis tuned the EKF's three sensor standard deviations to minimise
-// the landmark error (thesis 6.7; spec relative_point §7). This is that grid search, on a seed
+// the landmark error (thesis 6.7). This is that grid search, on a seed
 // the experiments do not use.
 
 #include "relslam/eval/cli/commands/scenario_command.hpp"
@@ -13,7 +13,7 @@
 namespace relslam::eval {
 
 struct TuneEkfArgs : ScenarioCommandArgs {
-  // The grid (spec relative_point §7). Yaw and pitch share one value: the simulated noise is
+  // The grid. Yaw and pitch share one value: the simulated noise is
   // isotropic, so their best values coincide and a 2-D grid would only cost time [C].
   std::vector<double> std_range = {0.05, 0.1, 0.2, 0.4};           // units
   std::vector<double> std_angle_deg = {0.05, 0.1, 0.2, 0.5, 1.0};  // yaw = pitch, degrees
