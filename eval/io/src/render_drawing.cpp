@@ -48,10 +48,30 @@ void draw_scale_bar(cv::Mat& image, const RenderFrame& frame, const RenderOption
   draw_text(image, text, {12, options.height - 20}, kText);
 }
 
+namespace {
+
+// Pixels of `box` that differ from the picture's background (its top-left pixel): how much of the
+// drawing a legend there would cover.
+int drawn_pixels(const cv::Mat& image, const cv::Rect& box) {
+  const cv::Vec3b background = image.at<cv::Vec3b>(0, 0);
+  int n = 0;
+  for (int r = box.y; r < box.y + box.height; ++r)
+    for (int c = box.x; c < box.x + box.width; ++c) n += image.at<cv::Vec3b>(r, c) != background;
+  return n;
+}
+
+}  // namespace
+
 void draw_legend(cv::Mat& image, const std::vector<LegendEntry>& entries) {
-  const int x = image.cols - 290, line = 16;
-  int y = image.rows - line * static_cast<int>(entries.size()) - 6;
-  cv::rectangle(image, {x - 8, y - 14}, {image.cols - 4, image.rows - 4}, {245, 245, 245}, cv::FILLED);
+  const int line = 16, width = 290 + 4;
+  const int height = line * static_cast<int>(entries.size()) + 14;
+  const int x = image.cols - width + 8;
+  if (x < 8 || height + 8 > image.rows) return;  // no room beside the drawing
+  // The right edge's lower or upper corner, whichever covers less of what is drawn.
+  const cv::Rect lower(x - 8, image.rows - height - 4, width, height), upper(x - 8, 4, width, height);
+  const cv::Rect box = drawn_pixels(image, upper) < drawn_pixels(image, lower) ? upper : lower;
+  cv::rectangle(image, box, {245, 245, 245}, cv::FILLED);
+  int y = box.y + 14;
   for (const LegendEntry& e : entries) {
     cv::rectangle(image, {x, y - 8}, {x + 8, y}, e.colour, cv::FILLED);
     draw_text(image, e.text, {x + 14, y}, kText);

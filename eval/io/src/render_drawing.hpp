@@ -38,7 +38,8 @@ struct LegendEntry {
   std::string text;
   cv::Scalar colour;
 };
-// A box of colour swatches in the lower right corner.
+// A box of colour swatches at the right edge, in the lower or the upper corner, whichever covers
+// less of the drawing.
 void draw_legend(cv::Mat& image, const std::vector<LegendEntry>& entries);
 
 // The frame that holds the box lo..hi (picture axes u, v) with a margin, the wider picture side
