@@ -15,9 +15,11 @@ TEST(AlgorithmRegistry, EveryEntryBuildsAnAlgorithmOfItsName) {
   const Scenario scenario;
   const RangeBearingSensor sensor;
   std::set<std::string> names;
-  for (const AlgorithmEntry& entry : algorithm_registry()) {
+  for (const AlgorithmEntry* e : algorithms_of(ScenarioHalf::Points)) {
+    const AlgorithmEntry& entry = *e;
     EXPECT_TRUE(names.insert(entry.name).second) << entry.name << " twice";
     EXPECT_FALSE(entry.help.empty()) << entry.name;
+    EXPECT_TRUE(entry.make && !entry.make_plane) << entry.name << ": one factory, of its half";
     const std::unique_ptr<Algorithm> algorithm = make_algorithm(entry.name, {scenario, sensor});
     EXPECT_EQ(algorithm->name(), entry.name);
     const std::vector<std::string> columns = algorithm->landmark_columns();
@@ -48,9 +50,11 @@ TEST(AlgorithmRegistry, RelativePointIterationColumnsAreTheThesisComponents) {
 TEST(PlaneAlgorithmRegistry, EveryEntryBuildsAnAlgorithmOfItsName) {
   const Scenario scenario;
   std::set<std::string> names;
-  for (const PlaneAlgorithmEntry& entry : plane_algorithm_registry()) {
+  for (const AlgorithmEntry* e : algorithms_of(ScenarioHalf::Planes)) {
+    const AlgorithmEntry& entry = *e;
     EXPECT_TRUE(names.insert(entry.name).second) << entry.name << " twice";
-    EXPECT_FALSE(find_algorithm(entry.name)) << entry.name << " is a point algorithm's name too";
+    EXPECT_TRUE(entry.make_plane && !entry.make) << entry.name << ": one factory, of its half";
+    EXPECT_FALSE(find_algorithm(entry.name, ScenarioHalf::Points)) << entry.name << " is a point algorithm's name too";
     const std::unique_ptr<PlaneAlgorithm> algorithm = make_plane_algorithm(entry.name, {scenario, {}});
     EXPECT_EQ(algorithm->name(), entry.name);
     const std::vector<std::string> columns = algorithm->iteration_columns();

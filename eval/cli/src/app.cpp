@@ -1,5 +1,7 @@
 #include "relslam/eval/cli/app.hpp"
 
+#include "relslam/eval/config/scenario_half.hpp"
+
 #include "command_line_errors.hpp"
 
 #include "relslam/eval/algorithms/registry.hpp"
@@ -75,7 +77,7 @@ int run_scenario(const ScenarioArgs& args) {
   check_algorithm_names(loaded);
   std::cout << to_json(loaded.scenario).dump(2) << '\n';
   const ScenarioKind kind = loaded.scenario.kind;
-  if (loaded.scenario.algorithms.empty() && (kind == ScenarioKind::Simulation || kind == ScenarioKind::Planar))
+  if (loaded.scenario.algorithms.empty() && (kind == ScenarioKind::Simulation || feeds_planes(kind)))
     std::cerr << "relslam: note: " << args.scenario
               << " lists no algorithm: relslam simulate takes it, relslam run and sweep refuse it "
                  "(add one, e.g. --set algorithms=relative_point)\n";
@@ -172,10 +174,11 @@ int run_cli(int argc, const char* const* argv) {
     if (app.got_subcommand("compare")) return run_compare(compare);
     if (app.got_subcommand("algorithms")) {
       std::cout << "On point landmarks (kind simulation, rawlogs, Victoria Park):\n";
-      for (const AlgorithmEntry& a : algorithm_registry()) std::cout << "  " << a.name << "\n      " << a.help << '\n';
+      for (const AlgorithmEntry* a : algorithms_of(ScenarioHalf::Points))
+        std::cout << "  " << a->name << "\n      " << a->help << '\n';
       std::cout << "On planes (kind planar):\n";
-      for (const PlaneAlgorithmEntry& a : plane_algorithm_registry())
-        std::cout << "  " << a.name << "\n      " << a.help << '\n';
+      for (const AlgorithmEntry* a : algorithms_of(ScenarioHalf::Planes))
+        std::cout << "  " << a->name << "\n      " << a->help << '\n';
       return 0;
     }
     if (app.got_subcommand("keys")) return run_keys(keys_prefix, markdown);

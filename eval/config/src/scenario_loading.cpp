@@ -4,6 +4,7 @@
 
 #include "relslam/eval/config/json_document.hpp"
 #include "relslam/eval/config/point_bounds.hpp"
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/config/scenario_keys.hpp"
 
 #include <algorithm>
@@ -194,7 +195,7 @@ LoadedScenario build(const JsonDocument& doc, const std::vector<Override>& overr
   if (loaded.scenario.kind == ScenarioKind::Simulation)  // a rawlog run re-derives them from its sensor
     derive_point_bounds(loaded.scenario, simulated_noise(loaded.scenario.sim),
                         [&](const std::string& key) { return loaded.origins.contains(key); });
-  if (loaded.scenario.kind == ScenarioKind::Planar)
+  if (feeds_planes(loaded.scenario.kind))
     derive_plane_bounds(loaded.scenario, [&](const std::string& key) { return loaded.origins.contains(key); });
   check_semantics(loaded);
   check_map_source(loaded);

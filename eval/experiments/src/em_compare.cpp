@@ -1,8 +1,9 @@
 #include "relslam/eval/experiments/em_compare.hpp"
 
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/io/csv_writer.hpp"
-#include "relslam/eval/sources/planar_simulation_source.hpp"
 #include "relslam/eval/sources/make_plane_extractor.hpp"
+#include "relslam/eval/sources/planar_simulation_source.hpp"
 #include "relslam/eval/sources/point_extraction.hpp"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ std::vector<std::string> em_compare_columns() {
 }
 
 std::vector<EmCompareSummary> run_em_compare(const LoadedScenario& loaded, const std::filesystem::path& dir) {
-  if (loaded.scenario.kind != ScenarioKind::Planar || loaded.scenario.planar.sensor != PlanarSensorKind::Points)
+  if (!feeds_planes(loaded.scenario.kind) || loaded.scenario.planar.sensor != PlanarSensorKind::Points)
     throw loaded.error("planar.sensor", "em-bench --compare needs a planar scenario with the point sensor (\"points\")");
   PlanarSimulationSource source(loaded);
   const sim::PlanarSimulator& simulator = source.simulator();

@@ -2,6 +2,7 @@
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/sources/planar_simulation_source.hpp"
 
 #include <algorithm>
@@ -38,11 +39,10 @@ std::string chosen_algorithm(const LoadedScenario& loaded, const fs::path& file,
     if (listed.empty()) throw InputError(file.string(), 0, "algorithms", "the run lists no algorithm");
     return listed.front();
   }
-  if (!find_plane_algorithm(requested)) {
-    std::string known;
-    for (const PlaneAlgorithmEntry& e : plane_algorithm_registry()) known += (known.empty() ? "" : ", ") + e.name;
-    throw InputError("", 0, "--algorithm", "a planar run draws a plane algorithm (" + known + "), not " + requested);
-  }
+  if (!find_algorithm(requested, ScenarioHalf::Planes))
+    throw InputError("", 0, "--algorithm",
+                     "a planar run draws a plane algorithm (" + algorithm_names(ScenarioHalf::Planes) + "), not " +
+                         requested);
   if (std::find(listed.begin(), listed.end(), requested) == listed.end())
     throw InputError(file.string(), 0, "--algorithm", "the run did not include " + requested);
   return requested;
@@ -117,7 +117,7 @@ struct PlanarReplay::State {
 };
 
 PlanarReplay::PlanarReplay(ReplayManifest manifest, const std::string& algorithm) {
-  if (manifest.kind() != ScenarioKind::Planar)
+  if (!feeds_planes(manifest.kind()))
     throw InputError(manifest.file.string(), 0, "", "not a planar run (kind \"planar\")");
   LoadedScenario loaded = with_map(std::move(manifest.loaded), manifest.json);
   std::string name = chosen_algorithm(loaded, manifest.file, algorithm);

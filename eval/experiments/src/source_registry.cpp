@@ -1,5 +1,6 @@
 #include "relslam/eval/experiments/source_registry.hpp"
 
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/experiments/experiment.hpp"
 #include "relslam/eval/experiments/laser_experiment.hpp"
 #include "relslam/eval/experiments/run_skeleton.hpp"
@@ -29,7 +30,7 @@ ExperimentResult simulated(const LoadedScenario& loaded, const std::filesystem::
 
 ExperimentResult plane_files(const LoadedScenario& loaded, const RunInputs& inputs, const std::filesystem::path& out,
                              bool progress) {
-  if (loaded.scenario.kind != ScenarioKind::Planar)
+  if (!feeds_planes(loaded.scenario.kind))
     throw loaded.error("kind", "--planes feeds the planar half: the scenario must be of kind \"planar\"");
   PlaneFileSource source(PlaneFiles{inputs.planes, given(inputs.truth_path), given(inputs.truth_walls)});
   PlanarExperiment run(loaded, source, out);
@@ -43,7 +44,7 @@ const std::vector<SourceEntry>& source_registry() {
       {"plane_file", "plane observations from a CSV file, with optional true path and walls (relslam run --planes)",
        [](const Scenario&, const RunInputs& in) { return !in.planes.empty(); }, plane_files},
       {"laser_rawlog", "2-D laser scans from an MRPT rawlog, their walls for the planar half (relslam run --rawlog, kind \"planar\")",
-       [](const Scenario& s, const RunInputs& in) { return !in.rawlog.empty() && s.kind == ScenarioKind::Planar; },
+       [](const Scenario& s, const RunInputs& in) { return !in.rawlog.empty() && feeds_planes(s.kind); },
        [](const LoadedScenario& loaded, const RunInputs& in, const std::filesystem::path& out, bool progress) {
          return run_on_laser_rawlog(loaded, in.rawlog.string(), "--rawlog", out, progress);
        }},
@@ -54,12 +55,12 @@ const std::vector<SourceEntry>& source_registry() {
                               progress);
        }},
       {"laser_scenario", "the 2-D laser log the planar scenario names (laser.rawlog)",
-       [](const Scenario& s, const RunInputs&) { return s.kind == ScenarioKind::Planar && !s.laser.rawlog.empty(); },
+       [](const Scenario& s, const RunInputs&) { return feeds_planes(s.kind) && !s.laser.rawlog.empty(); },
        [](const LoadedScenario& loaded, const RunInputs&, const std::filesystem::path& out, bool progress) {
          return run_on_laser_rawlog(loaded, loaded.scenario.laser.rawlog, "laser.rawlog", out, progress);
        }},
       {"planar_simulation", "the planar world of walls, seen by the plane or point sensor (kind \"planar\")",
-       [](const Scenario& s, const RunInputs&) { return s.kind == ScenarioKind::Planar; },
+       [](const Scenario& s, const RunInputs&) { return feeds_planes(s.kind); },
        [](const LoadedScenario& loaded, const RunInputs&, const std::filesystem::path& out, bool progress) {
          return simulated<PlaneFamily, PlanarSimulationSource>(loaded, out, progress);
        }},

@@ -1,5 +1,6 @@
 #include "relslam/eval/cli/commands/em_bench.hpp"
 
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/experiments/em_bench.hpp"
 #include "relslam/eval/experiments/em_compare.hpp"
 #include "relslam/eval/io/run_folder.hpp"
@@ -60,7 +61,7 @@ int run_em_compare_command(const LoadedScenario& loaded, const EmBenchArgs& args
 int run_em_bench_command(const EmBenchArgs& args, const std::vector<std::string>& command_line) {
   const LoadedScenario loaded = load_checked(args.scenario, args.set);
   const Scenario& scenario = loaded.scenario;
-  if (scenario.kind != ScenarioKind::Planar)
+  if (!feeds_planes(scenario.kind))
     throw loaded.error("kind", "em-bench needs a scenario of kind planar (e.g. scenarios/p-em-office.json)");
   if (args.compare) return run_em_compare_command(loaded, args, command_line);
   prepare_run_folder(args.out, args.force);

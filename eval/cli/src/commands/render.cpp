@@ -1,6 +1,7 @@
 #include "relslam/eval/cli/commands/render.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/experiments/planar_replay.hpp"
 #include "relslam/eval/experiments/run_replay.hpp"
 #include "relslam/eval/io/image_file.hpp"
@@ -201,7 +202,7 @@ int run_render(const RenderArgs& args) {
   ReplayManifest manifest = read_replay_manifest(args.run_dir);
   // The one place the run's kind matters: each replay rebuilds its own kind of scene, and the
   // drawing overloads (map_render.hpp, planar_render.hpp) follow the scene's type.
-  if (manifest.kind() == ScenarioKind::Planar)
+  if (feeds_planes(manifest.kind()))
     return render_replay(args, PlanarReplay(std::move(manifest), args.algorithm), options);
   return render_replay(args, RunReplay(std::move(manifest), args.algorithm), options);
 }

@@ -1,5 +1,6 @@
 #include "relslam/eval/cli/commands/simulate.hpp"
 
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/experiments/interruption.hpp"
 #include "relslam/eval/io/progress.hpp"
@@ -78,7 +79,7 @@ int run_simulate(const SimulateArgs& args, const std::vector<std::string>& comma
   const LoadedScenario loaded = load_checked(args.scenario, args.set);
   const Scenario& scenario = loaded.scenario;
   // Each world is built (and checked) before the folder is touched.
-  if (scenario.kind == ScenarioKind::Planar) {  // walls, path and plane observations
+  if (feeds_planes(scenario.kind)) {  // walls, path and plane observations
     PlanarSimulationSource source(loaded);
     return simulate_into(
         args, loaded, command_line, source,
