@@ -143,7 +143,7 @@ void RltXPointsS::get_poset() {
   pose_ = builder_.get_poset(registered_, planes_, options_);
   if (!pose_.valid && !motion_model_active_) {
     const PlaneId plane = check_for_motion_model(*this, assignment_, MotionModelStartOptions::of(options_));
-    if (plane != kNone) create_motion_model(*this, plane, world_T_start_, options_);
+    if (plane != kNone) create_motion_model(*this, plane, world_T_start_, CreateMotionModelOptions::of(options_));
   }
   // While a motion model is active its track is the pose (thesis 4.3.6), also for Rule 11.
   if (motion_model_active_) {
