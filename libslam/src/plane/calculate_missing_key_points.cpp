@@ -5,8 +5,8 @@
 namespace relslam::plane {
 
 std::optional<MissingKeyPoint> calculate_missing_key_points(const ObservationView& plane,
-                                                            const std::vector<ObservationView>& others,
-                                                            int iteration, const RelativePlaneOptions& options) {
+                                                            const std::vector<ObservationView>& others, int iteration,
+                                                            const ComparePlanesOptions& options) {
   for (int k = 0; k < static_cast<int>(others.size()); ++k) {
     // Forced into the piece holding `iteration`: a key point of another growth phase of the
     // plane would name the wrong end (Rule 19).

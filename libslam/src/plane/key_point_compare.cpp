@@ -38,7 +38,7 @@ struct ConsistentRange {
 
 // `offsets`: key_point_pairs' series over the piece; `pair` = 2(a − 1) + (b − 1).
 ConsistentRange consistent_range(const std::vector<KeyPointOffsets>& offsets, int pair,
-                                 const RelativePlaneOptions& options) {
+                                 const ComparePlanesOptions& options) {
   const std::size_t n = offsets.size();
   std::vector<Eigen::Vector2d> series(n);
   for (std::size_t t = 0; t < n; ++t) series[t] = offsets[t][pair];
@@ -79,7 +79,7 @@ void common_sizes(const ObservationView& first, const ObservationView& second, i
 }
 
 CompareResult compare_with_key_points(const ObservationView& first, const ObservationView& second,
-                                      const RelativePlaneOptions& options, std::optional<int> forced_iteration) {
+                                      const ComparePlanesOptions& options, std::optional<int> forced_iteration) {
   std::vector<SizeSample> sizes;
   if (!forced_iteration) {
     common_sizes(first, second, std::numeric_limits<int>::min(), std::numeric_limits<int>::max(), sizes);
@@ -106,7 +106,7 @@ CompareResult compare_with_key_points(const ObservationView& first, const Observ
 }
 
 CompareResult compare_piece(const ObservationView& first, const ObservationView& second, const SizeInterval& piece,
-                            const RelativePlaneOptions& options) {
+                            const ComparePlanesOptions& options) {
   // The piece's observations: consecutive in both histories, as both planes were seen in each
   // of its iterations.
   std::vector<PlaneObject> both1, both2;
@@ -117,8 +117,8 @@ CompareResult compare_piece(const ObservationView& first, const ObservationView&
   CompareResult result;
   std::span<const PlaneObject> in1(both1), in2(both2);
   std::vector<KeyPointOffsets> offsets;
-  KeyPointPairs pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first, &offsets);
-  KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties, options.rules.rotate_to_first);
+  KeyPointPairs pairs = key_point_pairs(in1, in2, options.rotate_to_first, &offsets);
+  KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties, options.rotate_to_first);
   RltInterval interval = piece.interval;
   if (options.trim_piece_ends && in1.size() > static_cast<std::size_t>(options.growth_phase.min_samples)) {
     // The pair with the lowest σ over its consistent part; when that part is not the whole
@@ -136,8 +136,8 @@ CompareResult compare_piece(const ObservationView& first, const ObservationView&
     if (best.last - best.first < in1.size() && !options.key_point_ties.close(best.sigma, lowest)) {
       in1 = in1.subspan(best.first, best.last - best.first);
       in2 = in2.subspan(best.first, best.last - best.first);
-      pairs = key_point_pairs(in1, in2, options.rules.rotate_to_first);
-      choice = choose_key_points(pairs, options.key_point_ties, options.rules.rotate_to_first);
+      pairs = key_point_pairs(in1, in2, options.rotate_to_first);
+      choice = choose_key_points(pairs, options.key_point_ties, options.rotate_to_first);
       interval = {in1.front().iteration, in1.back().iteration};
     }
   }

@@ -46,7 +46,7 @@ PlaneId check_for_motion_model(RltXPointsState& s, std::span<const PlaneId> assi
 }
 
 void create_motion_model(RltXPointsState& s, PlaneId plane, const PlanarPose& world_T_start,
-                         const RelativePlaneOptions& options) {
+                         const CreateMotionModelOptions& options) {
   // CreateMotionModelXPoint (Rule 27): a new group holding the one plane, linked from the
   // current group through it and fixed at the last valid pose. Entering a motion model always
   // makes a new one [T].
@@ -66,8 +66,8 @@ void create_motion_model(RltXPointsState& s, PlaneId plane, const PlanarPose& wo
   s.current_ = id;
   // Computed and placed at once, so this iteration already has its pose.
   s.motion_models_.back().compute(s.planes_, options.motion_model);
-  s.xpoints_[id].compute(s.planes_, options);
-  s.builder_.build_map(s.links_, s.xpoints_, s.planes_, world_T_start, options);
+  s.xpoints_[id].compute(s.planes_, options.compute);
+  s.builder_.build_map(s.links_, s.xpoints_, s.planes_, world_T_start, options.build_map);
 }
 
 }  // namespace relslam::plane

@@ -26,10 +26,18 @@ struct MotionModelStartOptions {
 // a motion model should start on (kNone: none yet). `assignment`: the RltPlanes in view.
 PlaneId check_for_motion_model(RltXPointsState& s, std::span<const PlaneId> assignment,
                                const MotionModelStartOptions& options);
-// CreateMotionModelXPoint (Rule 27), computed and placed at once. ComputeXPoint and BuildMap
-// read the whole options.
+// What CreateMotionModelXPoint reads of RelativePlaneOptions: the track's, ComputeXPoint's and
+// BuildMap's.
+struct CreateMotionModelOptions {
+  const MotionModelOptions& motion_model;
+  ComputeXPointOptions compute;
+  BuildMapOptions build_map;
+  static CreateMotionModelOptions of(const RelativePlaneOptions& o) { return {o.motion_model, o, o}; }
+};
+
+// CreateMotionModelXPoint (Rule 27), computed and placed at once.
 void create_motion_model(RltXPointsState& s, PlaneId plane, const PlanarPose& world_T_start,
-                         const RelativePlaneOptions& options);
+                         const CreateMotionModelOptions& options);
 // The active motion model ends when a second plane in view is on the map (the chart's group
 // becomes current). `chart` is scratch.
 void end_motion_model_on_the_map(RltXPointsState& s, std::span<const PlaneId> assignment, std::vector<int>& chart);

@@ -48,7 +48,7 @@ void PairComparison::add_runs(const ObservationView& a, const ObservationView& b
 }
 
 const CompareResult* PairComparison::update(const RltPlane& first, const RltPlane& second,
-                                            const RelativePlaneOptions& options) {
+                                            const ComparePlanesOptions& options) {
   const Source source{first.id(), second.id(), first[0].iteration, second[0].iteration,
                       last_common_iteration(first, second)};
   if (source == source_) return nullptr;
@@ -90,7 +90,8 @@ const CompareResult* PairComparison::update(const RltPlane& first, const RltPlan
   if (best == nullptr) {  // no piece of min_samples iterations [T]
     chosen_.reset();
     result_ = {};
-  } else if (!chosen_ || chosen_->interval.start != best->interval.start || chosen_->interval.end != best->interval.end) {
+  } else if (!chosen_ || chosen_->interval.start != best->interval.start ||
+             chosen_->interval.end != best->interval.end) {
     result_ = compare_piece(a, b, *best, options);
     chosen_ = *best;
   }

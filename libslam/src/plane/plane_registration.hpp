@@ -22,10 +22,9 @@ struct RegistrationOptions {
   bool global_matching;             // Rule 11
   bool normal_direction;            // Rule 10
   int plane_capacity;               // a new RltPlane's observation array
-  // Rule 11's pose: the motion model's track, or GetPoset from what Rule 1 registered, which
-  // (RltMapBuilder::get_poset) reads the whole options.
+  // Rule 11's pose: the motion model's track, or GetPoset from what Rule 1 registered.
   const MotionModelOptions& motion_model;
-  const RelativePlaneOptions& get_poset;
+  GetPosetOptions get_poset;
   static RegistrationOptions of(const RelativePlaneOptions& o) {
     return {o.local_match,
             o.global_match,

@@ -33,15 +33,16 @@ KeyPoint any_membership_key_point(const RltPlane& plane) {
 }
 
 KeyPoint key_point_at(const RltPlane& plane, int iteration, const std::vector<const RltPlane*>& others,
-                      const RelativePlaneOptions& options) {
+                      const GetPosetOptions& options) {
   if (const KeyPoint kp = membership_key_point_at(plane, iteration); kp != KeyPoint::None) return kp;
-  if (!options.rules.missing_key_points) return any_membership_key_point(plane);
+  if (!options.missing_key_points) return any_membership_key_point(plane);
   std::vector<ObservationView> views;
   views.reserve(others.size());
   for (const RltPlane* o : others)
     if (o != &plane) views.push_back(o->view());
   if (views.empty()) return KeyPoint::None;
-  const std::optional<MissingKeyPoint> missing = calculate_missing_key_points(plane.view(), views, iteration, options);
+  const std::optional<MissingKeyPoint> missing =
+      calculate_missing_key_points(plane.view(), views, iteration, options.compare);
   return missing ? missing->key_point : KeyPoint::None;
 }
 
@@ -49,26 +50,26 @@ KeyPoint key_point_at(const RltPlane& plane, int iteration, const std::vector<co
 
 std::optional<PlanarPose> RltMapBuilder::first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
                                                                 const std::vector<RltPlane>& planes,
-                                                                const RelativePlaneOptions& options) const {
+                                                                const BuildMapOptions& options) const {
   const PlaneObject& first = plane.first_observation();
   const RltXPointRef* ref = plane.ref(x0.id());
-  if (!options.key_points || !options.rules.first_reading_resize ||
-      std::abs(first.length() - ref->max_length) <= options.same_length)
+  if (!options.key_point.key_points || !options.first_reading_resize ||
+      std::abs(first.length() - ref->max_length) <= options.key_point.same_length)
     return first.pose();
   // Rule 4's first reading smaller than the plane (Fig 90): grown to the size
   // in X0 from the key point valid in the first observation's piece, found against X0's planes.
   std::vector<const RltPlane*> others;
   for (PlaneId p : x0.planes()) others.push_back(&planes[p]);
-  const KeyPoint kp = key_point_at(plane, first.iteration, others, options);
+  const KeyPoint kp = key_point_at(plane, first.iteration, others, options.key_point);
   if (kp == KeyPoint::None) return std::nullopt;  // cannot be grown: says nothing [R, thesis 4.3.4]
   return adjust_size(first, ref->max_length, kp).pose();
 }
 
 void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
                               const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
-                              const RelativePlaneOptions& options) {
-  const bool anchor = options.rules.anchor_first_observation;
-  const double same_length = options.same_length;
+                              const BuildMapOptions& options) {
+  const bool anchor = options.anchor_first_observation;
+  const double same_length = options.key_point.same_length;
   // Rebuilt from the links every iteration (thesis 4.4.3.11): a group recomputed this iteration moves
   // every group chained after it.
   map_.assign(planes.size(), MapPlane{});
@@ -112,7 +113,7 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
         const RltXPointRef* in_to = planes[p].ref(to.id());
         if (!in_from->valid || !in_to->valid) continue;
         PlanarPose from_T_plane = in_from->pose, to_T_plane = in_to->pose;
-        if (options.key_points && std::abs(in_from->max_length - in_to->max_length) > same_length) {
+        if (options.key_point.key_points && std::abs(in_from->max_length - in_to->max_length) > same_length) {
           // Rule 17: the smaller membership re-anchored to the larger size on its own key point;
           // without one it cannot be resized and the plane does not link (thesis 4.3.4).
           const bool from_smaller = in_from->max_length < in_to->max_length;
@@ -126,7 +127,7 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
       }
     }
     to.place(world_T_to.mean(), world_T_to.count() > 0);
-    if (to.placed()) place_planes(to, planes, same_length, options.key_points);
+    if (to.placed()) place_planes(to, planes, same_length, options.key_point.key_points);
   }
 }
 
@@ -152,7 +153,7 @@ void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltP
 }
 
 RltPoset RltMapBuilder::get_poset(std::span<const RegisteredObservation> observations,
-                                  const std::vector<RltPlane>& planes, const RelativePlaneOptions& options) const {
+                                  const std::vector<RltPlane>& planes, const GetPosetOptions& options) const {
   PoseMean mean;
   std::vector<const RegisteredObservation*> bad;
   std::vector<const RltPlane*> good_planes;
@@ -166,8 +167,8 @@ RltPoset RltMapBuilder::get_poset(std::span<const RegisteredObservation> observa
     if (std::abs(entry.length - o.observation->length()) <= options.same_length) {
       // The same size within τ_len; a known key point still grows it the last bit exactly (an
       // end cut by less than τ_len would otherwise move the midpoint by half the cut).
-      const KeyPoint kp = options.key_points ? membership_key_point_at(planes[o.plane], o.observation->iteration)
-                                             : KeyPoint::None;
+      const KeyPoint kp =
+          options.key_points ? membership_key_point_at(planes[o.plane], o.observation->iteration) : KeyPoint::None;
       add(o, kp == KeyPoint::None ? *o.observation : adjust_size(*o.observation, entry.length, kp));
       continue;
     }

@@ -83,26 +83,25 @@ void RltXPoint::set_chain(std::vector<PlaneId> order) {
   needs_compute_ = true;
 }
 
-const RltPlaneInterval* RltXPoint::comparison_window(const std::vector<RltPlane>& planes,
-                                                     const RelativePlaneOptions& options) {
-  if (options.interval_mode != IntervalMode::Group) return nullptr;
+const RltPlaneInterval* RltXPoint::comparison_window(const std::vector<RltPlane>& planes, IntervalMode mode) {
+  if (mode != IntervalMode::Group) return nullptr;
   common_interval(planes, scratch_common_);
   return &scratch_common_;
 }
 
-bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration) {
+bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const ReorderPlanesOptions& options, int iteration) {
   const int n = static_cast<int>(chain_.size());
   if (n < 3 || motion_model()) return false;  // two planes have one edge either way
   const bool periodic =
-      options.rules.reorder_planes && (last_reorder_ < 0 ? iteration - created_iteration_ >= options.reorder.first_age
-                                                         : iteration - last_reorder_ >= options.reorder.period);
-  const bool broken = options.rules.reorder_broken_chains && !placed() &&
+      options.reorder_planes && (last_reorder_ < 0 ? iteration - created_iteration_ >= options.reorder.first_age
+                                                   : iteration - last_reorder_ >= options.reorder.period);
+  const bool broken = options.reorder_broken_chains && !placed() &&
                       (last_reorder_ < 0 || iteration - last_reorder_ >= options.reorder.broken_gap) &&
                       edges_.size() + 1 == chain_.size() &&
                       !std::ranges::all_of(edges_, [](const CompareResult& e) { return places_both(e); });
   if (!periodic && !broken) return false;
   last_reorder_ = iteration;
-  const RltPlaneInterval* within = comparison_window(planes, options);
+  const RltPlaneInterval* within = comparison_window(planes, options.interval_mode);
   scratch_observations_.resize(n);
   observations_filled_.assign(n, 0);
   // W[i][j] (thesis 4.3.7.1): the iterations ComparePlanes(i, j) used when both planes get a key
@@ -111,7 +110,7 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlan
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
       const CompareResult r =
-          compare_with_key_points(observations(planes, i, within), observations(planes, j, within), options);
+          compare_with_key_points(observations(planes, i, within), observations(planes, j, within), options.compare);
       weight[i][j] = weight[j][i] = places_both(r) ? r.samples : -1;
     }
   const std::optional<std::vector<int>> path = best_comparison_path(weight, options.reorder.exact_max_planes);
@@ -143,10 +142,10 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const RelativePlan
   return true;
 }
 
-void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options) {
+void RltXPoint::compute(std::vector<RltPlane>& planes, const ComputeXPointOptions& options) {
   needs_compute_ = false;
   if (chain_.empty() || motion_model()) return;  // a motion model's RltXMMPoint computes it
-  const RltPlaneInterval* within = comparison_window(planes, options);
+  const RltPlaneInterval* within = comparison_window(planes, options.interval_mode);
   edges_.resize(chain_.size() - 1);
   if (options.key_points) {
     compute_with_key_points(planes, options, within);
@@ -160,7 +159,7 @@ void RltXPoint::compute(std::vector<RltPlane>& planes, const RelativePlaneOption
     const RltPlane& from = planes[chain_[k - 1]];
     const RltPlane& to = planes[chain_[k]];
     CompareResult& edge = edges_[k - 1];
-    edge = compare_planes(from, to, options.rules.rotate_to_first, within);
+    edge = compare_planes(from, to, options.compare.rotate_to_first, within);
     RltXPointRef* child = planes[chain_[k]].ref(id_);
     if (k == 1) {  // the base plane is described by its first edge
       parent->max_length = edge.length1;
@@ -221,7 +220,7 @@ ObservationView RltXPoint::observations(const std::vector<RltPlane>& planes, std
   return scratch_observations_[k];
 }
 
-void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const RelativePlaneOptions& options) {
+void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, double same_length) {
   const std::size_t n = chain_.size();
   bool complete = true;
   double total_length = 0;
@@ -236,7 +235,7 @@ void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const Re
   if (complete) {
     // Σ L* at least the snapshot's; about equal sizes: the longer total interval [T, thesis 4.3.7.3].
     const bool better = !same_chain || replaces_saved(total_length, total_samples, snapshot_->total_length,
-                                                      snapshot_->total_samples, options.same_length);
+                                                      snapshot_->total_samples, same_length);
     if (!better) return;
     RltXPointSnapshot& s = snapshot_.emplace();
     s.chain = chain_;
@@ -263,7 +262,7 @@ void RltXPoint::keep_or_restore_snapshot(std::vector<RltPlane>& planes, const Re
   }
 }
 
-void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                                         const RltPlaneInterval* within) {
   const std::size_t n = chain_.size();
   scratch_observations_.resize(n);
@@ -271,45 +270,47 @@ void RltXPoint::compute_with_key_points(std::vector<RltPlane>& planes, const Rel
   pair_comparisons_.resize(n - 1);
   compare_edges(planes, options, within);
   chain_with_size_correction(planes, options, within, canonical_sizes(planes, options, within));
-  if (options.rules.save_snapshot) keep_or_restore_snapshot(planes, options);
+  if (options.save_snapshot) keep_or_restore_snapshot(planes, options.same_length);
 }
 
-void RltXPoint::compare_edges(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+void RltXPoint::compare_edges(std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                               const RltPlaneInterval* within) {
   // Each edge by ComparePlanes with key points: one growth phase (Rule 18), the pair of assumed
   // midpoints with the lowest σ (Rules 13–15); an edge whose common observations did not change
   // keeps its result (IntervalMode::Group narrows them by the whole group: always recomputed).
   for (std::size_t k = 1; k < chain_.size(); ++k) {
     if (within == nullptr) {
-      const CompareResult* r = pair_comparisons_[k - 1].update(planes[chain_[k - 1]], planes[chain_[k]], options);
+      const CompareResult* r =
+          pair_comparisons_[k - 1].update(planes[chain_[k - 1]], planes[chain_[k]], options.compare);
       if (r == nullptr) continue;
       edges_[k - 1] = *r;
     } else {
-      edges_[k - 1] =
-          compare_with_key_points(observations(planes, k - 1, within), observations(planes, k, within), options);
+      edges_[k - 1] = compare_with_key_points(observations(planes, k - 1, within), observations(planes, k, within),
+                                              options.compare);
     }
     // Rule 36 (DoBackupCheck, thesis 4.4.3.2, 4.3.7.3): the pair's best result so far when it beats
     // this one; so a plane whose shared iterations the circular array overwrote stays placed
     // (BuildMap's "invalid reference uses its reserve", happens here).
-    if (options.rules.save_reserve)
+    if (options.save_reserve)
       do_backup_check(*planes[chain_[k]].ref(id_), chain_[k - 1], edges_[k - 1], options.same_length);
   }
 }
 
-KeyPoint RltXPoint::key_point_in(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+KeyPoint RltXPoint::key_point_in(const std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                                  const RltPlaneInterval* within, std::size_t k, int iteration) {
   // Plane k's key point in the growth phase holding `iteration`, from the group's other planes
   // (Rule 19: a key point is valid only in the interval it was computed on).
-  if (!options.rules.missing_key_points) return KeyPoint::None;  // Rule 19 off
+  if (!options.missing_key_points) return KeyPoint::None;  // Rule 19 off
   std::vector<ObservationView> others;
   for (std::size_t o = 0; o < chain_.size(); ++o)
     if (o != k) others.push_back(observations(planes, o, within));
-  const auto missing = calculate_missing_key_points(observations(planes, k, within), others, iteration, options);
+  const auto missing =
+      calculate_missing_key_points(observations(planes, k, within), others, iteration, options.compare);
   return missing ? missing->key_point : KeyPoint::None;
 }
 
 std::vector<RltXPoint::Canonical> RltXPoint::canonical_sizes(const std::vector<RltPlane>& planes,
-                                                             const RelativePlaneOptions& options,
+                                                             const ComputeXPointOptions& options,
                                                              const RltPlaneInterval* within) {
   // Canonical size and key point of each plane (thesis 4.3.6, A18): the largest length among
   // the edges touching it, with that edge's key point; the other edge's key point when that
@@ -335,7 +336,7 @@ std::vector<RltXPoint::Canonical> RltXPoint::canonical_sizes(const std::vector<R
   return canonical;
 }
 
-void RltXPoint::chain_with_size_correction(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+void RltXPoint::chain_with_size_correction(std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                                            const RltPlaneInterval* within, const std::vector<Canonical>& canonical) {
   // Chaining with size correction (Rules 2, 6, 28; thesis 4.3.6): each edge's offset joins the
   // two planes' reference points at the sizes that edge saw; the parent's canonical point is
@@ -393,7 +394,7 @@ void RltXPoint::chain_with_size_correction(std::vector<RltPlane>& planes, const 
       if ((parent_resized && kp_parent == KeyPoint::None) || (child_resized && kp_child == KeyPoint::None))
         child->valid = false;
 
-      if (child->valid && !options.rules.size_correction) {
+      if (child->valid && !options.size_correction) {
         child->pose = parent->pose * delta;  // Rule 28 off: the sizes each edge saw, composed as they are
       } else if (child->valid) {
         const PlanarPose parent_in_edge = reanchor(parent->pose, cp.length, edge.length1, kp_parent);

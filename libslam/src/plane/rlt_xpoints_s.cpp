@@ -116,10 +116,12 @@ void RltXPointsS::start_iteration(int iteration) {
 
 void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
   const bool reorder = options_.key_points && (options_.rules.reorder_planes || options_.rules.reorder_broken_chains);
+  const ComputeXPointOptions compute_options(options_);
+  const ReorderPlanesOptions reorder_options(options_);
   for (RltXPoint& x : xpoints_)
     if (x.needs_compute() && !x.motion_model()) {
-      if (reorder) x.reorder_if_due(planes_, options_, iteration_);  // Rule 30 (thesis 4.4.3.2)
-      x.compute(planes_, options_);
+      if (reorder) x.reorder_if_due(planes_, reorder_options, iteration_);  // Rule 30 (thesis 4.4.3.2)
+      x.compute(planes_, compute_options);
       if (options_.rules.interval_check)  // Rules 31, 32 (walkthrough 4.5)
         result.roll_back.hints +=
             check_interval_sizes(*this, x, options_.rollback, hints_, failed_, roll_back_request_);
@@ -130,7 +132,7 @@ void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
     RltXPoint& x = xpoints_[mm.xpoint()];
     if (!x.needs_compute()) continue;
     if (!mm.ended()) mm.compute(planes_, options_.motion_model);  // an ended track is frozen
-    x.compute(planes_, options_);                                 // only clears the flag
+    x.compute(planes_, compute_options);                          // only clears the flag
     ++result.groups_computed;
   }
 }
@@ -141,7 +143,7 @@ void RltXPointsS::get_poset() {
   pose_ = builder_.get_poset(registered_, planes_, options_);
   if (!pose_.valid && !motion_model_active_) {
     const PlaneId plane = check_for_motion_model(*this, assignment_, MotionModelStartOptions::of(options_));
-    if (plane != kNone) create_motion_model(*this, plane, world_T_start_, options_);
+    if (plane != kNone) create_motion_model(*this, plane, world_T_start_, CreateMotionModelOptions::of(options_));
   }
   // While a motion model is active its track is the pose (thesis 4.3.6), also for Rule 11.
   if (motion_model_active_) {

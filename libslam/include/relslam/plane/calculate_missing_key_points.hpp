@@ -7,6 +7,7 @@
 // relslam/plane.
 
 #include "relslam/core/plane_object.hpp"
+#include "relslam/plane/key_point_compare.hpp"
 #include "relslam/plane/observation_view.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/plane_object.hpp"
@@ -26,7 +27,7 @@ struct MissingKeyPoint {
 // plane, forced_iteration = iteration) for each o in `others` in order — the thesis's dummy
 // references. nullopt when none gives one: no common piece, static there, or ambiguous.
 std::optional<MissingKeyPoint> calculate_missing_key_points(const ObservationView& plane,
-                                                            const std::vector<ObservationView>& others,
-                                                            int iteration, const RelativePlaneOptions& options);
+                                                            const std::vector<ObservationView>& others, int iteration,
+                                                            const ComparePlanesOptions& options);
 
 }  // namespace relslam::plane

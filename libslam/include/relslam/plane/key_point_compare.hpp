@@ -17,13 +17,32 @@
 
 namespace relslam::plane {
 
+// What ComparePlanes reads of RelativePlaneOptions (Rules 13–15, 18, 19). Converts from the whole
+// options, so a caller holding them passes them as they are; the view copies the few values.
+struct ComparePlanesOptions {
+  GrowthPhaseBounds growth_phase;  // Rule 18's pieces
+  IntervalChoice interval_choice;  // which piece GetMaxSize picks
+  KeyPointTies key_point_ties;     // Rule 15's ties
+  bool rotate_to_first;            // rules.rotate_to_first
+  bool trim_piece_ends;            // the piece's ends standing off the series left out
+  double rigid_sigma;              // Rule 13 refined: no key point above this σ
+  ComparePlanesOptions() : ComparePlanesOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
+  ComparePlanesOptions(const RelativePlaneOptions& o)                       // NOLINT(google-explicit-constructor)
+      : growth_phase(o.growth_phase),
+        interval_choice(o.interval_choice),
+        key_point_ties(o.key_point_ties),
+        rotate_to_first(o.rules.rotate_to_first),
+        trim_piece_ends(o.trim_piece_ends),
+        rigid_sigma(o.rigid_sigma) {}
+};
+
 // `first` and `second`: each plane's observations, sorted by iteration (one per iteration).
 // The result's delta is the pair with the lowest σ, at the planes' maximum lengths in the chosen
 // piece; interval and samples are that piece's. With `forced_iteration` the piece containing it
 // is used (Rule 19), and only the run of common iterations around it is read. Invalid when no
 // piece has options.growth_phase.min_samples iterations [T].
 CompareResult compare_with_key_points(const ObservationView& first, const ObservationView& second,
-                                      const RelativePlaneOptions& options,
+                                      const ComparePlanesOptions& options,
                                       std::optional<int> forced_iteration = std::nullopt);
 
 // GetCombinedInterval between two iterations (inclusive): both lengths at each iteration both
@@ -35,6 +54,6 @@ void common_sizes(const ObservationView& first, const ObservationView& second, i
 // ComparePlanes inside one piece GetMaxSize chose (Rules 13–15, with the piece's ends trimmed,
 // options.trim_piece_ends): both planes were seen at every iteration of piece.interval.
 CompareResult compare_piece(const ObservationView& first, const ObservationView& second, const SizeInterval& piece,
-                            const RelativePlaneOptions& options);
+                            const ComparePlanesOptions& options);
 
 }  // namespace relslam::plane

@@ -16,6 +16,7 @@
 #include "relslam/plane/compare_result.hpp"
 #include "relslam/plane/growth_phase.hpp"
 #include "relslam/plane/ids.hpp"
+#include "relslam/plane/key_point_compare.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/rlt_plane.hpp"
 
@@ -33,7 +34,7 @@ class PairComparison {
   // The comparison of `first` with `second` (the edge's planes in chain order); nullptr when
   // nothing changed since the last call — the same planes, the same oldest stored observations,
   // no new iteration seen together — so the edge keeps its result.
-  const CompareResult* update(const RltPlane& first, const RltPlane& second, const RelativePlaneOptions& options);
+  const CompareResult* update(const RltPlane& first, const RltPlane& second, const ComparePlanesOptions& options);
 
  private:
   // A run of consecutive common iterations and its growth phases (Rule 18).

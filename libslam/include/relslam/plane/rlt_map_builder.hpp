@@ -6,6 +6,7 @@
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"
 #include "relslam/plane/ids.hpp"
+#include "relslam/plane/key_point_compare.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/plane_object.hpp"
 #include "relslam/plane/pose_integrity.hpp"
@@ -65,6 +66,35 @@ struct PlaneMatch {
   double score = 0;
 };
 
+// What GetPoset reads of RelativePlaneOptions (Rules 5, 16, 19): a partial observation is grown
+// from its key point (part 2), found by Rule 19's ComparePlanes when no membership has one.
+// Converts from the whole options, so a caller holding them passes them as they are.
+struct GetPosetOptions {
+  ComparePlanesOptions compare;                                   // Rule 19's dummy references
+  bool key_points;                                                // part 2
+  bool missing_key_points;                                        // rules.missing_key_points (Rule 19)
+  double same_length;                                             // an observation at the map's size
+  GetPosetOptions() : GetPosetOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
+  GetPosetOptions(const RelativePlaneOptions& o)                  // NOLINT(google-explicit-constructor)
+      : compare(o),
+        key_points(o.key_points),
+        missing_key_points(o.rules.missing_key_points),
+        same_length(o.same_length) {}
+};
+
+// What BuildMap reads of RelativePlaneOptions (Rules 4, 6, 8, 17): GetPoset's key points (Rule
+// 4's first-reading resize finds them the same way) and Rule 4's two switches.
+struct BuildMapOptions {
+  GetPosetOptions key_point;
+  bool anchor_first_observation;  // rules.anchor_first_observation (Rule 4)
+  bool first_reading_resize;      // rules.first_reading_resize (Rule 4, thesis 4.4.3.11 step 1)
+  BuildMapOptions() : BuildMapOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
+  BuildMapOptions(const RelativePlaneOptions& o)                  // NOLINT(google-explicit-constructor)
+      : key_point(o),
+        anchor_first_observation(o.rules.anchor_first_observation),
+        first_reading_resize(o.rules.first_reading_resize) {}
+};
+
 class RltMapBuilder {
  public:
   // BuildMap (Rules 4, 6, 8): places every group by walking the links in creation order and
@@ -76,8 +106,7 @@ class RltMapBuilder {
   // size in X0 is grown from its key point first (Rule 4's first-reading resize, thesis 4.4.3.11
   // step 1), and a linking plane's smaller membership is re-anchored to the larger (Rule 17).
   void build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
-                 const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
-                 const RelativePlaneOptions& options);
+                 const std::vector<RltPlane>& planes, const PlanarPose& world_T_start, const BuildMapOptions& options);
 
   // GetPoset (Rule 5): the mean of CalculateOffset over the observations whose RltPlane is on
   // the map at the same size; recomputed from scratch each iteration, never carried forward.
@@ -86,7 +115,7 @@ class RltMapBuilder {
   // iteration, else one found by Rule 19 against the other observations of the iteration; an
   // observation with no static end gives no pose (thesis 4.4.3.11).
   RltPoset get_poset(std::span<const RegisteredObservation> observations, const std::vector<RltPlane>& planes,
-                     const RelativePlaneOptions& options) const;
+                     const GetPosetOptions& options) const;
 
   // MatchPlanetoMap (Rule 11): every mapped plane not in `taken`, seen from world_T_robot,
   // scored against `observation` (robot frame); candidates go to `out` (the caller keeps the
@@ -102,7 +131,7 @@ class RltMapBuilder {
   void place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, double same_length, bool key_points);
   std::optional<PlanarPose> first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
                                                    const std::vector<RltPlane>& planes,
-                                                   const RelativePlaneOptions& options) const;
+                                                   const BuildMapOptions& options) const;
 
   std::vector<MapPlane> map_;
   int mapped_count_ = 0;

@@ -4,6 +4,7 @@
 
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/plane/ids.hpp"
+#include "relslam/plane/key_point_compare.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/pair_comparison.hpp"
 #include "relslam/plane/rlt_plane.hpp"
@@ -30,6 +31,46 @@ struct RltXPointSnapshot {
 // Invariant: every plane of the chain lists this group among its refs exactly once, and the
 // chain holds each plane once. The relative map lives in those refs: the base (first) plane's
 // reference point is the group's origin.
+// What ComputeXPoint reads of RelativePlaneOptions (thesis 4.4.3.2, 4.3.6). Converts from the
+// whole options, so a caller holding them passes them as they are.
+struct ComputeXPointOptions {
+  ComparePlanesOptions compare;  // each edge's ComparePlanes (Rules 13–15, 18, 19)
+  IntervalMode interval_mode;    // the iterations comparisons are limited to
+  bool key_points;               // part 2: key points and size correction
+  double same_length;            // lengths and offsets equal within it (Rules 28, 35, 36)
+  bool missing_key_points;       // Rule 19
+  bool size_correction;          // Rule 28
+  bool save_snapshot;            // Rule 35
+  bool save_reserve;             // Rule 36
+  ComputeXPointOptions() : ComputeXPointOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
+  ComputeXPointOptions(const RelativePlaneOptions& o)                       // NOLINT(google-explicit-constructor)
+      : compare(o),
+        interval_mode(o.interval_mode),
+        key_points(o.key_points),
+        same_length(o.same_length),
+        missing_key_points(o.rules.missing_key_points),
+        size_correction(o.rules.size_correction),
+        save_snapshot(o.rules.save_snapshot),
+        save_reserve(o.rules.save_reserve) {}
+};
+
+// What ReorderPlanes reads of RelativePlaneOptions (Rule 30, thesis 4.3.7.1): when it is due,
+// and the pairwise comparisons it orders the planes by.
+struct ReorderPlanesOptions {
+  ComparePlanesOptions compare;
+  IntervalMode interval_mode;
+  bool reorder_planes;         // rules.reorder_planes: periodically
+  bool reorder_broken_chains;  // rules.reorder_broken_chains: while unplaced
+  ReorderOptions reorder;
+  ReorderPlanesOptions() : ReorderPlanesOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
+  ReorderPlanesOptions(const RelativePlaneOptions& o)                       // NOLINT(google-explicit-constructor)
+      : compare(o),
+        interval_mode(o.interval_mode),
+        reorder_planes(o.rules.reorder_planes),
+        reorder_broken_chains(o.rules.reorder_broken_chains),
+        reorder(o.reorder) {}
+};
+
 class RltXPoint {
  public:
   RltXPoint(XPointId id, int created_iteration, std::vector<PlaneId> chain);
@@ -62,7 +103,7 @@ class RltXPoint {
   // Rules 2, 6). A plane after an edge with no common iteration is marked invalid. With
   // options.key_points (part 2) each edge is compared by key points (Rules 13–15, 18) and the
   // chain is composed with size correction (Rule 28, thesis 4.3.6).
-  void compute(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
+  void compute(std::vector<RltPlane>& planes, const ComputeXPointOptions& options);
 
   // ReorderPlanes (Rule 30, thesis 4.3.7.1) when it is due at `iteration`: periodically with
   // options.rules.reorder_planes (options.reorder), and with rules.reorder_broken_chains while
@@ -70,7 +111,7 @@ class RltXPoint {
   // a chain whose edges all can replaces it). The chain becomes the best path by the planes' pairwise comparison
   // intervals with valid key points (reorder_planes.hpp). True when the chain changed (the group is then recomputed);
   // the Rule 36 reserves of the edges that changed are then cleared.
-  bool reorder_if_due(std::vector<RltPlane>& planes, const RelativePlaneOptions& options, int iteration);
+  bool reorder_if_due(std::vector<RltPlane>& planes, const ReorderPlanesOptions& options, int iteration);
 
   // CheckIntervalSize (Rules 31, 32; thesis 4.3.7.2), after compute(): a plane's membership is
   // confirmed once the comparison placing it — the chain edge from the plane before it — averaged
@@ -114,27 +155,27 @@ class RltXPoint {
   PlanarPose world_pose_;
   bool placed_ = false;
   std::optional<PlanarPose> anchor_;
-  void compute_with_key_points(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+  void compute_with_key_points(std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                                const RltPlaneInterval* within);
   // compute_with_key_points's three parts (thesis 4.3.6): edge comparison (ComparePlanes with key
   // points, Rules 13–15, 18, 36), canonical sizes (each plane's largest length and its key point,
   // Rule 19 for a missing one), and chaining with size correction (Rules 2, 6, 15, 28).
   struct Canonical;
-  void compare_edges(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+  void compare_edges(std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                      const RltPlaneInterval* within);
-  std::vector<Canonical> canonical_sizes(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+  std::vector<Canonical> canonical_sizes(const std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                                          const RltPlaneInterval* within);
-  void chain_with_size_correction(std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+  void chain_with_size_correction(std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                                   const RltPlaneInterval* within, const std::vector<Canonical>& canonical);
   // Rule 19: chain plane k's key point in the growth phase holding `iteration`, KeyPoint::None
   // when the other planes cannot tell (or Rule 19 is off).
-  KeyPoint key_point_in(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options,
+  KeyPoint key_point_in(const std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                         const RltPlaneInterval* within, std::size_t k, int iteration);
 
   RltPlaneInterval scratch_common_;  // reused by compute() in IntervalMode::Group
   // The iterations comparisons are limited to: the group's common interval in
   // IntervalMode::Group (kept in scratch_common_), nullptr (all) in IntervalMode::Pair.
-  const RltPlaneInterval* comparison_window(const std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
+  const RltPlaneInterval* comparison_window(const std::vector<RltPlane>& planes, IntervalMode mode);
   // Per chain plane, part 2 in IntervalMode::Group: its observations inside the group's
   // common interval, filled on demand.
   std::vector<std::vector<PlaneObject>> scratch_observations_;
@@ -147,7 +188,7 @@ class RltXPoint {
 
   // Rule 35's copy of the best complete result (thesis 4.3.7.3), for the chain it was computed on.
   std::optional<RltXPointSnapshot> snapshot_;
-  void keep_or_restore_snapshot(std::vector<RltPlane>& planes, const RelativePlaneOptions& options);
+  void keep_or_restore_snapshot(std::vector<RltPlane>& planes, double same_length);
   // Chain plane k's observations: where they are stored, or only those inside `within`.
   ObservationView observations(const std::vector<RltPlane>& planes, std::size_t k, const RltPlaneInterval* within);
 };
