@@ -106,7 +106,7 @@ class RltXPoint {
   void compute(std::vector<RltPlane>& planes, const ComputeXPointOptions& options);
 
   // ReorderPlanes (Rule 30, thesis 4.3.7.1) when it is due at `iteration`: periodically with
-  // options.rules.reorder_planes (options.reorder), and with rules.reorder_broken_chains while
+  // options.reorder_planes (options.reorder), and with rules.reorder_broken_chains while
   // the group is not placed and an edge of its chain could not place both its planes (then only
   // a chain whose edges all can replaces it). The chain becomes the best path by the planes' pairwise comparison
   // intervals with valid key points (reorder_planes.hpp). True when the chain changed (the group is then recomputed);
