@@ -226,9 +226,7 @@ void PlanarSimulationSource::stream(const Consumer& consume) {
   for (int k = 0; k < frames_; ++k) {
     sim::PlaneSimFrame frame = this->frame(k);
     if (range_)
-      range_->add(k, frame.truth.world_T_robot,
-                  k > 0 ? std::optional<PlanarPose>(simulator_.path().world_T_robot(k - 1)) : std::nullopt,
-                  frame.observation);
+      range_->add(k, k > 0 ? std::optional<PlanarPose>(simulator_.path().world_T_robot(k - 1)) : std::nullopt, frame);
     const int seen = static_cast<int>(frame.observation.planes.size());
     summary_.observations += seen;
     summary_.visible_min = std::min(summary_.visible_min, seen);
@@ -286,6 +284,7 @@ nlohmann::json PlanarSimulationSource::describe_run() const {
 std::vector<std::string> PlanarSimulationSource::frame_columns() const {
   std::vector<std::string> columns;
   if (extraction_) columns = {"t_extract_ms", "extracted_planes"};
+  if (range_ && range_->extracts()) columns = RangeSensorFrames::columns();
   if (truth_sensor_) columns.insert(columns.end(), {"truth_walls_in_view", "truth_wall_angle_deg"});
   return columns;
 }
@@ -296,6 +295,7 @@ std::vector<CsvField> PlanarSimulationSource::measured() const {
     out.emplace_back(extraction_->last_ms());
     out.emplace_back(static_cast<long long>(extraction_->last_score().planes));
   }
+  if (range_ && range_->extracts()) out = range_->measured();
   if (truth_sensor_) {
     out.emplace_back(static_cast<long long>(truth_walls_));
     out.emplace_back(truth_angle_deg_);

@@ -167,6 +167,7 @@ std::vector<ExtractedWall> extract_walls(const LaserScan& scan, const WallExtrac
     ExtractedWall w;
     w.points = static_cast<int>(piece.returns.size());
     w.rms = piece.rms;
+    for (const Return& r : piece.returns) w.rays.push_back(r.ray);
     const bool lo_end = real_end(scan, piece, lo, piece.first_ray() - 1, o);
     const bool hi_end = real_end(scan, piece, hi, piece.last_ray() + 1, o);
     // Rays turn from +x towards +z, so the scanner is on the left of lo -> hi: the front side of

@@ -70,13 +70,14 @@ void describe(OptionsOf<WallExtractionOptions> auto& o, auto& f) {
 // One extracted wall: the plane in the robot frame (front towards the scanner, PlaneObject's
 // order of ends), whether each end is the wall's real end (false: cut by an occluder, the
 // scan's edge or its maximum range — as PlaneTruth marks ends cut by the simulated frustum),
-// and the fit.
+// the fit and the rays it came from.
 struct ExtractedWall {
   PlaneObject plane;
   bool a_is_wall_end = true;
   bool b_is_wall_end = true;
   int points = 0;
   double rms = 0;
+  std::vector<int> rays;  // the scan indices of its returns, in bearing order (for scoring against truth)
 };
 
 // The walls of `scan`, in increasing bearing of their first return; `iteration` is stamped on

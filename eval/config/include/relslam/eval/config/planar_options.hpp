@@ -48,8 +48,10 @@ void describe(OptionsOf<PlanarNoiseSettings> auto& n, auto& f) {
 
 // The sensor's output kind: plane observations (Chapter 4) or points on the walls, from which
 // relative_plane.extractor finds the planes (Chapter 5; thesis 5.1, 3.5); or a range sensor ray
-// casting the walls (sim/laser_sensor.hpp, sim/depth_camera.hpp), whose frames carry the plane
-// sensor's planes at the same pose beside the raw scan or image.
+// casting the walls (sim/laser_sensor.hpp, sim/depth_camera.hpp), whose frames carry the raw
+// scan or image beside planes: the depth camera's and, with laser_planes "sensor", the laser's
+// are the plane sensor's at the same pose; by default the laser's are the walls extracted from
+// its scan.
 enum class PlanarSensorKind { Planes, Points, Laser, Depth };
 inline constexpr PlanarSensorKind kPlanarSensorKinds[] = {PlanarSensorKind::Planes, PlanarSensorKind::Points,
                                                          PlanarSensorKind::Laser, PlanarSensorKind::Depth};
@@ -61,6 +63,16 @@ inline std::string_view to_string(PlanarSensorKind kind) {
     case PlanarSensorKind::Planes: break;
   }
   return "planes";
+}
+
+// The planes a simulated laser's frames carry (planar.sensor "laser"): the walls extracted from
+// the simulated scans by libslam's extractor (relslam/scan/wall_extraction.hpp, keys
+// laser.walls.*, as for recorded logs) [C: the laser pipeline measured against the truth], or
+// the plane sensor's planes at the same pose (the thesis's simulated input, Chapter 4).
+enum class LaserPlanes { Extracted, Sensor };
+inline constexpr LaserPlanes kLaserPlanes[] = {LaserPlanes::Extracted, LaserPlanes::Sensor};
+inline std::string_view to_string(LaserPlanes planes) {
+  return planes == LaserPlanes::Sensor ? "sensor" : "extracted";
 }
 
 // planar.generate: a map drawn by the seeded generator (sim/map_generator.hpp) instead of a map
@@ -102,6 +114,7 @@ struct PlanarOptions {
   PlanarSensorKind sensor = PlanarSensorKind::Planes;  // [T Chapter 4]
   PlanarNoiseSettings noise;
   sim::LaserSensorOptions laser;  // planar.sensor "laser"
+  LaserPlanes laser_planes = LaserPlanes::Extracted;
   sim::DepthCameraOptions depth;  // planar.sensor "depth"
   // The laser's and the depth camera's frames carry odometry with this noise [C].
   sim::OdometryNoiseOptions odometry;
@@ -137,6 +150,9 @@ void describe(OptionsOf<PlanarOptions> auto& o, auto& f) {
            kPlanarSensorKinds);
   f.nested("noise", o.noise);
   f.nested("laser", o.laser);
+  f.choice("laser_planes", o.laser_planes,
+           "laser sensor: the walls extracted from its scans (laser.walls.*) or the plane sensor's planes",
+           kLaserPlanes);
   f.nested("depth", o.depth);
   f.nested("odometry", o.odometry);
   f.field("depth_record_every", o.depth_record_every, "depth sensor: simulate writes every n-th frame to depth.rawlog",
