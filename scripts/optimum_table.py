@@ -85,6 +85,9 @@ def number(row, key):
 def scenario_table(folder):
     parts = {name: runs(folder / name) for name in ("base", "adaptive", "relaxed", "ekf", "motion")}
     seeds = sorted(parts["base"])
+    if not seeds:
+        print(f"\n### {folder.name}: no finished base run yet\n")
+        return
     print(f"\n### {folder.name} (seeds {seeds[0]}–{seeds[-1]})\n")
     for seed in seeds:  # every estimator saw the same frames
         digests = {parts[p][seed][a]["input_digest"] for p, a, _ in ESTIMATORS if seed in parts[p] and a in parts[p][seed]}
@@ -122,8 +125,8 @@ def scenario_table(folder):
     print(f"\nbatch optimum solve time per run: {interval(solve)} s "
           f"(max {max(solve):.3g} s; its ms/iteration above is storing the frames only)\n")
     print("| seed | relaxed / EKF landmark error | relaxed / EKF ATE | relaxed / optimum landmark error "
-          "| relaxed / optimum aligned | EKF status |")
-    print("|---|---|---|---|---|---|")
+          "| relaxed / optimum aligned | EKF / optimum + motion model | EKF / optimum aligned | EKF status |")
+    print("|---|---|---|---|---|---|---|---|")
     for s in seeds:
         if s not in parts["relaxed"]:
             continue
@@ -132,10 +135,16 @@ def scenario_table(folder):
         if ekf and ekf["status"] != "ok":
             ekf = None  # an unfinished EKF is no comparison
         e = number(relaxed, "final_mean_landmark_error")
+        motion = parts["motion"].get(s, {}).get("batch_optimum")
+        ekf_floor = "– | –"
+        if ekf:
+            over_motion = (f"{number(ekf, 'final_mean_landmark_error') / number(motion, 'final_mean_landmark_error'):.3g}"
+                           if motion and motion["status"] == "ok" else "–")
+            ekf_floor = f"{over_motion} | {aligned_error(ekf['folder'], 'ekf6d') / optimum_aligned[s]:.3g}"
         over_ekf = (f"{e / number(ekf, 'final_mean_landmark_error'):.3g} | "
                     f"{number(relaxed, 'ate_rmse') / number(ekf, 'ate_rmse'):.3g}") if ekf else "– | –"
         print(f"| {s} | {over_ekf} | {e / number(optimum[s], 'final_mean_landmark_error'):.3g} | "
-              f"{aligned_error(relaxed['folder'], 'relative_point') / optimum_aligned[s]:.3g} | "
+              f"{aligned_error(relaxed['folder'], 'relative_point') / optimum_aligned[s]:.3g} | {ekf_floor} | "
               f"{status} |")
 
 def main():
