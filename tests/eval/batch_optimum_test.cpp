@@ -109,9 +109,9 @@ TEST(BatchOptimum, IsAtOrBelowEveryEstimatorOverSeedsOnNoisyData) {
     }
     // The EKF's own floor: the optimum given its constant-position motion model too.
     test::ScratchDir motion_dir;
-    const ExperimentResult motion =
-        simulate_and_run(short_figure_eight(300, 0.1, seed, R"(["batch_optimum"])", {"batch_optimum.motion_model=ekf6d"}),
-                         motion_dir.path(), false);
+    const ExperimentResult motion = simulate_and_run(
+        short_figure_eight(300, 0.1, seed, R"(["batch_optimum"])", {"batch_optimum.motion_model=ekf6d"}),
+        motion_dir.path(), false);
     ASSERT_EQ(row_of(motion, "batch_optimum").status.text(), "ok");
     const auto with_motion = errors_by_truth(motion_dir.path() / "batch_optimum/landmarks.csv");
     const auto ekf = errors_by_truth(dir.path() / "ekf6d/landmarks.csv");

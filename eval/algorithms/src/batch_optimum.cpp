@@ -61,7 +61,8 @@ Rigid3 perturbed(const Rigid3& pose, const BatchOptimumOptions& o, std::uint64_t
 }
 
 // The observations' noise model: the sensor's, or the EKF's sensor model (range, yaw, pitch).
-ObservationNoise noise_of(const BatchOptimumOptions& options, const Ekf6dOptions& ekf, const RangeBearingSensor& sensor) {
+ObservationNoise noise_of(const BatchOptimumOptions& options, const Ekf6dOptions& ekf,
+                          const RangeBearingSensor& sensor) {
   if (options.noise_model == OptimumModel::Own) return observation_noise(sensor);
   return {true, ekf.std_range, ekf.std_yaw_rad, ekf.std_pitch_rad};
 }
