@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Every estimator against the batch optimum (docs/batch_optimum.md): S-EKF-F8 seeds 1-10 and
+# Every estimator against the batch optimum (docs/algorithms/batch-optimum.md): S-EKF-F8 seeds 1-10 and
 # S-F8-2L seeds 1-5, Relative Point (the scenario's thesis preset, adaptive, adaptive with the
 # global relaxation), MRPT's 6D EKF and the batch optimum, then the table (scripts/optimum_table.py).
 #
 #   scripts/optimum_sweep.sh OUT [RELSLAM] [JOBS]
 #
-# Each scenario is four relslam sweeps over the same seeds, so the slow EKF and the optimum run
+# Each scenario is five relslam sweeps over the same seeds, so the slow EKF and the optimum run
 # once per seed: base/ (Relative Point thesis, the optimum), adaptive/ and relaxed/ (Relative
-# Point alone), ekf/ (the EKF alone); the table checks that all saw the same frames. S-F8-2L runs with S-EKF-F8's EKF
+# Point alone), motion/ (the optimum with the EKF's constant-position motion model, the EKF's
+# floor), ekf/ (the EKF alone); the table checks that all saw the same frames. S-F8-2L runs with S-EKF-F8's EKF
 # settings (prev_min 8 as there). A sweep with a failed or stopped run still goes on (exit 1).
 set -uo pipefail
 out=${1:?usage: scripts/optimum_sweep.sh OUT [RELSLAM] [JOBS]}
@@ -35,6 +36,8 @@ for spec in "${specs[@]}"; do
   sweep "$scenario" "$name" "$seeds" adaptive "${ekf[@]}" --set relative_point.preset=adaptive \
     --set 'algorithms=["relative_point"]'
   sweep "$scenario" "$name" "$seeds" relaxed "${ekf[@]}" "${relaxed[@]}" --set 'algorithms=["relative_point"]'
+  sweep "$scenario" "$name" "$seeds" motion "${ekf[@]}" --set batch_optimum.motion_model=ekf6d \
+    --set 'algorithms=["batch_optimum"]'
 done
 for spec in "${specs[@]}"; do
   read -r scenario name seeds <<<"$spec"

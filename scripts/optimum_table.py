@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Tables of every estimator against the batch optimum from scripts/optimum_sweep.sh's folders.
 
-For each scenario folder OUT/<scenario>/ the sweep left four relslam sweeps over the same seeds
+For each scenario folder OUT/<scenario>/ the sweep left five relslam sweeps over the same seeds
 (the same frames: their input digests are checked): base/ (Relative Point with the scenario's
-preset, the batch optimum), adaptive/ and relaxed/ (Relative Point alone), ekf/ (MRPT's 6D EKF;
-the seeds it finished, when the sweep was cut short). This
+preset, the batch optimum), adaptive/ and relaxed/ (Relative Point alone), motion/ (the optimum
+with the EKF's motion model), ekf/ (MRPT's 6D EKF). Only finished runs enter the statistics: an
+interrupted, stopped, failed or missing run is named in "not ok (left out)", never averaged. This
 prints per estimator the final mean landmark error and the ATE with their ratios to the optimum
 (mean and 95 % Student-t interval over the seeds), the mean time per iteration, the optimum's
 solve time, and per seed relaxed Relative Point over the EKF and over the optimum. "aligned" is
@@ -27,7 +28,8 @@ T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8:
        11: 2.201, 12: 2.179, 13: 2.160, 14: 2.145, 15: 2.131, 19: 2.093, 29: 2.045}
 ESTIMATORS = [("base", "relative_point", "Relative (scenario preset)"), ("adaptive", "relative_point", "Relative adaptive"),
               ("relaxed", "relative_point", "Relative relaxed"), ("ekf", "ekf6d", "EKF (MRPT 6D)"),
-              ("base", "batch_optimum", "batch optimum")]
+              ("base", "batch_optimum", "batch optimum"),
+              ("motion", "batch_optimum", "batch optimum + EKF's motion model")]
 
 
 def interval(values):
@@ -81,23 +83,31 @@ def number(row, key):
 
 
 def scenario_table(folder):
-    parts = {name: runs(folder / name) for name in ("base", "adaptive", "relaxed", "ekf")}
+    parts = {name: runs(folder / name) for name in ("base", "adaptive", "relaxed", "ekf", "motion")}
     seeds = sorted(parts["base"])
+    if not seeds:
+        print(f"\n### {folder.name}: no finished base run yet\n")
+        return
     print(f"\n### {folder.name} (seeds {seeds[0]}–{seeds[-1]})\n")
     for seed in seeds:  # every estimator saw the same frames
         digests = {parts[p][seed][a]["input_digest"] for p, a, _ in ESTIMATORS if seed in parts[p] and a in parts[p][seed]}
         if len(digests) != 1:
             sys.exit(f"{folder}: seed {seed}: the estimators saw different frames ({digests})")
     optimum = {s: parts["base"][s]["batch_optimum"] for s in seeds}
-    print("| estimator | not ok | landmark error | / optimum | aligned | / optimum | ATE | / optimum | ATE aligned "
+    print("| estimator | seeds | not ok (left out) | landmark error | / optimum | aligned | / optimum | ATE | / optimum | ATE aligned "
           "| / optimum | ms/iteration (mean) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     optimum_aligned = {s: aligned_error(r["folder"], "batch_optimum") for s, r in optimum.items()}
     for part, algorithm, label in ESTIMATORS:
-        rows = {s: parts[part][s][algorithm] for s in seeds if s in parts[part] and algorithm in parts[part][s]}
+        every = {s: parts[part][s][algorithm] for s in seeds if s in parts[part] and algorithm in parts[part][s]}
+        # Only finished runs enter the statistics: an interrupted, stopped or failed run is named
+        # in "not ok" and left out, as is a seed whose optimum did not finish.
+        bad = [f"{s} ({r['status']})" for s, r in every.items() if r["status"] != "ok"]
+        bad += [f"{s} (not run)" for s in seeds if s not in every]
+        rows = {s: r for s, r in every.items() if r["status"] == "ok" and optimum[s]["status"] == "ok"}
         if not rows:
+            print(f"| {label} | 0 | {', '.join(bad) or '–'} | – | – | – | – | – | – | – | – | – |")
             continue
-        bad = [f"{s} ({r['status']})" for s, r in rows.items() if r["status"] != "ok"]
         err = [number(r, "final_mean_landmark_error") for r in rows.values()]
         ate = [number(r, "ate_rmse") for r in rows.values()]
         err_ratio = [number(r, "final_mean_landmark_error") / number(optimum[s], "final_mean_landmark_error")
@@ -108,25 +118,34 @@ def scenario_table(folder):
         ms = [number(r, "runtime_mean_ms") for r in rows.values()]
         aligned = {s: aligned_error(r["folder"], algorithm) for s, r in rows.items()}
         aligned_ratio = [a / optimum_aligned[s] for s, a in aligned.items()]
-        print(f"| {label} | {', '.join(bad) or '–'} | {interval(err)} | {interval(err_ratio)} | "
+        print(f"| {label} | {len(rows)} | {', '.join(bad) or '–'} | {interval(err)} | {interval(err_ratio)} | "
               f"{interval(list(aligned.values()))} | {interval(aligned_ratio)} | {interval(ate)} | "
               f"{interval(ate_ratio)} | {interval(ate_aligned)} | {interval(ate_aligned_ratio)} | {interval(ms)} |")
-    solve = [number(r, "solve_s") for r in optimum.values()]
+    solve = [number(r, "solve_s") for r in optimum.values() if r["status"] == "ok"]
     print(f"\nbatch optimum solve time per run: {interval(solve)} s "
           f"(max {max(solve):.3g} s; its ms/iteration above is storing the frames only)\n")
     print("| seed | relaxed / EKF landmark error | relaxed / EKF ATE | relaxed / optimum landmark error "
-          "| relaxed / optimum aligned | EKF status |")
-    print("|---|---|---|---|---|---|")
+          "| relaxed / optimum aligned | EKF / optimum + motion model | EKF / optimum aligned | EKF status |")
+    print("|---|---|---|---|---|---|---|---|")
     for s in seeds:
         if s not in parts["relaxed"]:
             continue
         relaxed, ekf = parts["relaxed"][s]["relative_point"], parts["ekf"].get(s, {}).get("ekf6d")
+        status = ekf["status"] if ekf else "not run"
+        if ekf and ekf["status"] != "ok":
+            ekf = None  # an unfinished EKF is no comparison
         e = number(relaxed, "final_mean_landmark_error")
+        motion = parts["motion"].get(s, {}).get("batch_optimum")
+        ekf_floor = "– | –"
+        if ekf:
+            over_motion = (f"{number(ekf, 'final_mean_landmark_error') / number(motion, 'final_mean_landmark_error'):.3g}"
+                           if motion and motion["status"] == "ok" else "–")
+            ekf_floor = f"{over_motion} | {aligned_error(ekf['folder'], 'ekf6d') / optimum_aligned[s]:.3g}"
         over_ekf = (f"{e / number(ekf, 'final_mean_landmark_error'):.3g} | "
                     f"{number(relaxed, 'ate_rmse') / number(ekf, 'ate_rmse'):.3g}") if ekf else "– | –"
         print(f"| {s} | {over_ekf} | {e / number(optimum[s], 'final_mean_landmark_error'):.3g} | "
-              f"{aligned_error(relaxed['folder'], 'relative_point') / optimum_aligned[s]:.3g} | "
-              f"{ekf['status'] if ekf else 'not run'} |")
+              f"{aligned_error(relaxed['folder'], 'relative_point') / optimum_aligned[s]:.3g} | {ekf_floor} | "
+              f"{status} |")
 
 def main():
     if len(sys.argv) != 2:

@@ -1,6 +1,7 @@
-// The batch optimum (docs/batch_optimum.md) as the harness runs it: exact recovery on noise-free
-// data, at or below every online estimator on noisy data (least squares with the simulator's
-// noise model), the same minimum from either start, bit-identical reruns, and the ratio rows of
+// The batch optimum (docs/algorithms/batch-optimum.md) as the harness runs it: exact recovery on
+// noise-free data (with the sensor's or the EKF's sensor model), at or below every online
+// estimator on noisy data (least squares with the simulator's noise model; the EKF also against
+// the optimum given its motion model), the same minimum from either start, bit-identical reruns, and the ratio rows of
 // every algorithm over it in summary.csv.
 #include "test_support.hpp"
 
@@ -61,6 +62,18 @@ TEST(BatchOptimum, RecoversTheTruthFromAPerturbedStartOnNoiseFreeData) {
   EXPECT_EQ(test::read_csv(dir.path() / "batch_optimum/iterations.csv").rows.size(), 150u);
 }
 
+TEST(BatchOptimum, RecoversTheTruthWithTheEkfsSensorModelOnNoiseFreeData) {
+  // Range, yaw and pitch whitened with the EKF's deviations: any positive weights put the
+  // minimum of noise-free data on the truth.
+  test::ScratchDir dir;
+  const ExperimentResult r = simulate_and_run(
+      short_figure_eight(150, 0, 1, "[\"batch_optimum\"]", {"batch_optimum.noise_model=ekf6d"}), dir.path(), false);
+  const SummaryRow& optimum = row_of(r, "batch_optimum");
+  ASSERT_EQ(optimum.status.text(), "ok");
+  EXPECT_LT(optimum.final_mean_landmark_error, 1e-6);
+  EXPECT_LT(optimum.trajectory.ate_rmse, 1e-6);
+}
+
 // Each mapped landmark's error by its true id (rows without an error are off the map).
 std::map<std::string, double> errors_by_truth(const std::filesystem::path& landmarks) {
   const test::CsvTable table = test::read_csv(landmarks);
@@ -75,7 +88,7 @@ TEST(BatchOptimum, IsAtOrBelowEveryEstimatorOverSeedsOnNoisyData) {
   // optimum's error on those same landmarks (Relative Point maps only well-seen points; the
   // optimum every point seen, once seen ones included).
   std::map<std::string, double> error, floor, ate;
-  double optimum_ate = 0, optimum_error = 0;
+  double optimum_ate = 0, optimum_error = 0, motion_floor = 0, motion_ate = 0;
   for (int seed = 1; seed <= 3; ++seed) {
     test::ScratchDir dir;
     const ExperimentResult r = simulate_and_run(
@@ -94,6 +107,18 @@ TEST(BatchOptimum, IsAtOrBelowEveryEstimatorOverSeedsOnNoisyData) {
       floor[name] += sum_floor / static_cast<double>(mine.size()) / 3;
       ate[name] += row_of(r, name).trajectory.ate_rmse / 3;
     }
+    // The EKF's own floor: the optimum given its constant-position motion model too.
+    test::ScratchDir motion_dir;
+    const ExperimentResult motion = simulate_and_run(
+        short_figure_eight(300, 0.1, seed, R"(["batch_optimum"])", {"batch_optimum.motion_model=ekf6d"}),
+        motion_dir.path(), false);
+    ASSERT_EQ(row_of(motion, "batch_optimum").status.text(), "ok");
+    const auto with_motion = errors_by_truth(motion_dir.path() / "batch_optimum/landmarks.csv");
+    const auto ekf = errors_by_truth(dir.path() / "ekf6d/landmarks.csv");
+    double sum_motion = 0;
+    for (const auto& [truth, e] : ekf) sum_motion += with_motion.at(truth);
+    motion_floor += sum_motion / static_cast<double>(ekf.size()) / 3;
+    motion_ate += row_of(motion, "batch_optimum").trajectory.ate_rmse / 3;
     optimum_ate += row_of(r, "batch_optimum").trajectory.ate_rmse / 3;
     optimum_error += row_of(r, "batch_optimum").final_mean_landmark_error / 3;
     // summary.csv: each other algorithm over the optimum.
@@ -111,6 +136,8 @@ TEST(BatchOptimum, IsAtOrBelowEveryEstimatorOverSeedsOnNoisyData) {
     EXPECT_LE(floor[name], error[name]) << name;
     EXPECT_LE(optimum_ate, ate[name]) << name;
   }
+  EXPECT_LE(motion_floor, error["ekf6d"]);
+  EXPECT_LE(motion_ate, ate["ekf6d"]);
 }
 
 TEST(BatchOptimum, ReachesTheSameMinimumFromTheRelativePointStartAndRerunsBitIdentical) {

@@ -60,11 +60,26 @@ Rigid3 perturbed(const Rigid3& pose, const BatchOptimumOptions& o, std::uint64_t
   return out;
 }
 
+// The observations' noise model: the sensor's, or the EKF's sensor model (range, yaw, pitch).
+ObservationNoise noise_of(const BatchOptimumOptions& options, const Ekf6dOptions& ekf,
+                          const RangeBearingSensor& sensor) {
+  if (options.noise_model == OptimumModel::Own) return observation_noise(sensor);
+  return {true, ekf.std_range, ekf.std_yaw_rad, ekf.std_pitch_rad};
+}
+
+// The EKF's constant-position model as a step measurement: the pose stays, with stds_q's
+// x, y, z (their mean: one deviation per axis) and its quaternion's vector part, whose
+// deviation is half the angle's per axis (small angles) [C].
+StepMeasurement constant_position(const Ekf6dOptions& ekf) {
+  const std::vector<double>& q = ekf.stds_q;
+  return {Rigid3::identity(), (q[0] + q[1] + q[2]) / 3.0, 2.0 * (q[4] + q[5] + q[6]) / 3.0};
+}
+
 class BatchOptimum final : public Algorithm {
  public:
-  BatchOptimum(const BatchOptimumOptions& options, const point::PointSlamOptions& relative_point,
-               const RangeBearingSensor& sensor, std::uint64_t seed)
-      : options_(options), noise_(observation_noise(sensor)), seed_(seed) {
+  BatchOptimum(const BatchOptimumOptions& options, const Ekf6dOptions& ekf,
+               const point::PointSlamOptions& relative_point, const RangeBearingSensor& sensor, std::uint64_t seed)
+      : options_(options), noise_(noise_of(options, ekf, sensor)), motion_(constant_position(ekf)), seed_(seed) {
     if (options.start == OptimumStart::RelativePoint)
       mapper_.emplace(relative_point, relax::solve_relaxation);
   }
@@ -74,7 +89,7 @@ class BatchOptimum final : public Algorithm {
   void step(const ObservationFrame& observation, const TruthFrame& truth) override {
     const int k = static_cast<int>(problem_.world_T_robot.size());
     problem_.world_T_robot.push_back(start_pose(observation, truth, k));
-    problem_.odometry.push_back(observation.odometry);
+    problem_.steps.push_back(step_measurement(observation, k));
     assignment_.assign(observation.points.size(), -1);
     changed_.clear();
     // Known association: the landmark's id is the truth's (a rawlog's own ids), -1 unknown.
@@ -151,6 +166,16 @@ class BatchOptimum final : public Algorithm {
     return perturbed(truth.world_T_robot, options_, seed_, k);
   }
 
+  // Between the previous frame and this one: its odometry when used, else the EKF's motion model
+  // when asked for, else nothing.
+  std::optional<StepMeasurement> step_measurement(const ObservationFrame& observation, int k) const {
+    if (k == 0) return std::nullopt;
+    if (options_.use_odometry && observation.odometry)
+      return StepMeasurement{*observation.odometry, options_.odometry_std_xyz, options_.odometry_std_angle_rad};
+    if (options_.motion_model == OptimumModel::Ekf6d) return motion_;
+    return std::nullopt;
+  }
+
   // Relative Point has no pose before its map frame (a sparse start moves it later): those steps
   // start at its first pose, and every landmark again where its first sighting puts it.
   void settle_relative_point_start() {
@@ -168,6 +193,7 @@ class BatchOptimum final : public Algorithm {
   std::string name_ = "batch_optimum";
   BatchOptimumOptions options_;
   ObservationNoise noise_;
+  StepMeasurement motion_;  // motion_model ekf6d
   std::uint64_t seed_;
   std::optional<point::RltMapper> mapper_;  // start relative_point only
   MapFrameGauge relative_gauge_;
@@ -181,10 +207,10 @@ class BatchOptimum final : public Algorithm {
 
 }  // namespace
 
-std::unique_ptr<Algorithm> make_batch_optimum(const BatchOptimumOptions& options,
+std::unique_ptr<Algorithm> make_batch_optimum(const BatchOptimumOptions& options, const Ekf6dOptions& ekf,
                                               const point::PointSlamOptions& relative_point,
                                               const RangeBearingSensor& sensor, std::uint64_t seed) {
-  return std::make_unique<BatchOptimum>(options, relative_point, sensor, seed);
+  return std::make_unique<BatchOptimum>(options, ekf, relative_point, sensor, seed);
 }
 
 }  // namespace relslam::eval

@@ -58,7 +58,7 @@ struct SphericalResidual {
   }
 };
 
-// previous_T_current measured by odometry against the two poses' own: translation per axis and
+// previous_T_current measured (odometry, a motion model) against the two poses' own: translation per axis and
 // the rotation's angle-axis (twice the error quaternion's vector part, small angles).
 struct OdometryResidual {
   Eigen::Quaterniond q_measured;
@@ -102,20 +102,20 @@ ceres::CostFunction* observation_cost(const OptimumObservation& o, const Observa
       new CartesianResidual{o.p_robot, 1.0 / noise.std_range});
 }
 
-// The residual blocks of every observation and odometry measurement.
-void add_residuals(ceres::Problem& ceres_problem, OptimumProblem& problem,
-                   std::vector<PoseBlock>& poses, const ObservationNoise& noise, const BatchOptimumOptions& options) {
+// The residual blocks of every observation and step measurement.
+void add_residuals(ceres::Problem& ceres_problem, OptimumProblem& problem, std::vector<PoseBlock>& poses,
+                   const ObservationNoise& noise) {
   for (const OptimumObservation& o : problem.observations) {
     PoseBlock& pose = poses[o.pose];
     double* landmark = problem.landmarks[o.landmark].data();
     ceres_problem.AddResidualBlock(observation_cost(o, noise), nullptr, pose.q.data(), pose.t.data(), landmark);
   }
-  if (!options.use_odometry) return;
-  for (std::size_t k = 1; k < problem.odometry.size() && k < poses.size(); ++k) {
-    if (!problem.odometry[k]) continue;
+  for (std::size_t k = 1; k < problem.steps.size() && k < poses.size(); ++k) {
+    if (!problem.steps[k]) continue;
+    const StepMeasurement& m = *problem.steps[k];
     auto* cost = new ceres::AutoDiffCostFunction<OdometryResidual, 6, 4, 3, 4, 3>(
-        new OdometryResidual{problem.odometry[k]->quaternion().normalized(), problem.odometry[k]->translation,
-                             1.0 / options.odometry_std_xyz, 1.0 / options.odometry_std_angle_rad});
+        new OdometryResidual{m.previous_T_current.quaternion().normalized(), m.previous_T_current.translation,
+                             1.0 / m.std_xyz, 1.0 / m.std_angle_rad});
     ceres_problem.AddResidualBlock(cost, nullptr, poses[k - 1].q.data(), poses[k - 1].t.data(), poses[k].q.data(),
                                    poses[k].t.data());
   }
@@ -141,7 +141,7 @@ OptimumReport solve_optimum(OptimumProblem& problem, const ObservationNoise& noi
   if (problem.world_T_robot.empty()) return report;
   std::vector<PoseBlock> poses = pose_blocks(problem.world_T_robot);
   ceres::Problem ceres_problem;
-  add_residuals(ceres_problem, problem, poses, noise, options);
+  add_residuals(ceres_problem, problem, poses, noise);
   for (std::size_t k = 0; k < poses.size(); ++k) {
     if (!ceres_problem.HasParameterBlock(poses[k].q.data())) continue;  // a frame without observations
     ceres_problem.SetManifold(poses[k].q.data(), new ceres::EigenQuaternionManifold);

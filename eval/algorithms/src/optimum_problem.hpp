@@ -21,12 +21,20 @@ struct OptimumObservation {
   Eigen::Vector3d p_robot;
 };
 
+// previous_T_current between poses k-1 and k with its standard deviations per step: a frame's
+// odometry, or the EKF's constant-position motion model (the identity).
+struct StepMeasurement {
+  Rigid3 previous_T_current;
+  double std_xyz = 1;        // units, per axis
+  double std_angle_rad = 1;  // per axis
+};
+
 struct OptimumProblem {
   std::vector<Rigid3> world_T_robot;       // the start, solved in place; [0] held
   std::vector<Eigen::Vector3d> landmarks;  // the start, solved in place
   std::vector<OptimumObservation> observations;
-  // odometry[k]: previous_T_current measured between poses k-1 and k (k >= 1), when there is one.
-  std::vector<std::optional<Rigid3>> odometry;
+  // steps[k]: between poses k-1 and k (k >= 1), when there is one.
+  std::vector<std::optional<StepMeasurement>> steps;
 };
 
 struct OptimumReport {

@@ -50,8 +50,8 @@ const std::vector<AlgorithmEntry>& algorithm_registry() {
                   "The accuracy floor (beyond the thesis): nonlinear least squares over every pose and landmark "
                   "with the sensor's noise model and known ids, solved once after the last frame",
                   [](const AlgorithmContext& c) {
-                    return make_batch_optimum(c.scenario.batch_optimum, c.scenario.relative_point, c.sensor,
-                                              c.scenario.seed);
+                    return make_batch_optimum(c.scenario.batch_optimum, c.scenario.ekf6d, c.scenario.relative_point,
+                                              c.sensor, c.scenario.seed);
                   }),
       plane_entry("relative_plane",
                   "Relative Plane: relative maps of wall groups, no odometry, pose from scratch each frame (thesis 4)",

@@ -23,6 +23,16 @@ inline std::string_view to_string(OptimumStart start) {
   return start == OptimumStart::Truth ? "truth" : "relative_point";
 }
 
+// Where a piece of the model comes from: the run's own (the sensor's noise; no motion model), or
+// the EKF's settings (ekf6d.*), to give the floor exactly what the EKF is given.
+enum class OptimumModel {
+  Own,    // the sensor's stated noise; no motion model (the thesis's comparison) [C]
+  Ekf6d,  // the EKF's: its sensor model (ekf6d.std_range, std_yaw_deg, std_pitch_deg), or its
+          // constant-position motion model (ekf6d.stds_q) between frames without odometry
+};
+inline constexpr OptimumModel kOptimumModels[] = {OptimumModel::Own, OptimumModel::Ekf6d};
+inline std::string_view to_string(OptimumModel model) { return model == OptimumModel::Own ? "own" : "ekf6d"; }
+
 struct BatchOptimumOptions {
   OptimumStart start = OptimumStart::Truth;
   // The perturbation of every true pose but the first (the gauge), per axis: large against the
@@ -36,6 +46,11 @@ struct BatchOptimumOptions {
   bool use_odometry = false;
   double odometry_std_xyz = 0.05;                                  // units per step [C]
   double odometry_std_angle_rad = 0.5 * std::numbers::pi / 180.0;  // read and written in degrees [C]
+  // The observations' noise model: the sensor's (own) or the EKF's sensor model (ekf6d) [C].
+  OptimumModel noise_model = OptimumModel::Own;
+  // A motion model between consecutive frames without odometry: none (own) or the EKF's
+  // constant-position model (ekf6d: the pose stays, with ekf6d.stds_q per step) [C].
+  OptimumModel motion_model = OptimumModel::Own;
   // Levenberg-Marquardt iterations at most; a consistent start converges in a handful [C].
   int max_iterations = 100;
 };
@@ -52,6 +67,12 @@ void describe(OptionsOf<BatchOptimumOptions> auto& o, auto& f) {
   f.field("odometry_std_xyz", o.odometry_std_xyz, "odometry std. deviation per step, units", above(0.0));
   f.degrees("odometry_std_angle_deg", o.odometry_std_angle_rad, "odometry rotation std. deviation per step",
             above(0.0));
+  f.choice("noise_model", o.noise_model,
+           "observation noise: own (the sensor's) or ekf6d (the EKF's std_range, std_yaw_deg, std_pitch_deg)",
+           kOptimumModels);
+  f.choice("motion_model", o.motion_model,
+           "between frames without odometry: own (none) or ekf6d (the EKF's constant position, stds_q)",
+           kOptimumModels);
   f.field("max_iterations", o.max_iterations, "Levenberg-Marquardt iterations at most", at_least(1));
 }
 
