@@ -1,6 +1,7 @@
 #include "relslam/eval/io/rawlog.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/io/mrpt_exception_message.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
 #include "relslam/sim/random.hpp"
 #include "test_support.hpp"
@@ -93,6 +94,15 @@ TEST_P(RawlogRoundTrip, PointsIdsAndTimesComeBackToFloatPrecision) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PlainAndGzip, RawlogRoundTrip, ::testing::Bool());
+
+// MRPT's banner, "Message:" line and call stack come down to the message; without a message
+// (none, or an empty one) the first line stands in, so no failure is reported without a reason.
+TEST(MrptExceptionMessage, IsTheMessageLineElseTheFirstLine) {
+  EXPECT_EQ(mrpt_exception_message("==== MRPT exception ====\nMessage:  bad matrix\nCall stack:\n at f()"),
+            "bad matrix");
+  EXPECT_EQ(mrpt_exception_message("plain text\nsecond line"), "plain text");
+  EXPECT_EQ(mrpt_exception_message("==== MRPT exception ====\nMessage:   \nCall stack:"), "==== MRPT exception ====");
+}
 
 TEST(Rawlog, UnknownAssociationWritesMinusOne) {
   test::ScratchDir dir;

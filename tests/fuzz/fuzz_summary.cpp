@@ -53,7 +53,7 @@ std::vector<Number> numbers_of(const SummaryRow& r) {
 // The text of `column` (either spelling) in row `row`; empty when the file has no such column.
 std::string field(const relslam::eval::CsvContents& table, std::size_t row, const char* column) {
   int i = table.column(column);
-  if (i < 0) i = table.column(relslam::eval::summary_column(column, true));
+  if (i < 0) i = table.column(relslam::eval::summary_column(column, relslam::eval::ScenarioHalf::Planes));
   return i < 0 ? std::string() : table.rows[row][static_cast<std::size_t>(i)];
 }
 

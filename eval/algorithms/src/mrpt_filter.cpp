@@ -1,5 +1,7 @@
 #include "mrpt_filter.hpp"
 
+#include "relslam/eval/io/mrpt_exception_message.hpp"
+
 #include <stdexcept>
 
 namespace relslam::eval {
@@ -24,14 +26,6 @@ const Columns<LandmarkRow> kLandmarkColumns = {
 
 }  // namespace
 
-std::string mrpt_message(const std::string& what) {
-  const std::size_t start = what.find("Message:");
-  std::string line = start == std::string::npos ? what : what.substr(start + 8);
-  line = line.substr(0, line.find('\n'));
-  const std::size_t first = line.find_first_not_of(' ');
-  return first == std::string::npos ? "" : line.substr(first);
-}
-
 std::vector<int> unknown_association_slots(const std::map<std::size_t, std::size_t>& associations, std::size_t rows,
                                            std::size_t before) {
   std::vector<int> out(rows, -1);
@@ -49,7 +43,7 @@ void MrptFilter::step(const ObservationFrame& observation, const TruthFrame& tru
   try {
     process(observation, truth);
   } catch (const std::exception& e) {
-    throw std::runtime_error(mrpt_message(e.what()));
+    throw std::runtime_error(mrpt_exception_message(e.what()));
   }
   // Only noted here: the ids are read in read_out(), outside the timed region, while the
   // recorder still holds this frame's truth.

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the algorithms layer: what MRPT's EKF baselines (6D, 2D) share as algorithms of
 // a run — a map copied out of the filter after each step (an update moves every landmark), the
-// landmarks.csv columns, the time budget, and MRPT's exception text cut to its message.
+// landmarks.csv columns and the time budget.
 
 #include "relslam/eval/algorithms/algorithm.hpp"
 
@@ -52,9 +52,6 @@ class MrptFilter : public Algorithm {
   std::vector<int> all_ids_;  // 0 .. map size - 1
   std::vector<int> assignment_;
 };
-
-// MRPT's exception text, its first line of message.
-std::string mrpt_message(const std::string& what);
 
 // Map slot of each observation row after a step with data association (no ids): the filter's
 // associations (row -> slot); rows it left unassociated became new landmarks, appended in row

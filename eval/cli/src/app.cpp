@@ -106,57 +106,60 @@ int run_keys(const std::string& prefix, bool markdown) {
 
 }  // namespace
 
-int run_cli(int argc, const char* const* argv) {
-  CLI::App app{"relslam: simulation and evaluation workbench for Relative SLAM (Kraut 2011)", "relslam"};
-  app.require_subcommand(1);
-  app.footer(kFooter);
-  app.set_version_flag("--version", std::string("relslam ") + relslam_version() + " (" + git_revision() + ")");
+namespace {
 
+// The algorithms of each half, from the one registry (relslam algorithms).
+int list_algorithms() {
+  std::cout << "On point landmarks (kind simulation, rawlogs, Victoria Park):\n";
+  for (const AlgorithmEntry* a : algorithms_of(ScenarioHalf::Points))
+    std::cout << "  " << a->name << "\n      " << a->help << '\n';
+  std::cout << "On planes (kind planar):\n";
+  for (const AlgorithmEntry* a : algorithms_of(ScenarioHalf::Planes))
+    std::cout << "  " << a->name << "\n      " << a->help << '\n';
+  return 0;
+}
+
+// Every subcommand's arguments: added to the parser, then the one that was given is run.
+struct Commands {
   SimulateArgs simulate;
-  add_simulate(app, simulate);
   RunArgs run;
-  add_run(app, run);
   ScenarioArgs scenario;
-  add_scenario(app, scenario);
   RawlogArgs rawlog;
-  add_rawlog(app, rawlog);
   SweepArgs sweep;
-  add_sweep(app, sweep);
   TuneEkfArgs tune_ekf;
-  add_tune_ekf(app, tune_ekf);
   VictoriaParkArgs victoria_park;
-  add_victoria_park(app, victoria_park);
   ConvertVictoriaParkArgs convert;
-  add_convert(app, convert);
   ConvertTumArgs convert_tum;
-  add_convert_tum(*app.get_subcommand("convert"), convert_tum);
   BenchBinningArgs bench_binning;
-  add_bench_binning(app, bench_binning);
   EmBenchArgs em_bench;
-  add_em_bench(app, em_bench);
   RenderArgs render;
-  add_render(app, render);
   ExtractArgs extract;
-  add_extract(app, extract);
   CompareArgs compare;
-  add_compare(app, compare);
-  app.add_subcommand("algorithms", "List the algorithms a scenario's \"algorithms\" key may name");
   bool markdown = false;
   std::string keys_prefix;
-  CLI::App* keys = app.add_subcommand("keys", "List every scenario key with its type, default and meaning");
-  keys->add_option("prefix", keys_prefix, "Only the keys that start with this, e.g. ekf6d or relative_plane.rules");
-  keys->add_flag("--markdown", markdown, "Markdown table (the one in README.md)");
 
-  const std::vector<std::string> command_line(argv, argv + argc);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::cerr << "relslam: " << command_line_problem(app, e, command_line) << '\n';
-    return 2;
+  void add(CLI::App& app) {
+    add_simulate(app, simulate);
+    add_run(app, run);
+    add_scenario(app, scenario);
+    add_rawlog(app, rawlog);
+    add_sweep(app, sweep);
+    add_tune_ekf(app, tune_ekf);
+    add_victoria_park(app, victoria_park);
+    add_convert(app, convert);
+    add_convert_tum(*app.get_subcommand("convert"), convert_tum);
+    add_bench_binning(app, bench_binning);
+    add_em_bench(app, em_bench);
+    add_render(app, render);
+    add_extract(app, extract);
+    add_compare(app, compare);
+    app.add_subcommand("algorithms", "List the algorithms a scenario's \"algorithms\" key may name");
+    CLI::App* keys = app.add_subcommand("keys", "List every scenario key with its type, default and meaning");
+    keys->add_option("prefix", keys_prefix, "Only the keys that start with this, e.g. ekf6d or relative_plane.rules");
+    keys->add_flag("--markdown", markdown, "Markdown table (the one in README.md)");
   }
 
-  try {
+  int run_given(const CLI::App& app, const std::vector<std::string>& command_line) const {
     if (app.got_subcommand("simulate")) return run_simulate(simulate, command_line);
     if (app.got_subcommand("run")) return run_run(run, command_line);
     if (app.got_subcommand("sweep")) return run_sweep(sweep, command_line);
@@ -172,16 +175,33 @@ int run_cli(int argc, const char* const* argv) {
     if (app.got_subcommand("render")) return run_render(render);
     if (app.got_subcommand("extract")) return run_extract(extract);
     if (app.got_subcommand("compare")) return run_compare(compare);
-    if (app.got_subcommand("algorithms")) {
-      std::cout << "On point landmarks (kind simulation, rawlogs, Victoria Park):\n";
-      for (const AlgorithmEntry* a : algorithms_of(ScenarioHalf::Points))
-        std::cout << "  " << a->name << "\n      " << a->help << '\n';
-      std::cout << "On planes (kind planar):\n";
-      for (const AlgorithmEntry* a : algorithms_of(ScenarioHalf::Planes))
-        std::cout << "  " << a->name << "\n      " << a->help << '\n';
-      return 0;
-    }
+    if (app.got_subcommand("algorithms")) return list_algorithms();
     if (app.got_subcommand("keys")) return run_keys(keys_prefix, markdown);
+    return 0;
+  }
+};
+
+}  // namespace
+
+int run_cli(int argc, const char* const* argv) {
+  CLI::App app{"relslam: simulation and evaluation workbench for Relative SLAM (Kraut 2011)", "relslam"};
+  app.require_subcommand(1);
+  app.footer(kFooter);
+  app.set_version_flag("--version", std::string("relslam ") + relslam_version() + " (" + git_revision() + ")");
+  Commands commands;
+  commands.add(app);
+
+  const std::vector<std::string> command_line(argv, argv + argc);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << "relslam: " << command_line_problem(app, e, command_line) << '\n';
+    return 2;
+  }
+
+  try {
+    return commands.run_given(app, command_line);
   } catch (const InputError& e) {
     std::cerr << "relslam: " << e.what() << '\n';
     return 2;
@@ -189,7 +209,6 @@ int run_cli(int argc, const char* const* argv) {
     std::cerr << "relslam: error: " << e.what() << '\n';
     return 1;
   }
-  return 0;
 }
 
 }  // namespace relslam::eval

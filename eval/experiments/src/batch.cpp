@@ -83,6 +83,7 @@ std::vector<BatchResult> run_batch(const std::string& scenario_file, const std::
         std::vector<std::string> set = base_overrides;
         set.insert(set.end(), jobs[i].overrides.begin(), jobs[i].overrides.end());
         const LoadedScenario loaded = load_with_overrides(scenario_file, set);
+        r.half = half_of(loaded.scenario.kind);
         if (interrupt_requested()) {  // a signal: start no further cell
           r.error = "not run (interrupted)";
           continue;

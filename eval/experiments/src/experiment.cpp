@@ -96,8 +96,9 @@ ExperimentResult run_on_rawlog(const LoadedScenario& loaded, const RawlogFiles& 
 
 void print_results(const ExperimentResult& result, const std::string& title) {
   std::printf("%s: %d iterations\n", title.c_str(), result.iterations);
-  // Planar runs score planes (the key-point error e_ends), the others landmarks.
-  const bool planar = !result.rows.empty() && result.rows.front().planar.has_value();
+  // The plane half scores planes (the key-point error e_ends), the point half landmarks: the
+  // family that ran says which (ExperimentResult::half).
+  const bool planar = result.half == ScenarioHalf::Planes;
   // Errors are in the world's units: a simulation's own, metres for recorded data.
   std::printf("%-20s %-8s %10s %14s %10s %10s %10s\n", "algorithm", "status", planar ? "planes" : "landmarks",
               planar ? "map err" : "landmark err", "pos err", "median ms", "p95 ms");

@@ -133,11 +133,7 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   iterations_.row_fields(fields_);
 }
 
-SummaryRow PlaneRecorder::finish() {
-  iterations_.close();
-  trajectory_.close();
-  if (keypoints_) keypoints_->close();
-
+PlaneRecorder::MapCounts PlaneRecorder::write_planes_table() {
   const std::vector<MappedPlane>& map = algorithm_->map();
   std::vector<std::string> columns = {"id",    "true_wall", "kp1_x",     "kp1_z",  "kp2_x",     "kp2_z",
                                       "length", "e_ends",   "e_ang_deg", "e_perp", "len_ratio"};
@@ -170,6 +166,48 @@ SummaryRow PlaneRecorder::finish() {
     planes.row_fields(fields_);
   }
   planes.close();
+  MapCounts counts;
+  counts.walls_mapped = static_cast<int>(walls_mapped.size());
+  for (const auto& [face, n] : planes_per_face) counts.duplicates += n - 1;
+  return counts;
+}
+
+void PlaneRecorder::score_trajectory(SummaryRow& row) const {
+  std::vector<Rigid3> estimated, true_poses;
+  for (std::size_t i = 0; i < estimates_.size(); ++i)
+    if (estimates_[i] && truths_[i]) {
+      estimated.push_back(rigid_from_planar(*estimates_[i]));
+      true_poses.push_back(rigid_from_planar(*truths_[i]));
+    }
+  row.trajectory = trajectory_error(estimated, true_poses);
+  if (std::none_of(truths_.begin(), truths_.end(), [](const auto& t) { return t.has_value(); })) {
+    const double unknown = std::nan("");  // no true path: nothing to score, not a zero error
+    row.trajectory = {unknown, unknown, unknown, unknown};
+  }
+}
+
+PlanarScores PlaneRecorder::planar_scores(int walls_mapped) {
+  const auto with_pose = std::count_if(estimates_.begin(), estimates_.end(), [](const auto& e) { return e.has_value(); });
+  PlanarScores scores;
+  scores.final_heading_error_deg = last_pose_error_ ? last_pose_error_->heading_rad * kDeg : std::nan("");
+  scores.max_position_error = max_position_error_;
+  scores.pose_valid_fraction =
+      estimates_.empty() ? 0.0 : static_cast<double>(with_pose) / static_cast<double>(estimates_.size());
+  scores.walls_mapped = walls_mapped;
+  walls_seen_.erase(-1);
+  scores.walls_seen = static_cast<int>(walls_seen_.size());
+  scores.key_point_accuracy = key_points_checked_ > 0 ? 1.0 - static_cast<double>(key_points_wrong_) /
+                                                                  static_cast<double>(key_points_checked_)
+                                                      : std::nan("");
+  scores.wrong_key_point_iterations = wrong_key_point_iterations_;
+  return scores;
+}
+
+SummaryRow PlaneRecorder::finish() {
+  iterations_.close();
+  trajectory_.close();
+  if (keypoints_) keypoints_->close();
+  const MapCounts counts = write_planes_table();
   algorithm_->write_tables(dir_);
 
   SummaryRow row;
@@ -183,38 +221,13 @@ SummaryRow PlaneRecorder::finish() {
   for (double e : mean_map_errors_) sum += e;
   row.mean_landmark_error = mean_map_errors_.empty() ? std::nan("") : sum / mean_map_errors_.size();
   row.final_position_error = last_pose_error_ ? last_pose_error_->position : std::nan("");
-  std::vector<Rigid3> estimated, true_poses;
-  int with_pose = 0;
-  for (std::size_t i = 0; i < estimates_.size(); ++i) {
-    with_pose += estimates_[i].has_value();
-    if (estimates_[i] && truths_[i]) {
-      estimated.push_back(rigid_from_planar(*estimates_[i]));
-      true_poses.push_back(rigid_from_planar(*truths_[i]));
-    }
-  }
-  row.trajectory = trajectory_error(estimated, true_poses);
-  if (std::none_of(truths_.begin(), truths_.end(), [](const auto& t) { return t.has_value(); })) {
-    const double unknown = std::nan("");  // no true path: nothing to score, not a zero error
-    row.trajectory = {unknown, unknown, unknown, unknown};
-  }
-  row.landmarks_on_map = static_cast<int>(map.size());
-  for (const auto& [face, n] : planes_per_face) row.duplicates += n - 1;
+  score_trajectory(row);
+  row.landmarks_on_map = static_cast<int>(algorithm_->map().size());
+  row.duplicates = counts.duplicates;
   row.runtime = runtime_stats(runtimes_ms_);
   row.peak_rss_mb = peak_rss_mb();
   row.input_digest = digest_.hex();
-  PlanarScores scores;
-  scores.final_heading_error_deg = last_pose_error_ ? last_pose_error_->heading_rad * kDeg : std::nan("");
-  scores.max_position_error = max_position_error_;
-  scores.pose_valid_fraction =
-      estimates_.empty() ? 0.0 : static_cast<double>(with_pose) / static_cast<double>(estimates_.size());
-  scores.walls_mapped = static_cast<int>(walls_mapped.size());
-  walls_seen_.erase(-1);
-  scores.walls_seen = static_cast<int>(walls_seen_.size());
-  scores.key_point_accuracy = key_points_checked_ > 0 ? 1.0 - static_cast<double>(key_points_wrong_) /
-                                                                  static_cast<double>(key_points_checked_)
-                                                      : std::nan("");
-  scores.wrong_key_point_iterations = wrong_key_point_iterations_;
-  row.planar = scores;
+  row.planar = planar_scores(counts.walls_mapped);
   row.own_columns = algorithm_->summary_columns();
   algorithm_->summary_fields(row.own_fields);
   if (algorithm_->scores_wrong_valid()) {

@@ -1,11 +1,13 @@
 #include "relslam/eval/experiments/sweep_folder.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/io/run_folder.hpp"
 #include "relslam/eval/metrics/summary_reader.hpp"
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 namespace relslam::eval {
 namespace fs = std::filesystem;
@@ -21,6 +23,18 @@ std::vector<std::string> manifest_algorithms(const nlohmann::json& manifest) {
     for (const nlohmann::json& name : *list)
       if (name.is_string()) names.push_back(name.get<std::string>());
   return names;
+}
+
+// The half the cell's scenario fed, from the kind its manifest recorded (half_of); none when the
+// manifest names no kind it knows.
+std::optional<ScenarioHalf> manifest_half(const nlohmann::json& manifest) {
+  if (!manifest.contains("scenario") || !manifest["scenario"].is_object()) return std::nullopt;
+  const nlohmann::json& scenario = manifest["scenario"];
+  if (!scenario.contains("kind")) return ScenarioHalf::Points;  // the default kind, "simulation"
+  if (!scenario["kind"].is_string()) return std::nullopt;
+  for (ScenarioKind kind : kScenarioKinds)
+    if (to_string(kind) == scenario["kind"].get<std::string>()) return half_of(kind);
+  return std::nullopt;
 }
 
 // summary.csv of a finished cell, checked whole: every algorithm the run was asked for has
@@ -64,6 +78,7 @@ BatchResult read_cell(const BatchJob& job) {
     return r;
   }
   const nlohmann::json manifest = read_manifest(cell);
+  r.half = manifest_half(manifest);
   const std::string status = manifest_status(cell);
   if (status.empty())
     r.error = "not run or cut off (no readable manifest.json)";

@@ -46,19 +46,18 @@ void publish(const std::filesystem::path& file) {
 
 }  // namespace
 
-bool planar(const std::vector<BatchResult>& results) {
+ScenarioHalf sweep_half(const std::vector<BatchResult>& results) {
   for (const BatchResult& r : results)
-    for (const SummaryRow& s : r.rows)
-      if (s.planar) return true;
-  return false;
+    if (r.half) return *r.half;
+  return ScenarioHalf::Points;
 }
 
 void write_runs_table(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
-                      const std::vector<BatchResult>& results) {
+                      const std::vector<BatchResult>& results, ScenarioHalf half) {
   std::vector<std::string> columns = axis_names(axes);
   for (const char* name : {"seed", "folder", "algorithm", "status", "iterations", "final_landmark_error",
                            "final_mean_landmark_error", "final_position_error", "ate_rmse", "runtime_median_ms"})
-    columns.push_back(summary_column(name, planar(results)));
+    columns.push_back(summary_column(name, half));
   CsvWriter table(partial(out / "sweep.csv"), columns);
   for (const BatchResult& r : results) {
     auto texts = [&](const std::string& algorithm, const std::string& status) {
@@ -129,11 +128,11 @@ bool any_run_failed(const std::vector<BatchResult>& results) {
 }
 
 void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
-                     const std::vector<SweepCell>& cells, bool planar) {
+                     const std::vector<SweepCell>& cells, ScenarioHalf half) {
   std::vector<std::string> columns = axis_names(axes);
   columns.insert(columns.end(), {"algorithm", "runs", "ok", "not_ok_seeds"});
   for (const Metric& m : kMetrics)
-    for (const char* suffix : {"_mean", "_std", "_ci95"}) columns.push_back(summary_column(m.name, planar) + suffix);
+    for (const char* suffix : {"_mean", "_std", "_ci95"}) columns.push_back(summary_column(m.name, half) + suffix);
   CsvWriter table(partial(out / "aggregate.csv"), columns);
   for (const SweepCell& cell : cells) {
     std::vector<std::string> texts = cell.labels;
@@ -153,9 +152,9 @@ void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxi
   publish(out / "aggregate.csv");
 }
 
-void print_cells(const std::vector<GridAxis>& axes, const std::vector<SweepCell>& cells, bool planar) {
+void print_cells(const std::vector<GridAxis>& axes, const std::vector<SweepCell>& cells, ScenarioHalf half) {
   std::printf("%-40s %-22s %4s %22s %22s %12s\n", "combination", "algorithm", "ok",
-              planar ? "mean map err (95% CI)" : "mean lm err (95% CI)", "pos err (95% CI)", "median ms");
+              half == ScenarioHalf::Planes ? "mean map err (95% CI)" : "mean lm err (95% CI)", "pos err (95% CI)", "median ms");
   for (const SweepCell& cell : cells) {
     std::string name;
     for (std::size_t i = 0; i < axes.size(); ++i) name += (i ? " " : "") + axes[i].name + "=" + cell.labels[i];

@@ -8,19 +8,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 namespace relslam::eval {
 namespace {
 
-using render::draw_scale_bar;
 using render::draw_text;
 using render::group_colour;
-using render::kText;
 
 // Colours (BGR), after the thesis's renders: green RltPoint boxes, black final and red
 // temporary labels (Fig 127), true robot blue and estimated robot red (Figs 153–156).
-const cv::Scalar kBackground(255, 255, 255);
 const cv::Scalar kTruePoint(170, 170, 170);
 const cv::Scalar kTrueDynamic(0, 140, 255);
 const cv::Scalar kPointBox(0, 160, 0);
@@ -81,7 +77,7 @@ void draw_robot(cv::Mat& image, const Rigid3& pose, const SceneFrustum& frustum,
   cv::polylines(image, wedge, view == RenderView::Top, colour, 1, cv::LINE_AA);
 }
 
-void draw_legend(cv::Mat& image, bool has_groups) {
+std::vector<render::LegendEntry> legend(bool has_groups) {
   std::vector<render::LegendEntry> entries = {{"true point", kTruePoint},
                                               {"true dynamic point", kTrueDynamic},
                                               {"map point (RltPoint / EKF landmark)", kPointBox},
@@ -92,23 +88,19 @@ void draw_legend(cv::Mat& image, bool has_groups) {
     entries.push_back({"label: final group (black)", kFinalLabel});
     entries.push_back({"label: temporary group (red)", kTemporaryLabel});
   }
-  render::draw_legend(image, entries);
+  return entries;
 }
 
 }  // namespace
 
 RenderFrame fit_everything(const RenderScene& scene, const RenderOptions& options) {
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  auto grow = [&](const Eigen::Vector3d& p) {
-    const Eigen::Vector2d uv = plane(p, options.view);
-    lo = lo.cwiseMin(uv);
-    hi = hi.cwiseMax(uv);
-  };
+  render::FitBox box;
+  auto grow = [&](const Eigen::Vector3d& p) { box.grow(plane(p, options.view)); };
   for (const auto& p : scene.true_points) grow(p);
   for (const auto& p : scene.true_path) grow(p);
   for (const auto& p : scene.estimated_path) grow(p);
   for (const auto& l : scene.landmarks) grow(l.p);
-  return render::fit_box(lo, hi, options);
+  return box.fit(options);
 }
 
 RenderFrame fit_robot(const RenderScene& scene, const RenderOptions& options) {
@@ -120,8 +112,10 @@ RenderFrame fit_robot(const RenderScene& scene, const RenderOptions& options) {
   return {uv.x(), uv.y(), 0.8 * scene.frustum.far};
 }
 
-cv::Mat render_map(const RenderScene& scene, const RenderFrame& frame, const RenderOptions& options) {
-  cv::Mat image(options.height, options.width, CV_8UC3, kBackground);
+namespace {
+
+// The scene itself: true points and paths, the map with its groups, the robots.
+void draw_scene(cv::Mat& image, const RenderScene& scene, const RenderFrame& frame, const RenderOptions& options) {
   const Projection project(frame, options);
   const int w = options.width, h = options.height;
 
@@ -166,13 +160,16 @@ cv::Mat render_map(const RenderScene& scene, const RenderFrame& frame, const Ren
   if (scene.estimated_pose)
     draw_robot(image, *scene.estimated_pose, scene.frustum, project, options.view, kEstimatedRobot, true);
   if (scene.true_pose) draw_robot(image, *scene.true_pose, scene.frustum, project, options.view, kTrueRobot, false);
+}
 
-  draw_text(image, scene.title, {12, 22}, kText, 0.55);
-  draw_text(image, options.view == RenderView::Top ? "top view: z right, x up" : "side view: z right, y up", {12, 42},
-            kText);
-  draw_scale_bar(image, frame, options);
-  draw_legend(image, !scene.groups.empty());
-  return image;
+}  // namespace
+
+cv::Mat render_map(const RenderScene& scene, const RenderFrame& frame, const RenderOptions& options) {
+  const render::PictureText text{
+      scene.title, options.view == RenderView::Top ? "top view: z right, x up" : "side view: z right, y up",
+      legend(!scene.groups.empty())};
+  return render::draw_picture(frame, options, text,
+                              [&](cv::Mat& image) { draw_scene(image, scene, frame, options); });
 }
 
 }  // namespace relslam::eval

@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the io layer, shared by the rawlog readers (landmarks: rawlog.cpp, point clouds:
-// point_cloud_rawlog.cpp): MRPT poses as Rigid3, the sanity check every pose read goes through,
-// and MRPT's exception text cut to its message.
+// point_cloud_rawlog.cpp): MRPT poses as Rigid3 and the sanity check every pose read goes through.
+// MRPT's exception text cut to its message is public: mrpt_exception_message.hpp.
 
 #include "relslam/core/rigid.hpp"
 
@@ -27,8 +27,5 @@ void require_sane(const Rigid3& pose, double max_offset, const std::string& file
 // rawlog_decoded_budget() takes. Throws InputError for a missing file, a directory, a file that
 // cannot be opened.
 std::uintmax_t open_rawlog(const std::filesystem::path& path, mrpt::io::CFileGZInputStream& in);
-
-// MRPT's exception text is a banner, a "Message:" line and a call stack; the message.
-std::string mrpt_exception_message(const std::string& what);
 
 }  // namespace relslam::eval

@@ -115,147 +115,162 @@ class Walker {
     throw RecordProblem(path, "serialisation version " + std::to_string(version) + " is not read");
   }
 
+  // The fields of one object of class c, serialisation version v (MRPT 2's readers): one
+  // function per class, each reading what MRPT's serializeFrom reads.
   void payload(Class c, unsigned v, const std::string& path, unsigned matrix_rows, unsigned matrix_cols) {
     switch (c) {
-      case Class::SensoryFrame: {
-        if (v > 2) unsupported(path, v);
-        if (v < 2) skip(4, path, "ID");
-        if (v == 0) skip(8, path, "timestamp");
-        const std::uint32_t n = count(path + ".observations", kMaxObjectsPerContainer);
-        for (std::uint32_t i = 0; i < n; ++i) object(path + ".observations[" + std::to_string(i) + "]", kInFrame);
-        return;
-      }
-      case Class::ActionCollection: {
-        if (v != 0) unsupported(path, v);
-        const std::uint32_t n = count(path + ".actions", kMaxObjectsPerContainer);
-        for (std::uint32_t i = 0; i < n; ++i) object(path + ".actions[" + std::to_string(i) + "]", kInCollection);
-        return;
-      }
-      case Class::BearingRange: {
-        if (v > 3) unsupported(path, v);
-        skip(v >= 3 ? 16 : 12, path, "sensor limits");
-        object(path + ".sensorLocationOnRobot", {Class::Pose3D});
-        if (v >= 2) skip(8, path, "timestamp");
-        const bool covariances = v >= 3 && boolean(path + ".validCovariances");
-        if (v >= 3 && !covariances) skip(12, path, "sensor std");
-        const std::string field = path + ".sensedData";
-        const std::uint32_t n = count(field, UINT32_MAX, 16);
-        for (std::uint32_t i = 0; i < n; ++i) {
-          skip(16, field, "range, yaw, pitch, id");
-          if (covariances) object(field + "[" + std::to_string(i) + "].covariance", {Class::MatrixD}, 3, 3);
-        }
-        if (v >= 1) string(path + ".sensorLabel");
-        return;
-      }
-      case Class::RangeScan2D:
-        range_scan_2d(v, path);
-        return;
-      case Class::Odometry: {
-        if (v > 2) unsupported(path, v);
-        object(path + ".odometry", {Class::Pose2D});
-        string(path + ".sensorLabel");
-        skip(8, path, "timestamp");
-        if (v >= 1) {
-          if (boolean(path + ".hasEncodersInfo") || v < 2) skip(8, path, "encoder ticks");
-          const bool velocities = boolean(path + ".hasVelocities");
-          if (v < 2)
-            skip(8, path, "velocities");
-          else if (velocities)
-            skip(24, path, "velocityLocal");
-        }
-        return;
-      }
-      case Class::RobotMovement2D: {
-        // Versions 0 and 1 (MRPT before 0.9) put the pose PDF first; not read.
-        if (v < 2 || v > 7) unsupported(path, v);
-        const std::int32_t method = pod<std::int32_t>(path, "estimationMethod");
-        if (method != 0 && method != 1)
-          throw RecordProblem(path + ".estimationMethod",
-                              "must be 0 (odometry) or 1 (scan matching), got " + std::to_string(method));
-        if (method == 0) {  // odometry: MRPT recomputes the PDF from the reading and the model
-          object(path + ".rawOdometryIncrementReading", {Class::Pose2D});
-          if (v == 2) {
-            skip(44, path, "motion model");
-          } else {
-            const std::int32_t model = pod<std::int32_t>(path, "modelSelection");
-            if (model != 0 && model != 1)
-              throw RecordProblem(path + ".modelSelection",
-                                  "must be 0 (Gaussian) or 1 (Thrun), got " + std::to_string(model));
-            skip(v >= 4 ? 24 : 20, path, "Gaussian model");
-            const std::int32_t particles = pod<std::int32_t>(path, "nParticlesCount");
-            if (model == 1 && (particles < 1 || particles > kMaxThrunParticles))
-              throw RecordProblem(path + ".nParticlesCount", "must be in [1, " + std::to_string(kMaxThrunParticles) +
-                                                                 "] for the Thrun model, got " +
-                                                                 std::to_string(particles));
-            skip(v >= 5 ? 24 : 16, path, "Thrun model");
-          }
-        } else {
-          object(path + ".poseChange", {Class::PosePdfGaussian});
-        }
-        // Before version 7 both flags are followed by their fields whatever they say, and
-        // MRPT of that time wrote them uninitialised (localization_demo.rawlog holds 90 and 8,
-        // and MRPT reads the file): normalised to 0 or 1 for MRPT's reader, which ignores them.
-        const bool velocities = v < 7 ? legacy_flag(path + ".hasVelocities") : boolean(path + ".hasVelocities");
-        if (v < 7)
-          skip(8, path, "velocities");
-        else if (velocities)
-          skip(24, path, "velocityLocal");
-        if (v < 7) {
-          legacy_flag(path + ".hasEncodersInfo");
-          skip(8, path, "encoder ticks");
-        } else if (boolean(path + ".hasEncodersInfo")) {
-          skip(8, path, "encoder ticks");
-        }
-        if (v >= 6) skip(8, path, "timestamp");
-        return;
-      }
-      case Class::RobotMovement3D: {
-        if (v > 1) unsupported(path, v);
-        const std::uint32_t method = pod<std::uint32_t>(path, "estimationMethod");
-        if (method > 1)
-          throw RecordProblem(path + ".estimationMethod",
-                              "must be 0 (odometry) or 1 (visual odometry), got " + std::to_string(method));
-        object(path + ".poseChange", {Class::Pose3DPdfGaussian});
-        const std::uint32_t flags = count(path + ".hasVelocities", kMaxSmallVector, 1);
-        for (std::uint32_t i = 0; i < flags; ++i) boolean(path + ".hasVelocities");
-        const std::uint32_t values = count(path + ".velocities", kMaxSmallVector, 4);
-        skip(4 * std::size_t{values}, path, "velocities");
-        if (v >= 1) skip(8, path, "timestamp");
-        return;
-      }
-      case Class::Pose2D:
-        if (v > 1) unsupported(path, v);
-        skip(v == 0 ? 12 : 24, path, "x, y, phi");
-        return;
-      case Class::Pose3D:
-        // Version 0 held a float matrix object (MRPT before 0.9); not read.
-        if (v < 1 || v > 3) unsupported(path, v);
-        if (v == 1) object(path + ".HM", {Class::MatrixD}, 4, 4);
-        if (v == 2) skip(56, path, "x, y, z, quaternion");
-        if (v == 3) skip(96, path, "x, y, z, rotation");
-        return;
-      case Class::PosePdfGaussian:
-        if (v < 1 || v > 2) unsupported(path, v);
-        object(path + ".mean", {Class::Pose2D});
-        skip(v == 1 ? 24 : 48, path, "covariance");
-        return;
-      case Class::Pose3DPdfGaussian:
-        if (v != 1) unsupported(path, v);
-        object(path + ".mean", {Class::Pose3D});
-        skip(21 * 8, path, "covariance");
-        return;
-      case Class::MatrixD: {
-        if (v != 0) unsupported(path, v);
-        const std::uint32_t rows = pod<std::uint32_t>(path, "rows");
-        const std::uint32_t cols = pod<std::uint32_t>(path, "cols");
-        // MRPT asserts the size after allocating it; a fixed-size field has one right size.
-        if (rows != matrix_rows || cols != matrix_cols)
-          throw RecordProblem(path, "a " + std::to_string(matrix_rows) + "x" + std::to_string(matrix_cols) +
-                                        " matrix expected, got " + std::to_string(rows) + "x" + std::to_string(cols));
-        skip(8 * std::size_t{rows} * cols, path, "matrix entries");
-        return;
-      }
+      case Class::SensoryFrame: return sensory_frame(v, path);
+      case Class::ActionCollection: return action_collection(v, path);
+      case Class::BearingRange: return bearing_range(v, path);
+      case Class::RangeScan2D: return range_scan_2d(v, path);
+      case Class::Odometry: return odometry(v, path);
+      case Class::RobotMovement2D: return robot_movement_2d(v, path);
+      case Class::RobotMovement3D: return robot_movement_3d(v, path);
+      case Class::Pose2D: return pose_2d(v, path);
+      case Class::Pose3D: return pose_3d(v, path);
+      case Class::PosePdfGaussian: return pose_pdf_gaussian(v, path);
+      case Class::Pose3DPdfGaussian: return pose_3d_pdf_gaussian(v, path);
+      case Class::MatrixD: return matrix(v, path, matrix_rows, matrix_cols);
     }
+  }
+
+  void sensory_frame(unsigned v, const std::string& path) {
+    if (v > 2) unsupported(path, v);
+    if (v < 2) skip(4, path, "ID");
+    if (v == 0) skip(8, path, "timestamp");
+    const std::uint32_t n = count(path + ".observations", kMaxObjectsPerContainer);
+    for (std::uint32_t i = 0; i < n; ++i) object(path + ".observations[" + std::to_string(i) + "]", kInFrame);
+  }
+
+  void action_collection(unsigned v, const std::string& path) {
+    if (v != 0) unsupported(path, v);
+    const std::uint32_t n = count(path + ".actions", kMaxObjectsPerContainer);
+    for (std::uint32_t i = 0; i < n; ++i) object(path + ".actions[" + std::to_string(i) + "]", kInCollection);
+  }
+
+  void bearing_range(unsigned v, const std::string& path) {
+    if (v > 3) unsupported(path, v);
+    skip(v >= 3 ? 16 : 12, path, "sensor limits");
+    object(path + ".sensorLocationOnRobot", {Class::Pose3D});
+    if (v >= 2) skip(8, path, "timestamp");
+    const bool covariances = v >= 3 && boolean(path + ".validCovariances");
+    if (v >= 3 && !covariances) skip(12, path, "sensor std");
+    const std::string field = path + ".sensedData";
+    const std::uint32_t n = count(field, UINT32_MAX, 16);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      skip(16, field, "range, yaw, pitch, id");
+      if (covariances) object(field + "[" + std::to_string(i) + "].covariance", {Class::MatrixD}, 3, 3);
+    }
+    if (v >= 1) string(path + ".sensorLabel");
+  }
+
+  void odometry(unsigned v, const std::string& path) {
+    if (v > 2) unsupported(path, v);
+    object(path + ".odometry", {Class::Pose2D});
+    string(path + ".sensorLabel");
+    skip(8, path, "timestamp");
+    if (v >= 1) {
+      if (boolean(path + ".hasEncodersInfo") || v < 2) skip(8, path, "encoder ticks");
+      const bool velocities = boolean(path + ".hasVelocities");
+      if (v < 2)
+        skip(8, path, "velocities");
+      else if (velocities)
+        skip(24, path, "velocityLocal");
+    }
+  }
+
+  void robot_movement_2d(unsigned v, const std::string& path) {
+    // Versions 0 and 1 (MRPT before 0.9) put the pose PDF first; not read.
+    if (v < 2 || v > 7) unsupported(path, v);
+    const std::int32_t method = pod<std::int32_t>(path, "estimationMethod");
+    if (method != 0 && method != 1)
+      throw RecordProblem(path + ".estimationMethod",
+                          "must be 0 (odometry) or 1 (scan matching), got " + std::to_string(method));
+    if (method == 0) {  // odometry: MRPT recomputes the PDF from the reading and the model
+      object(path + ".rawOdometryIncrementReading", {Class::Pose2D});
+      if (v == 2) {
+        skip(44, path, "motion model");
+      } else {
+        const std::int32_t model = pod<std::int32_t>(path, "modelSelection");
+        if (model != 0 && model != 1)
+          throw RecordProblem(path + ".modelSelection",
+                              "must be 0 (Gaussian) or 1 (Thrun), got " + std::to_string(model));
+        skip(v >= 4 ? 24 : 20, path, "Gaussian model");
+        const std::int32_t particles = pod<std::int32_t>(path, "nParticlesCount");
+        if (model == 1 && (particles < 1 || particles > kMaxThrunParticles))
+          throw RecordProblem(path + ".nParticlesCount", "must be in [1, " + std::to_string(kMaxThrunParticles) +
+                                                             "] for the Thrun model, got " +
+                                                             std::to_string(particles));
+        skip(v >= 5 ? 24 : 16, path, "Thrun model");
+      }
+    } else {
+      object(path + ".poseChange", {Class::PosePdfGaussian});
+    }
+    // Before version 7 both flags are followed by their fields whatever they say, and
+    // MRPT of that time wrote them uninitialised (localization_demo.rawlog holds 90 and 8,
+    // and MRPT reads the file): normalised to 0 or 1 for MRPT's reader, which ignores them.
+    const bool velocities = v < 7 ? legacy_flag(path + ".hasVelocities") : boolean(path + ".hasVelocities");
+    if (v < 7)
+      skip(8, path, "velocities");
+    else if (velocities)
+      skip(24, path, "velocityLocal");
+    if (v < 7) {
+      legacy_flag(path + ".hasEncodersInfo");
+      skip(8, path, "encoder ticks");
+    } else if (boolean(path + ".hasEncodersInfo")) {
+      skip(8, path, "encoder ticks");
+    }
+    if (v >= 6) skip(8, path, "timestamp");
+  }
+
+  void robot_movement_3d(unsigned v, const std::string& path) {
+    if (v > 1) unsupported(path, v);
+    const std::uint32_t method = pod<std::uint32_t>(path, "estimationMethod");
+    if (method > 1)
+      throw RecordProblem(path + ".estimationMethod",
+                          "must be 0 (odometry) or 1 (visual odometry), got " + std::to_string(method));
+    object(path + ".poseChange", {Class::Pose3DPdfGaussian});
+    const std::uint32_t flags = count(path + ".hasVelocities", kMaxSmallVector, 1);
+    for (std::uint32_t i = 0; i < flags; ++i) boolean(path + ".hasVelocities");
+    const std::uint32_t values = count(path + ".velocities", kMaxSmallVector, 4);
+    skip(4 * std::size_t{values}, path, "velocities");
+    if (v >= 1) skip(8, path, "timestamp");
+  }
+
+  void pose_2d(unsigned v, const std::string& path) {
+    if (v > 1) unsupported(path, v);
+    skip(v == 0 ? 12 : 24, path, "x, y, phi");
+  }
+
+  void pose_3d(unsigned v, const std::string& path) {
+    // Version 0 held a float matrix object (MRPT before 0.9); not read.
+    if (v < 1 || v > 3) unsupported(path, v);
+    if (v == 1) object(path + ".HM", {Class::MatrixD}, 4, 4);
+    if (v == 2) skip(56, path, "x, y, z, quaternion");
+    if (v == 3) skip(96, path, "x, y, z, rotation");
+  }
+
+  void pose_pdf_gaussian(unsigned v, const std::string& path) {
+    if (v < 1 || v > 2) unsupported(path, v);
+    object(path + ".mean", {Class::Pose2D});
+    skip(v == 1 ? 24 : 48, path, "covariance");
+  }
+
+  void pose_3d_pdf_gaussian(unsigned v, const std::string& path) {
+    if (v != 1) unsupported(path, v);
+    object(path + ".mean", {Class::Pose3D});
+    skip(21 * 8, path, "covariance");
+  }
+
+  void matrix(unsigned v, const std::string& path, unsigned matrix_rows, unsigned matrix_cols) {
+    if (v != 0) unsupported(path, v);
+    const std::uint32_t rows = pod<std::uint32_t>(path, "rows");
+    const std::uint32_t cols = pod<std::uint32_t>(path, "cols");
+    // MRPT asserts the size after allocating it; a fixed-size field has one right size.
+    if (rows != matrix_rows || cols != matrix_cols)
+      throw RecordProblem(path, "a " + std::to_string(matrix_rows) + "x" + std::to_string(matrix_cols) +
+                                    " matrix expected, got " + std::to_string(rows) + "x" + std::to_string(cols));
+    skip(8 * std::size_t{rows} * cols, path, "matrix entries");
   }
 
   // Appends n bytes of input to the record, in chunks, so a count the input does not back

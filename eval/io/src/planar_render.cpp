@@ -7,18 +7,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace relslam::eval {
 namespace {
 
 using render::draw_text;
-using render::kText;
 using render::PixelMap;
 
 // Colours (BGR) after the thesis's screenshots (Fig. 67, paper Fig. 2): true
 // walls yellow, mapped planes blue, current readings red; true path orange, estimated blue.
-const cv::Scalar kBackground(255, 255, 255);
 const cv::Scalar kWall(0, 215, 255);
 const cv::Scalar kMappedPlane(200, 70, 0);
 const cv::Scalar kReading(0, 0, 230);
@@ -81,32 +78,28 @@ std::vector<Eigen::Vector2d> frustum_outline(const sim::ViewingFrustum& f) {
   return out;
 }
 
-void draw_legend(cv::Mat& image, const PlanarScene& scene) {
+std::vector<render::LegendEntry> legend(const PlanarScene& scene) {
   std::vector<render::LegendEntry> entries = {{"true wall", kWall},
                                               {"mapped plane", kMappedPlane},
                                               {"current readings at the estimated pose", kReading},
                                               {"true path and robot", kTruePath},
                                               {"estimated path, robot and frustum", kEstimatedPath}};
   if (!scene.groups.empty()) entries.push_back({"group X<id>: lines to its planes", kGroupLabel});
-  render::draw_legend(image, entries);
+  return entries;
 }
 
 }  // namespace
 
 RenderFrame fit_everything(const PlanarScene& scene, const RenderOptions& options) {
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  auto grow = [&](const Eigen::Vector2d& p) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  };
+  render::FitBox box;
   for (const auto* planes : {&scene.walls, &scene.mapped, &scene.readings})
     for (const PlaneObject& p : *planes) {
-      grow(p.a);
-      grow(p.b);
+      box.grow(p.a);
+      box.grow(p.b);
     }
-  for (const auto& p : scene.true_path) grow(p);
-  for (const auto& p : scene.estimated_path) grow(p);
-  return render::fit_box(lo, hi, options);
+  for (const auto& p : scene.true_path) box.grow(p);
+  for (const auto& p : scene.estimated_path) box.grow(p);
+  return box.fit(options);
 }
 
 RenderFrame fit_robot(const PlanarScene& scene, const RenderOptions& options) {
@@ -120,8 +113,10 @@ RenderFrame fit_robot(const PlanarScene& scene, const RenderOptions& options) {
   return {centre.x(), centre.y(), 1.3 * far * aspect};
 }
 
-cv::Mat render_map(const PlanarScene& scene, const RenderFrame& frame, const RenderOptions& options) {
-  cv::Mat image(options.height, options.width, CV_8UC3, kBackground);
+namespace {
+
+// The scene itself: walls, paths, the map with its groups, the readings, the robots.
+void draw_scene(cv::Mat& image, const PlanarScene& scene, const RenderFrame& frame, const RenderOptions& options) {
   const PixelMap map(frame, options);
   const int picture = std::max(options.width, options.height);
 
@@ -162,12 +157,14 @@ cv::Mat render_map(const PlanarScene& scene, const RenderFrame& frame, const Ren
   }
   // The true robot last: where the estimate is right, it stays visible on top.
   if (scene.true_pose) draw_robot(image, *scene.true_pose, robot_size, map, kTruePath, false);
+}
 
-  draw_text(image, scene.title, {12, 22}, kText, 0.55);
-  draw_text(image, "top view: x right, z up", {12, 42}, kText);
-  render::draw_scale_bar(image, frame, options);
-  draw_legend(image, scene);
-  return image;
+}  // namespace
+
+cv::Mat render_map(const PlanarScene& scene, const RenderFrame& frame, const RenderOptions& options) {
+  const render::PictureText text{scene.title, "top view: x right, z up", legend(scene)};
+  return render::draw_picture(frame, options, text,
+                              [&](cv::Mat& image) { draw_scene(image, scene, frame, options); });
 }
 
 }  // namespace relslam::eval

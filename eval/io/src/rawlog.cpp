@@ -2,6 +2,7 @@
 
 #include "relslam/core/option_issue.hpp"
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/io/mrpt_exception_message.hpp"
 #include "relslam/eval/io/mrpt_observation.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
 

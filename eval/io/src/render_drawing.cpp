@@ -90,4 +90,15 @@ RenderFrame fit_box(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const 
   return {c.x(), c.y(), 1.08 * std::max(span, 1.0)};
 }
 
+cv::Mat draw_picture(const RenderFrame& frame, const RenderOptions& options, const PictureText& text,
+                     const std::function<void(cv::Mat&)>& draw) {
+  cv::Mat image(options.height, options.width, CV_8UC3, cv::Scalar(255, 255, 255));
+  draw(image);
+  draw_text(image, text.title, {12, 22}, kText, 0.55);
+  draw_text(image, text.axes, {12, 42}, kText);
+  draw_scale_bar(image, frame, options);
+  draw_legend(image, text.legend);
+  return image;
+}
+
 }  // namespace relslam::eval::render

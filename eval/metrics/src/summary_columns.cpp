@@ -122,9 +122,12 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryC
   csv.close();
 }
 
-std::string summary_column(std::string_view name, bool planar) {
-  if (!planar) return std::string(name);
-  const std::vector<SummaryColumn>& columns = plane_summary_columns();
+const std::vector<SummaryColumn>& summary_columns(ScenarioHalf half) {
+  return half == ScenarioHalf::Planes ? plane_summary_columns() : point_summary_columns();
+}
+
+std::string summary_column(std::string_view name, ScenarioHalf half) {
+  const std::vector<SummaryColumn>& columns = summary_columns(half);
   const auto at = std::find_if(columns.begin(), columns.end(), [&](const SummaryColumn& c) { return c.shared == name; });
   return at != columns.end() ? at->name : std::string(name);
 }

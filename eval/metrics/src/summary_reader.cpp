@@ -72,7 +72,7 @@ class SummaryFields {
  private:
   int find(std::string_view name) const {
     const int point = table_.column(name);
-    return point >= 0 ? point : table_.column(summary_column(name, true));
+    return point >= 0 ? point : table_.column(summary_column(name, ScenarioHalf::Planes));
   }
   std::size_t index(std::string_view name) const {
     const int i = find(name);

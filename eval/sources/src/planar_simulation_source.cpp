@@ -1,5 +1,6 @@
 #include "relslam/eval/sources/planar_simulation_source.hpp"
 
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/io/planar_map_file.hpp"
 #include "relslam/eval/sources/plane_frame_files.hpp"
 #include "relslam/sim/planar_sight.hpp"
@@ -91,8 +92,9 @@ sim::PlanarMap with_planar_settings(const LoadedScenario& loaded, sim::PlanarMap
   return map;
 }
 
+// Asked of half_of (scenario_half.hpp), the one place a kind picks its half.
 void require_planar(const LoadedScenario& loaded) {
-  if (loaded.scenario.kind != ScenarioKind::Planar)
+  if (!feeds_planes(loaded.scenario.kind))
     throw loaded.error("kind", "this scenario is not a planar world (kind \"planar\")");
 }
 

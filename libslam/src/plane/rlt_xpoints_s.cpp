@@ -9,6 +9,8 @@
 
 #include "relslam/plane/rlt_xpoints_s.hpp"
 
+#include "relslam/core/checked_options.hpp"
+
 #include "group_management.hpp"
 #include "motion_model_control.hpp"
 #include "plane_registration.hpp"
@@ -37,11 +39,8 @@ double lap(Clock::time_point& start) {
 }  // namespace
 
 RltXPointsS::RltXPointsS(const RelativePlaneOptions& options, const PlanarPose& world_T_start)
-    : options_(options), world_T_start_(world_T_start) {
-  const std::vector<OptionIssue> issues = check(options);
-  if (!issues.empty())
-    throw std::logic_error("RltXPointsS: options." + issues.front().field + ": " + issues.front().problem);
-}
+    : options_(checked_options(options, "RltXPointsS")),
+      world_T_start_(world_T_start) {}
 
 RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
   if (started_ && frame.iteration <= iteration_)

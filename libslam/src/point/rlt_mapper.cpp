@@ -1,5 +1,6 @@
 #include "relslam/point/rlt_mapper.hpp"
 
+#include "relslam/core/checked_options.hpp"
 #include "relslam/point/rlt_icp.hpp"
 
 #include <Eigen/Geometry>
@@ -27,17 +28,10 @@ double ms_since(Clock::time_point& t) {
 // every iteration.
 constexpr int kMaxRejectedTurns = 10;
 
-const PointSlamOptions& checked(const PointSlamOptions& options) {
-  const auto issues = check(options);
-  if (!issues.empty())
-    throw std::logic_error("RltMapper: invalid options: " + issues.front().field + ": " + issues.front().problem);
-  return options;
-}
-
 }  // namespace
 
 RltMapper::RltMapper(const PointSlamOptions& options, GroupRelaxer relaxer)
-    : options_(checked(options)),
+    : options_(checked_options(options, "RltMapper")),
       map_(options_),
       matcher_(options_),
       turn_rate_(turn_rate_window_on(options_)),
@@ -302,20 +296,107 @@ bool RltMapper::implausible(const Rigid3& registered, const Eigen::Matrix3d& pre
 void RltMapper::update_pose(const ObservationFrame& frame, StepResult& result) {
   const int k = frame.iteration;
   const std::vector<PointId>& seen = map_.charting.at(k);
-  const PosePrediction prediction = predict_pose(frame);
-  bool rejected = false;
-  MappedPairs mapped;
-  const std::optional<PoseSource> registered_source = register_pose(k, seen, prediction, mapped, rejected);
-  result.pose_source = registered_source ? *registered_source : provisional_fallback(k, prediction, mapped);
+  PoseAttempt attempt{k, seen, predict_pose(frame), std::nullopt, MappedPairs{}, false};
+  attempt.mapped_registration = register_seen(seen, false, attempt.prediction, attempt.rejected);
+  // Fewer than three mapped pairs (adaptive preset): the one or two register_seen(false) found.
+  attempt.mapped.count = robot_scratch_.size();
+  for (std::size_t i = 0; i < std::min<std::size_t>(attempt.mapped.count, 2); ++i) {
+    attempt.mapped.robot[i] = robot_scratch_[i];
+    attempt.mapped.world[i] = world_scratch_[i];
+  }
+  result.pose_source = locate(attempt);
   result.world_T_robot = pose_;
   pose_iteration_ = k;
   // The poses whose registration fixed the rotation measure the turn rate.
   const bool registered = rotation_registered(result.pose_source);
   if (registered) turn_rate_.record(k, pose_.rotation);
-  rejected_turns_ = rejected && !registered ? rejected_turns_ + 1 : 0;
+  rejected_turns_ = attempt.rejected && !registered ? rejected_turns_ + 1 : 0;
   pose_from_map_ = from_map(result.pose_source);
   if (pose_from_map_) map_.record_map_pose(k, pose_);
   if (options_.match_unmapped || options_.pose_from_unmapped) place_provisional(seen);
+}
+
+PoseSource RltMapper::locate(PoseAttempt& a) {
+  // The thesis's pose (6.1: RltICP to the mapped points, the map frame at the start) first,
+  // then the fallbacks of the adaptive preset and of use_odometry, best-founded first. The order
+  // matters beyond preference: by_unmapped_points leaves its pairs in the scratch buffers for the
+  // two later provisional cases, and every case reads pose_ as the previous iteration left it.
+  using Case = std::optional<Rigid3> (RltMapper::*)(PoseAttempt&);
+  static constexpr std::pair<PoseSource, Case> kCases[] = {
+      {PoseSource::Start, &RltMapper::at_map_frame},
+      {PoseSource::MappedPoints, &RltMapper::by_mapped_points},
+      {PoseSource::TwoPoints, &RltMapper::by_two_mapped_points},
+      {PoseSource::UnmappedPoints, &RltMapper::by_unmapped_points},
+      {PoseSource::Odometry, &RltMapper::by_odometry},
+      {PoseSource::TwoUnmappedPoints, &RltMapper::by_two_unmapped_points},
+      {PoseSource::OnePoint, &RltMapper::by_one_mapped_point},
+      {PoseSource::OneUnmappedPoint, &RltMapper::by_unmapped_centroid},
+  };
+  for (const auto& [source, attempt] : kCases)
+    if (const std::optional<Rigid3> pose = (this->*attempt)(a)) {
+      pose_ = *pose;
+      return source;
+    }
+  return PoseSource::Held;  // no registration possible: the previous pose is kept
+}
+
+std::optional<Rigid3> RltMapper::at_map_frame(PoseAttempt& a) {
+  // The first iteration's robot frame is the map frame (thesis 6.3.3): the identity.
+  if (a.k != map_.first_iteration) return std::nullopt;
+  return Rigid3::identity();
+}
+
+std::optional<Rigid3> RltMapper::by_mapped_points(PoseAttempt& a) {
+  // RltICP of the observations to their points' map positions (thesis 6.1).
+  return a.mapped_registration;
+}
+
+std::optional<Rigid3> RltMapper::by_two_mapped_points(PoseAttempt& a) {
+  // Deviation (adaptive two_point_registration): exactly two mapped points, the rotation about
+  // their line from the latest map-registered pose. Not with dead reckoning, which does better.
+  if (a.prediction.dead_reckoned || a.mapped.count != 2) return std::nullopt;
+  return map_.pose_from_two_points(a.mapped.robot[0], a.mapped.robot[1], a.mapped.world[0], a.mapped.world[1]);
+}
+
+std::optional<Rigid3> RltMapper::by_unmapped_points(PoseAttempt& a) {
+  // Deviation (pose_from_unmapped): RltICP to the provisional positions too.
+  if (!options_.pose_from_unmapped) return std::nullopt;
+  const std::optional<Rigid3> pose = register_seen(a.seen, true, a.prediction, a.rejected);
+  if (!pose) return std::nullopt;
+  return average_provisional_on(options_) ? weigh_provisional(*pose, a.prediction.rotation) : *pose;
+}
+
+std::optional<Rigid3> RltMapper::by_odometry(PoseAttempt& a) {
+  // Fewer than three points to register (use_odometry): dead reckoning rather than a pose from
+  // one or two points.
+  return a.prediction.dead_reckoned;
+}
+
+std::optional<Rigid3> RltMapper::by_two_unmapped_points(PoseAttempt& a) {
+  // Deviation (adaptive average_provisional): two pairs, mapped or provisional, that the last
+  // register_seen left in the scratch buffers; as by_two_mapped_points, about their line.
+  if (!average_provisional_on(options_) || robot_scratch_.size() != 2) return std::nullopt;
+  const std::optional<Rigid3> pose =
+      register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1], pose_.rotation,
+                          pose_.rotation.col(1), map_.max_line_sine());
+  if (!pose) return std::nullopt;
+  return weigh_provisional(*pose, a.prediction.rotation);
+}
+
+std::optional<Rigid3> RltMapper::by_one_mapped_point(PoseAttempt& a) {
+  // Deviation (adaptive): one mapped point, the rotation turned on at the measured rate, the
+  // translation from that point.
+  if (a.mapped.count < 1) return std::nullopt;
+  return map_.pose_from_one_point(a.mapped.robot[0], a.mapped.world[0], turn_rate_, a.k);
+}
+
+std::optional<Rigid3> RltMapper::by_unmapped_centroid(PoseAttempt& a) {
+  // Deviation (adaptive average_provisional): one pair, two on a line too steep for two-point
+  // registration, or a rejected registration. The rotation turns on at the measured rate
+  // (turn_rate_window; none: the latest rotation); the position from the pairs' centroid (one
+  // pair: that pair; a rejected registration's swapped pair leaves it where it was).
+  if (!average_provisional_on(options_) || robot_scratch_.empty()) return std::nullopt;
+  return register_centroids(robot_scratch_, world_scratch_, a.prediction.rotation);
 }
 
 RltMapper::PosePrediction RltMapper::predict_pose(const ObservationFrame& frame) const {
@@ -363,67 +444,6 @@ Rigid3 RltMapper::weigh_provisional(const Rigid3& registered, const Eigen::Matri
   // its position from the pairs (left in the scratch buffers by register_seen) at their centroid.
   return register_centroids(robot_scratch_, world_scratch_,
                             interpolate_rotation(predicted, registered.rotation, options_.provisional_rotation_weight));
-}
-
-std::optional<PoseSource> RltMapper::register_pose(int k, const std::vector<PointId>& seen,
-                                                   const PosePrediction& prediction, MappedPairs& mapped,
-                                                   bool& rejected) {
-  const std::optional<Rigid3> mapped_pose = register_seen(seen, false, prediction, rejected);
-  // Fewer than three mapped pairs (adaptive preset): the one or two register_seen(false) found.
-  mapped.count = robot_scratch_.size();
-  for (std::size_t i = 0; i < std::min<std::size_t>(mapped.count, 2); ++i) {
-    mapped.robot[i] = robot_scratch_[i];
-    mapped.world[i] = world_scratch_[i];
-  }
-  std::optional<Rigid3> pose;
-  if (k == map_.first_iteration) {
-    pose_ = Rigid3::identity();
-    return PoseSource::Start;
-  }
-  if (mapped_pose) {
-    pose_ = *mapped_pose;
-    return PoseSource::MappedPoints;
-  }
-  if (!prediction.dead_reckoned && mapped.count == 2 &&
-      (pose = map_.pose_from_two_points(mapped.robot[0], mapped.robot[1], mapped.world[0], mapped.world[1]))) {
-    pose_ = *pose;
-    return PoseSource::TwoPoints;
-  }
-  if (options_.pose_from_unmapped && (pose = register_seen(seen, true, prediction, rejected))) {
-    pose_ = average_provisional_on(options_) ? weigh_provisional(*pose, prediction.rotation) : *pose;
-    return PoseSource::UnmappedPoints;
-  }
-  if (prediction.dead_reckoned) {
-    // Fewer than three points to register (use_odometry): dead reckoning rather than a pose from
-    // one or two points.
-    pose_ = *prediction.dead_reckoned;
-    return PoseSource::Odometry;
-  }
-  return std::nullopt;
-}
-
-PoseSource RltMapper::provisional_fallback(int k, const PosePrediction& prediction, const MappedPairs& mapped) {
-  std::optional<Rigid3> pose;
-  if (average_provisional_on(options_) && robot_scratch_.size() == 2 &&
-      (pose = register_two_points(robot_scratch_[0], robot_scratch_[1], world_scratch_[0], world_scratch_[1],
-                                  pose_.rotation, pose_.rotation.col(1), map_.max_line_sine()))) {
-    // register_seen(true) left its two pairs (mapped or provisional) in the scratch buffers.
-    pose_ = weigh_provisional(*pose, prediction.rotation);
-    return PoseSource::TwoUnmappedPoints;
-  }
-  if (mapped.count >= 1 && (pose = map_.pose_from_one_point(mapped.robot[0], mapped.world[0], turn_rate_, k))) {
-    pose_ = *pose;
-    return PoseSource::OnePoint;
-  }
-  if (average_provisional_on(options_) && !robot_scratch_.empty()) {
-    // One pair, two on a line too steep for two-point registration, or a rejected registration.
-    // The rotation turns on at the measured rate (turn_rate_window; none: the latest rotation);
-    // the position from the pairs' centroid (one pair: that pair; a rejected registration's
-    // swapped pair leaves it where it was).
-    pose_ = register_centroids(robot_scratch_, world_scratch_, prediction.rotation);
-    return PoseSource::OneUnmappedPoint;
-  }
-  return PoseSource::Held;
 }
 
 void RltMapper::place_provisional(const std::vector<PointId>& seen) {

@@ -2,8 +2,7 @@
 
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/config/scenario_half.hpp"
-#include "relslam/eval/experiments/planar_replay.hpp"
-#include "relslam/eval/experiments/run_replay.hpp"
+#include "relslam/eval/experiments/algorithm_family.hpp"
 #include "relslam/eval/io/image_file.hpp"
 #include "relslam/eval/io/map_render.hpp"
 #include "relslam/eval/io/planar_render.hpp"
@@ -16,6 +15,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <type_traits>
 
 namespace relslam::eval {
 namespace {
@@ -37,11 +37,12 @@ RenderOptions render_options(const RenderArgs& args) {
   return o;
 }
 
-// What a kind of run can be drawn as: a point run in either view, a planar run from the top
-// only (its world is 2½D: walls span their whole height, thesis 4.2.3).
-void check_view(const RunReplay&, const RenderOptions&) {}
-void check_view(const PlanarReplay&, const RenderOptions& options) {
-  if (options.view != RenderView::Top) throw InputError("", 0, "--view", "a planar run is drawn from the top only");
+// What a kind of run can be drawn as: the views its half's pictures have (a planar run only
+// the top one: its world is 2½D, walls span their whole height, thesis 4.2.3).
+template <class Replay>
+void check_view(const RenderOptions& options) {
+  if (!Replay::side_view_refusal.empty() && options.view != RenderView::Top)
+    throw InputError("", 0, "--view", std::string(Replay::side_view_refusal));
 }
 
 // The part of the world to show: --center/--span, else the fit rule (for either kind of scene).
@@ -90,13 +91,11 @@ int render_video(const RenderArgs& args, Replay& replay, const RenderOptions& op
   return 0;
 }
 
-// The scene at k, with a progress line where the replay can show one.
-RenderScene scene_with_progress(RunReplay& replay, int k, bool progress) { return replay.scene_at(k, progress); }
-PlanarScene scene_with_progress(PlanarReplay& replay, int k, bool) { return replay.scene_at(k); }
-
+// One picture or video of a replayed run, whichever half it fed: the drawing overloads
+// (map_render.hpp, planar_render.hpp) follow the scene's type.
 template <class Replay>
 int render_replay(const RenderArgs& args, Replay&& replay, const RenderOptions& options) {
-  check_view(replay, options);
+  check_view<std::decay_t<Replay>>(options);
   const int last = args.iteration < 0 ? replay.iterations() - 1 : args.iteration;
   if (last < 0 || last >= replay.iterations())
     throw InputError(
@@ -106,7 +105,7 @@ int render_replay(const RenderArgs& args, Replay&& replay, const RenderOptions& 
     render_video(args, replay, options, last);
     if (args.out.empty()) return 0;
   }
-  const auto scene = scene_with_progress(replay, last, !args.quiet);
+  const auto scene = replay.scene_at(last, !args.quiet);
   write_image(args.out, render_map(scene, frame_for(args, scene, options), options));
   warn_if_replay_differs(replay, last, args.quiet);
   if (!args.quiet) std::printf("wrote %s: %s, iteration %d\n", args.out.c_str(), replay.algorithm().c_str(), last);
@@ -200,11 +199,11 @@ int run_render(const RenderArgs& args) {
                           std::filesystem::exists(std::filesystem::path(args.run_dir) / "manifest.json");
   if (args.overview || by_default) return render_overview_of(args, options);
   ReplayManifest manifest = read_replay_manifest(args.run_dir);
-  // The one place the run's kind matters: each replay rebuilds its own kind of scene, and the
-  // drawing overloads (map_render.hpp, planar_render.hpp) follow the scene's type.
-  if (feeds_planes(manifest.kind()))
-    return render_replay(args, PlanarReplay(std::move(manifest), args.algorithm), options);
-  return render_replay(args, RunReplay(std::move(manifest), args.algorithm), options);
+  // The run's family (half_of its kind) replays it; the rest is written once.
+  return with_family(half_of(manifest.kind()), [&](auto family) {
+    using Family = decltype(family);
+    return render_replay(args, typename Family::Replay(std::move(manifest), args.algorithm), options);
+  });
 }
 
 }  // namespace relslam::eval

@@ -95,11 +95,12 @@ Tabulated write_tables(bool quiet, const std::filesystem::path& dir, const Sweep
   const std::vector<BatchResult> results = read_cells(plan);
   Tabulated counts;
   for (const BatchResult& r : results) counts.unfinished += !r.error.empty(), counts.damaged += damaged(r);
-  write_runs_table(dir, plan.axes, results);
+  const ScenarioHalf half = sweep_half(results);
+  write_runs_table(dir, plan.axes, results, half);
   const std::vector<SweepCell> cells = sweep_cells(results);
-  write_aggregate(dir, plan.axes, cells, planar(results));
+  write_aggregate(dir, plan.axes, cells, half);
   if (!quiet) {
-    print_cells(plan.axes, cells, planar(results));
+    print_cells(plan.axes, cells, half);
     std::printf("wrote %s: sweep.csv (%zu runs, %zu finished), aggregate.csv (%zu cells)\n", dir.c_str(),
                 results.size(), results.size() - counts.unfinished, cells.size());
   }

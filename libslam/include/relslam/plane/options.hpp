@@ -514,7 +514,12 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.nested("rules", o.rules);
 }
 
-// Every violated constraint, fields named as their keys ("local_match.box_margin").
+// Every violated constraint, fields named as their keys ("local_match.box_margin"): the one set
+// of rules for these options. As for Relative Point's (core/checked_options.hpp), the scenario
+// loader is the one place that checks them for user input (relative_plane.*: exit 2 with
+// file:line: key: problem); RltXPointsS's constructor runs them again through checked_options
+// only as a guard against options built in code (logic_error). No stage checks an option
+// itself: the narrow views the stages read are cut from options that passed here.
 std::vector<OptionIssue> check(const RelativePlaneOptions& options);
 
 }  // namespace relslam::plane

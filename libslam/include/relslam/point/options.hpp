@@ -354,9 +354,11 @@ inline PointSlamOptions preset_options(Preset preset) {
   return o;
 }
 
-// The scenario keys of PointSlamOptions (relative_point.*): help and checks per field, in the
-// order of the key table. A bound that is another field's value is read from `o`.
-void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
+// describe's three parts, in the order of the key table: matching (thesis 6.2, 6.5.1), groups
+// and the current pose (6.3-6.5.4 and the deviations beyond the thesis), and what maintains the
+// map (relaxation, indices, binning, merging, capacities).
+namespace describe_parts {
+void matching(OptionsOf<PointSlamOptions> auto& o, auto& f) {
   f.choice("preset", o.preset,
            "thesis: the thesis's constants (Chapter 6 scenarios); adaptive: group creation from the points in view, "
            "bounds from the noise, a late map frame when the first cannot be rooted (beyond the thesis)",
@@ -376,6 +378,8 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
           at_least(o.local_bound));
   f.field("global_cell_size", o.global_cell_size, "global incremental grid cell, units",
           at_least(std::max(o.global_bound, o.merge_bound)));
+}
+void groups_and_pose(OptionsOf<PointSlamOptions> auto& o, auto& f) {
   f.nested("temporary_group", o.temporary_group, "temporary groups");
   f.nested("final_group", o.final_group, "final groups");
   f.nested("level3", o.level3);
@@ -426,6 +430,8 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
   f.field("odometry_max_shift", o.odometry_max_shift,
           "use_odometry: a registration further than this from the dead-reckoned position is a mismatch, units",
           above(0.0));
+}
+void maintenance(OptionsOf<PointSlamOptions> auto& o, auto& f) {
   f.choice("global_relaxation", o.global_relaxation,
            "joint solve of the group-to-world transforms: off (thesis), on_loop_closure or periodic (beyond the "
            "thesis)",
@@ -454,9 +460,20 @@ void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
   f.field("charting_capacity", o.charting_capacity, "iterations kept by RltPointCharting (2048 with level 3)",
           at_least(history_window(o)), at_most(kMaxChartingCapacity));
 }
+}  // namespace describe_parts
+
+// The scenario keys of PointSlamOptions (relative_point.*): help and checks per field, in the
+// order of the key table. A bound that is another field's value is read from `o`.
+void describe(OptionsOf<PointSlamOptions> auto& o, auto& f) {
+  describe_parts::matching(o, f);
+  describe_parts::groups_and_pose(o, f);
+  describe_parts::maintenance(o, f);
+}
 
 // Every violated constraint, fields named as in the struct ("final_group.prev_min"): the
-// description's checks, then the one rule no single field carries.
+// description's checks, then the one rule no single field carries. The scenario loader checks
+// user input with it (exit 2); RltMapper's constructor only as a guard (checked_options,
+// core/checked_options.hpp).
 std::vector<OptionIssue> check(const PointSlamOptions& options);
 
 }  // namespace relslam::point

@@ -125,7 +125,8 @@ class RltMapper {
   // [relax] When global relaxation runs (beyond the thesis).
   void schedule_relaxation(int k, bool loop_closed, StepResult& result);
 
-  // [pose] Current position (thesis 6.1): prediction, registration, then the provisional fallback.
+  // [pose] Current position (thesis 6.1): the prediction, the registration to mapped points,
+  // then the first of the pose cases (locate) that gives a pose.
   void update_pose(const ObservationFrame& frame, StepResult& result);
   // Where the robot should be before registering: dead-reckoned (use_odometry) and its rotation,
   // or the latest rotation turned on at the measured rate.
@@ -144,13 +145,29 @@ class RltMapper {
   // registration is dropped and sets `rejected`.
   std::optional<Rigid3> register_seen(const std::vector<PointId>& seen, bool provisional,
                                       const PosePrediction& prediction, bool& rejected);
-  // The poses from registration (start, mapped points, two points, unmapped points, odometry):
-  // sets pose_ and says from what, or nullopt when none came.
-  std::optional<PoseSource> register_pose(int k, const std::vector<PointId>& seen, const PosePrediction& prediction,
-                                          MappedPairs& mapped, bool& rejected);
-  // The provisional fallback (adaptive): two unmapped points, one point, one unmapped point, or
-  // the pose held.
-  PoseSource provisional_fallback(int k, const PosePrediction& prediction, const MappedPairs& mapped);
+  // What the pose cases of one iteration share: the points seen, the prediction, the
+  // registration to mapped points and its first pairs, and whether a registration was rejected
+  // as implausible (the cases that register again may set it).
+  struct PoseAttempt {
+    int k;
+    const std::vector<PointId>& seen;
+    PosePrediction prediction;
+    std::optional<Rigid3> mapped_registration;  // register_seen(seen, false)
+    MappedPairs mapped;
+    bool rejected = false;
+  };
+  // The pose cases, one per PoseSource but Held, each the pose it gives or nothing; locate tries
+  // them in their table's order (rlt_mapper.cpp), sets pose_ from the first that gives one and
+  // says which (Held when none does).
+  PoseSource locate(PoseAttempt& a);
+  std::optional<Rigid3> at_map_frame(PoseAttempt& a);
+  std::optional<Rigid3> by_mapped_points(PoseAttempt& a);
+  std::optional<Rigid3> by_two_mapped_points(PoseAttempt& a);
+  std::optional<Rigid3> by_unmapped_points(PoseAttempt& a);
+  std::optional<Rigid3> by_odometry(PoseAttempt& a);
+  std::optional<Rigid3> by_two_unmapped_points(PoseAttempt& a);
+  std::optional<Rigid3> by_one_mapped_point(PoseAttempt& a);
+  std::optional<Rigid3> by_unmapped_centroid(PoseAttempt& a);
   // provisional_rotation_weight's pose: part of `registered`'s rotation, the position from the
   // scratch pairs' centroid.
   Rigid3 weigh_provisional(const Rigid3& registered, const Eigen::Matrix3d& predicted) const;

@@ -2,9 +2,11 @@
 // Many runs of one scenario with different overrides, in parallel: what sweeps and the EKF
 // tuning are made of. Each run gets its own folder; a failing run is recorded, not fatal.
 
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/metrics/run_summary.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,9 @@ struct BatchResult {
   BatchJob job;
   std::string error;             // empty when the run went through (its algorithms may still have failed)
   std::vector<SummaryRow> rows;  // per algorithm, then the relative_point/ekf6d ratio row when both ran
+  // The half the run's scenario fed (half_of its kind), once it was loaded: which columns its
+  // rows are tabulated in. None when the run never got that far.
+  std::optional<ScenarioHalf> half = std::nullopt;
 };
 
 // Runs every job (relslam run semantics: simulate and run the algorithms into job.folder) on

@@ -59,6 +59,15 @@ class PlaneRecorder {
 
  private:
   bool running() const { return status_.kind == RunStatus::Kind::NotRun || status_.kind == RunStatus::Kind::Ok; }
+  // finish's parts: planes.csv (each mapped plane against its true wall) with the map's counts
+  // for the row; the row's trajectory scores; the scores only the plane half has.
+  struct MapCounts {
+    int walls_mapped = 0;  // distinct true walls a mapped plane stands for
+    int duplicates = 0;    // second planes for one face of a wall
+  };
+  MapCounts write_planes_table();
+  void score_trajectory(SummaryRow& row) const;
+  PlanarScores planar_scores(int walls_mapped);
 
   std::unique_ptr<PlaneAlgorithm> algorithm_;
   const std::vector<PlaneObject>& walls_;

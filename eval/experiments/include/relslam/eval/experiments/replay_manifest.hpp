@@ -1,7 +1,7 @@
 #pragma once
-// What every replay of a run folder starts from (run_replay.hpp for point runs,
-// planar_replay.hpp for planar ones): the manifest.json of relslam run, whose resolved scenario
-// and seed make the run deterministic, and the recorded trajectory a replay checks itself by.
+// What every replay of a run folder starts from (replay.hpp, for either half): the manifest.json
+// of relslam run, whose resolved scenario and seed make the run deterministic, and the recorded
+// trajectory a replay checks itself by.
 
 #include "relslam/core/rigid.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"

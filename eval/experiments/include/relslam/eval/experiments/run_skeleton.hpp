@@ -37,6 +37,7 @@ class RunSkeleton {
     const auto start = std::chrono::steady_clock::now();
     Progress bar(source_.label(), source_.frames(), progress);
     ExperimentResult result;
+    result.half = Family::half;
     // Interrupted, the run finishes with the frames processed so far, every row says where it
     // was cut, and the command marks the manifest "interrupted".
     const std::optional<int> stopped_at = stream(bar);

@@ -11,13 +11,15 @@
 
 namespace relslam::eval {
 
-// Whether the runs score planes (then the columns are named for planes, summary_column).
-bool planar(const std::vector<BatchResult>& results);
+// The half the sweep's scenario feeds, as its runs recorded it (BatchResult::half, half_of the
+// scenario's kind): every table below names its columns as that half's summary columns do
+// (summary_column). The point half when no run got as far as loading the scenario.
+ScenarioHalf sweep_half(const std::vector<BatchResult>& results);
 
 // sweep.csv in `out`: one row per run and algorithm; a run that failed (BatchResult::error) as
 // one row with status "error: ...".
 void write_runs_table(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
-                      const std::vector<BatchResult>& results);
+                      const std::vector<BatchResult>& results, ScenarioHalf half);
 
 // Per combination and algorithm: how many runs were planned, the rows usable for statistics,
 // and the seeds whose run is missing, failed or gave no usable row (so no mean hides them).
@@ -38,9 +40,9 @@ bool any_run_failed(const std::vector<BatchResult>& results);
 
 // aggregate.csv in `out`: per cell the mean, standard deviation and 95 % CI of each metric.
 void write_aggregate(const std::filesystem::path& out, const std::vector<GridAxis>& axes,
-                     const std::vector<SweepCell>& cells, bool planar);
+                     const std::vector<SweepCell>& cells, ScenarioHalf half);
 
 // The cells as a table on stdout.
-void print_cells(const std::vector<GridAxis>& axes, const std::vector<SweepCell>& cells, bool planar);
+void print_cells(const std::vector<GridAxis>& axes, const std::vector<SweepCell>& cells, ScenarioHalf half);
 
 }  // namespace relslam::eval

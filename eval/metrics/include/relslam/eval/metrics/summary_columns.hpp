@@ -4,6 +4,7 @@
 // names the map scores for planes and adds its pose and key-point scores); write_summary writes
 // whichever table it is given, then every row's own columns. Adding a column is one entry.
 
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/metrics/run_summary.hpp"
 
@@ -30,6 +31,9 @@ struct SummaryColumn {
 const std::vector<SummaryColumn>& point_summary_columns();
 // The plane half's (thesis Chapter 4): map scores over planes, then PlanarScores.
 const std::vector<SummaryColumn>& plane_summary_columns();
+// The columns of a half (half_of the scenario's kind): what every table of a run's or a sweep's
+// scores is written in, so no table guesses the half from its rows.
+const std::vector<SummaryColumn>& summary_columns(ScenarioHalf half);
 
 // One row per algorithm in the columns of `table` (its family's), then
 // every row's own columns. Then, when both relative_point and ekf6d ran, a row
@@ -40,9 +44,9 @@ void write_summary(const std::filesystem::path& file, const std::vector<SummaryC
                    const std::vector<SummaryRow>& rows, const std::optional<SummaryRow>& ratio = std::nullopt,
                    const std::vector<SummaryRow>& more_ratios = {});
 
-// A point-half summary column as the plane half names it ("final_landmark_error" ->
-// "final_map_error"), or as is for the point half. sweep.csv, aggregate.csv and the summary
-// reader find their columns through it.
-std::string summary_column(std::string_view name, bool planar);
+// A point-half summary column as `half` names it ("final_landmark_error" is "final_map_error"
+// for the plane half; as is for the point half), found in the half's column table by its
+// `shared` name. sweep.csv, aggregate.csv and the summary reader find their columns through it.
+std::string summary_column(std::string_view name, ScenarioHalf half);
 
 }  // namespace relslam::eval

@@ -1,6 +1,4 @@
-#include "relslam/eval/experiments/run_replay.hpp"
-
-#include "relslam/eval/io/progress.hpp"
+#include "relslam/eval/experiments/point_replay.hpp"
 
 #include "relslam/eval/algorithms/map_frame_gauge.hpp"
 #include "relslam/eval/algorithms/registry.hpp"
@@ -15,8 +13,7 @@ namespace relslam::eval {
 
 namespace fs = std::filesystem;
 
-struct RunReplay::State {
-  fs::path run_dir;
+struct PointReplay::State {
   std::string algorithm;
   LoadedScenario loaded;
   sim::Simulator simulator;
@@ -25,13 +22,11 @@ struct RunReplay::State {
   MapFrameGauge gauge;                     // its map frame in the world, as the run scored it
   std::unique_ptr<Algorithm> filter;       // ekf6d
   bool filter_failed = false;              // it threw: its last good state is shown from then on
-  int next = 0;                            // the next iteration to feed
   std::vector<Eigen::Vector3d> true_path, estimated_path;
   Rigid3 true_pose, estimated_pose;
 
-  State(const fs::path& dir, std::string name, LoadedScenario scenario)
-      : run_dir(dir),
-        algorithm(std::move(name)),
+  State(std::string name, LoadedScenario scenario)
+      : algorithm(std::move(name)),
         loaded(std::move(scenario)),
         simulator(build_simulator(loaded)),
         sensor(sensor_of(loaded.scenario.sim)) {}
@@ -77,13 +72,9 @@ struct RunReplay::State {
   }
 };
 
-RunReplay::RunReplay(const fs::path& run_dir, const std::string& algorithm)
-    : RunReplay(read_replay_manifest(run_dir), algorithm) {}
-
-RunReplay::RunReplay(ReplayManifest manifest, const std::string& requested) {
+PointReplay::PointReplay(ReplayManifest manifest, const std::string& requested) {
   const std::string algorithm = requested.empty() ? "relative_point" : requested;
   const fs::path file = manifest.file;
-  const fs::path run_dir = manifest.run_dir;
   LoadedScenario loaded = std::move(manifest.loaded);
   if (loaded.scenario.kind != ScenarioKind::Simulation)
     throw InputError(file.string(), 0, "",
@@ -93,7 +84,7 @@ RunReplay::RunReplay(ReplayManifest manifest, const std::string& requested) {
     throw InputError("", 0, "--algorithm", "render draws relative_point or ekf6d, not " + algorithm);
   if (std::find(listed.begin(), listed.end(), algorithm) == listed.end())
     throw InputError(file.string(), 0, "--algorithm", "the run did not include " + algorithm);
-  state_ = std::make_unique<State>(run_dir, algorithm, std::move(loaded));
+  state_ = std::make_unique<State>(algorithm, std::move(loaded));
   const Scenario& scenario = state_->loaded.scenario;
   if (algorithm == "relative_point") {
     state_->mapper.emplace(scenario.relative_point, relax::solve_relaxation);
@@ -102,24 +93,15 @@ RunReplay::RunReplay(ReplayManifest manifest, const std::string& requested) {
   }
 }
 
-RunReplay::RunReplay(RunReplay&&) noexcept = default;
-RunReplay::~RunReplay() = default;
+PointReplay::PointReplay(PointReplay&&) noexcept = default;
+PointReplay::~PointReplay() = default;
 
-int RunReplay::iterations() const { return state_->simulator.iterations(); }
+int PointReplay::iterations() const { return state_->simulator.iterations(); }
 
-RenderScene RunReplay::scene_at(int k, bool progress) {
-  State& s = *state_;
-  if (k < s.next - 1 || k >= iterations())
-    throw InputError("", 0, "--iteration",
-                     "must be in 0.." + std::to_string(iterations() - 1) + (k < s.next - 1 ? " and not go back" : "") +
-                         ", got " + std::to_string(k));
-  Progress bar("replay " + s.algorithm, k + 1, progress);
-  while (s.next <= k) {
-    s.feed(s.simulator.frame(s.next++));
-    bar.update(s.next);
-  }
-  bar.finish();
+void PointReplay::feed(int k) { state_->feed(state_->simulator.frame(k)); }
 
+RenderScene PointReplay::scene(int k) const {
+  const State& s = *state_;
   RenderScene scene;
   const sim::World& world = s.simulator.world();
   for (int id = 0; id < world.size(); ++id) {
@@ -143,7 +125,7 @@ RenderScene RunReplay::scene_at(int k, bool progress) {
   return scene;
 }
 
-RenderScene RunReplay::world_outline(int last) const {
+RenderScene PointReplay::world_outline(int last) const {
   RenderScene scene;
   scene.true_points = state_->simulator.world().anchors();
   for (int k = 0; k <= last && k < iterations(); ++k)
@@ -151,11 +133,8 @@ RenderScene RunReplay::world_outline(int last) const {
   return scene;
 }
 
-const std::string& RunReplay::algorithm() const { return state_->algorithm; }
+const std::string& PointReplay::algorithm() const { return state_->algorithm; }
 
-std::string RunReplay::check_against_recorded(int k) const {
-  const State& s = *state_;
-  return compare_with_recorded(s.run_dir / s.algorithm / "trajectory.tum", k, s.estimated_pose.translation);
-}
+std::optional<Eigen::Vector3d> PointReplay::position() const { return state_->estimated_pose.translation; }
 
 }  // namespace relslam::eval

@@ -1,4 +1,4 @@
-#include "relslam/eval/experiments/planar_replay.hpp"
+#include "relslam/eval/experiments/plane_replay.hpp"
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/config/input_error.hpp"
@@ -58,22 +58,20 @@ std::optional<sim::ViewingFrustum> drawn_frustum(const sim::PlaneSensorOptions& 
 
 }  // namespace
 
-struct PlanarReplay::State {
-  fs::path run_dir;
+struct PlaneReplay::State {
   LoadedScenario loaded;
   PlanarSimulationSource source;
   std::string name;
   std::unique_ptr<PlaneAlgorithm> algorithm;
   bool failed = false;  // it threw: its last good state is shown from then on, as the run recorded it
-  int next = 0;         // the next iteration to feed
   PlaneFrame frame;     // the last one fed
   std::optional<PlanarPose> estimated_pose;  // the last valid one
   bool pose_now = false;                     // estimated at the last iteration fed
   PlanarPose true_pose;
   std::vector<Eigen::Vector2d> true_path, estimated_path;
 
-  State(fs::path dir, LoadedScenario scenario, std::string algorithm_name)
-      : run_dir(std::move(dir)), loaded(std::move(scenario)), source(loaded), name(std::move(algorithm_name)) {
+  State(LoadedScenario scenario, std::string algorithm_name)
+      : loaded(std::move(scenario)), source(loaded), name(std::move(algorithm_name)) {
     algorithm = make_plane_algorithm(name, {loaded.scenario, source.start()});
   }
 
@@ -116,28 +114,24 @@ struct PlanarReplay::State {
   }
 };
 
-PlanarReplay::PlanarReplay(ReplayManifest manifest, const std::string& algorithm) {
+PlaneReplay::PlaneReplay(ReplayManifest manifest, const std::string& algorithm) {
   if (!feeds_planes(manifest.kind()))
     throw InputError(manifest.file.string(), 0, "", "not a planar run (kind \"planar\")");
   LoadedScenario loaded = with_map(std::move(manifest.loaded), manifest.json);
   std::string name = chosen_algorithm(loaded, manifest.file, algorithm);
-  state_ = std::make_unique<State>(manifest.run_dir, std::move(loaded), std::move(name));
+  state_ = std::make_unique<State>(std::move(loaded), std::move(name));
 }
 
-PlanarReplay::PlanarReplay(PlanarReplay&&) noexcept = default;
-PlanarReplay::~PlanarReplay() = default;
+PlaneReplay::PlaneReplay(PlaneReplay&&) noexcept = default;
+PlaneReplay::~PlaneReplay() = default;
 
-int PlanarReplay::iterations() const { return static_cast<int>(state_->source.frames()); }
-const std::string& PlanarReplay::algorithm() const { return state_->name; }
+int PlaneReplay::iterations() const { return static_cast<int>(state_->source.frames()); }
+const std::string& PlaneReplay::algorithm() const { return state_->name; }
 
-PlanarScene PlanarReplay::scene_at(int k) {
-  State& s = *state_;
-  if (k < s.next - 1 || k >= iterations())
-    throw InputError("", 0, "--iteration",
-                     "must be in 0.." + std::to_string(iterations() - 1) + (k < s.next - 1 ? " and not go back" : "") +
-                         ", got " + std::to_string(k));
-  while (s.next <= k) s.feed(s.source.frame(s.next++));
+void PlaneReplay::feed(int k) { state_->feed(state_->source.frame(k)); }
 
+PlanarScene PlaneReplay::scene(int k) const {
+  const State& s = *state_;
   PlanarScene scene = world_outline(-1);
   scene.true_path = s.true_path;
   scene.true_pose = s.true_pose;
@@ -156,7 +150,7 @@ PlanarScene PlanarReplay::scene_at(int k) {
   return scene;
 }
 
-PlanarScene PlanarReplay::world_outline(int last) const {
+PlanarScene PlaneReplay::world_outline(int last) const {
   const State& s = *state_;
   PlanarScene scene;
   // From the map, not source.walls(): that table is indexed by wall id and holds placeholders
@@ -168,12 +162,11 @@ PlanarScene PlanarReplay::world_outline(int last) const {
   return scene;
 }
 
-std::string PlanarReplay::check_against_recorded(int k) const {
+std::optional<Eigen::Vector3d> PlaneReplay::position() const {
   const State& s = *state_;
   // The run wrote a trajectory row only where it had a pose (plane_recorder.cpp).
-  if (!s.pose_now || k != s.next - 1) return "";
-  return compare_with_recorded(s.run_dir / s.name / "trajectory.tum", k,
-                               rigid_from_planar(*s.estimated_pose).translation);
+  if (!s.pose_now) return std::nullopt;
+  return rigid_from_planar(*s.estimated_pose).translation;
 }
 
 }  // namespace relslam::eval
