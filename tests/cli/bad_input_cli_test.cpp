@@ -1,0 +1,99 @@
+// Bad input to the readers of the range sensors, the point clouds and the plane files, each a
+// case that crashed, ran away or was accepted as nonsense: each must now stop with exit 2 and a
+// located message (file:line or record: field: problem), within a time bound and 1 GB. The
+// inputs the fuzzers found (tests/fuzz/README.md) are run from the seed corpora in place.
+
+#include "located_error.hpp"
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace relslam {
+namespace {
+
+#ifdef RELSLAM_SANITIZED
+constexpr double kSeconds = 120;
+#else
+constexpr double kSeconds = 20;
+#endif
+
+void expect_located_error(const std::vector<std::string>& arguments, const std::string& located) {
+  test::expect_located_error(arguments, located, kSeconds);
+}
+
+std::string corpus(const std::string& file) { return test::source_path("tests/fuzz/corpus/" + file).string(); }
+
+// `relslam extract --rawlog file`: exit 2 with `located`.
+void expect_extract_refused(const std::string& file, const std::string& located) {
+  expect_located_error({"extract", "--rawlog", file, "--out", "x", "--extractors", "em2", "--quiet"}, located);
+  expect_located_error({"rawlog", file}, located);
+}
+
+// ---- point-cloud rawlogs ----------------------------------------------------------------------
+
+// Velodyne raw packets without the sensor's calibration: MRPT's decoder threw its own
+// assertion (laserId < num_lasers), printed with its call stack, exit 1.
+TEST(BadInput, VelodynePacketsWithoutCalibrationAreRefusedAtTheField) {
+  const std::string file = corpus("point_cloud/found_velodyne_no_calibration.rawlog");
+  expect_extract_refused(file, file + ":1: CObservationVelodyneScan.calibration: raw packets need the calibration");
+}
+
+// ---- plane files (relslam run --planes) ---------------------------------------------------------
+
+const char* const kHeader = "iteration,index,kp1_x,kp1_z,kp2_x,kp2_z";
+
+// `relslam run --planes planes.csv [extra]` with the given file text: exit 2 with `located`
+// (the scratch folder's file name followed by it).
+void expect_planes_refused(const std::string& planes, const std::string& located,
+                           const std::vector<std::pair<std::string, std::string>>& truth = {}) {
+  test::ScratchDir dir;
+  test::write_file(dir / "planes.csv", planes);
+  std::vector<std::string> args = {"run", "--planes", (dir / "planes.csv").string(), "--out", (dir / "run").string(),
+                                   "-q"};
+  for (const auto& [flag, text] : truth) {
+    test::write_file(dir / (flag.substr(2) + ".csv"), text);
+    args.insert(args.end(), {flag, (dir / (flag.substr(2) + ".csv")).string()});
+  }
+  expect_located_error(args, located);
+}
+
+// One row at iteration 9,999,999 held ten million empty frames: 89 s and 3.1 GB, then exit 0.
+TEST(BadInput, PlaneFileWithAnIterationFarAheadIsRefusedAtItsLine) {
+  expect_planes_refused(std::string(kHeader) + "\n0,0,1,2,3,4\n9999999,0,1,2,3,4\n",
+                        "planes.csv:3: iteration: 9999998 iterations without a plane since the previous row");
+}
+
+// Accepted and run with status ok: planes 1e300 away (map empty), an upside-down height range,
+// a true_wall that truncated to another int, a true wall that is not among the truth walls.
+TEST(BadInput, PlaneFileWithNonsenseValuesIsRefusedAtTheColumn) {
+  const std::string h = kHeader;
+  expect_planes_refused(h + "\n0,0,1e300,2,-1e300,4\n", "planes.csv:2: kp1_x: beyond +-1e+06 m, got 1e+300");
+  expect_planes_refused(h + ",y_lo,y_hi\n0,0,1,2,3,4,0,2\n1,0,1,2,3,4,2,1\n",
+                        "planes.csv:3: y_hi: the height range must not be upside down");
+  expect_planes_refused(h + ",true_wall\n0,0,1,2,3,4,99999999999\n",
+                        "planes.csv:2: true_wall: expected -1 (unknown) or 0 to 100000");
+  expect_planes_refused(h + ",true_wall\n0,0,1,2,3,4,0\n0,1,1,2,3,5,2\n",
+                        "planes.csv:3: true_wall: wall 2 is not in the truth walls",
+                        {{"--truth-walls", "id,a_x,a_z,b_x,b_z,height\n0,-3,4,3,4,2.5\n1,3,4,3,-1,2.5\n"}});
+}
+
+// Truth walls a map file may not hold (a repeated id overwrote the first wall, a wall without
+// length or height was scored against) and a truth pose out of reach: accepted, exit 0.
+TEST(BadInput, PlaneFileTruthIsHeldToTheMapRules) {
+  const std::string planes = std::string(kHeader) + "\n0,0,1,2,3,4\n";
+  const std::string walls = "id,a_x,a_z,b_x,b_z,height\n0,-3,4,3,4,2.5\n";
+  expect_planes_refused(planes, "truth-walls.csv:3: id: repeats the id 0",
+                        {{"--truth-walls", walls + "0,3,4,3,-1,2.5\n"}});
+  expect_planes_refused(planes, "truth-walls.csv:3: b_x: equals a [3, 4]",
+                        {{"--truth-walls", walls + "1,3,4,3,4,2.5\n"}});
+  expect_planes_refused(planes, "truth-walls.csv:3: height: must be > 0, got -2.5",
+                        {{"--truth-walls", walls + "1,3,4,3,-1,-2.5\n"}});
+  expect_planes_refused(planes, "truth-path.csv:2: x: beyond +-1e+06 m",
+                        {{"--truth-path", "iteration,x,z,heading_rad\n0,-1e300,0,0\n"}});
+}
+
+}  // namespace
+}  // namespace relslam
