@@ -41,6 +41,37 @@ TEST(BadInput, VelodynePacketsWithoutCalibrationAreRefusedAtTheField) {
   expect_extract_refused(file, file + ":1: CObservationVelodyneScan.calibration: raw packets need the calibration");
 }
 
+// ---- point files (relslam extract --points) ------------------------------------------------
+
+// `relslam extract --points name` with the given text: exit 2 with "name:" + `located`.
+void expect_points_refused(const std::string& name, const std::string& text, const std::string& located) {
+  test::ScratchDir dir;
+  test::write_file(dir / name, text);
+  expect_located_error({"extract", "--points", (dir / name).string(), "--out", (dir / "x").string(), "--extractors",
+                        "em2", "--quiet"},
+                       name + located);
+}
+
+// Open3D sized the cloud to the header's count before reading: a PCD stating 10^8 points over
+// one data line took 5 GB and 108 s and gave 10^8 points at the origin (exit 0); a PLY stating
+// 2·10^9 vertices threw bad_alloc (exit 1); a PLY without y left it uninitialised.
+TEST(BadInput, PointFileHeadersAreCheckedBeforeOpen3dReadsThem) {
+  const std::string pcd = "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
+  expect_points_refused("a.pcd", pcd + "WIDTH 9999999\nHEIGHT 1\nPOINTS 9999999\nDATA ascii\n1 2 3\n",
+                        ":8: POINTS: 9999999 points, the data has 1 lines");
+  expect_points_refused("b.pcd", pcd + "WIDTH 99999999\nHEIGHT 1\nPOINTS 99999999\nDATA ascii\n1 2 3\n",
+                        ":6: WIDTH: must be in [1, 16777216]");
+  expect_points_refused("c.pcd", pcd + "WIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA binary\n0123456789",
+                        ":9: DATA: 2 points need 24 bytes, the file has 10");
+  expect_points_refused("d.pcd", "FIELDS x y z\nSIZE 8 8 8\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
+                        ":1: FIELDS x: type F of 8 bytes");
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex ";
+  expect_points_refused("a.ply", ply + "2000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n",
+                        ":3: element vertex: must be in [1, 16777216]");
+  expect_points_refused("b.ply", ply + "2\nproperty float x\nproperty float z\nend_header\n1 2\n3 4\n",
+                        ":3: element vertex: needs exactly one scalar property y");
+}
+
 // ---- plane files (relslam run --planes) ---------------------------------------------------------
 
 const char* const kHeader = "iteration,index,kp1_x,kp1_z,kp2_x,kp2_z";
