@@ -126,5 +126,25 @@ TEST(BadInput, PlaneFileTruthIsHeldToTheMapRules) {
                         {{"--truth-path", "iteration,x,z,heading_rad\n0,-1e300,0,0\n"}});
 }
 
+// ---- scenario keys of the laser and optimum baselines --------------------------------------------
+
+// icp_slam.threshold_dist 1e300: MRPT shrank it by alfa for minutes per scan (a 40-scan run had
+// not ended after 5 minutes); alfa 1: MRPT's assertion (alfa < 1) became the run's status with
+// its stack trace; a start perturbation of 1e300 ran and failed instead of being refused.
+TEST(BadInput, BaselineKeysOutOfRangeAreRefusedAtTheKey) {
+  const std::string laser = test::source_path("scenarios/p-laser-room.json").string();
+  const auto refused = [&](const std::string& scenario, const std::string& set, const std::string& located) {
+    expect_located_error({"run", scenario, "--set", set, "--out", "x", "-q"}, located);
+  };
+  refused(laser, "icp_slam.threshold_dist=1e300", "icp_slam.threshold_dist: must be <= 100, got 1e+300");
+  refused(laser, "icp_slam.alfa=1", "icp_slam.alfa: must be <= 0.99, got 1");
+  refused(laser, "icp_slam.smallest_threshold_dist=1",
+          "icp_slam.smallest_threshold_dist: must be <= threshold_dist (0.3), got 1");
+  const std::string point = test::source_path("scenarios/s-f8.json").string();
+  refused(point, "batch_optimum.start_sigma_position=1e300", "batch_optimum.start_sigma_position: must be <= 1e+06");
+  refused(point, "batch_optimum.start_sigma_rotation_deg=200",
+          "batch_optimum.start_sigma_rotation_deg: must be <= 180, got 200");
+}
+
 }  // namespace
 }  // namespace relslam
