@@ -14,15 +14,7 @@
 namespace relslam {
 namespace {
 
-#ifdef RELSLAM_SANITIZED
-constexpr double kSeconds = 120;
-#else
-constexpr double kSeconds = 20;
-#endif
-
-void expect_located_error(const std::vector<std::string>& arguments, const std::string& located) {
-  test::expect_located_error(arguments, located, kSeconds);
-}
+using test::expect_located_error;  // exit 2, the location, within kRefusalSeconds and 1 GB
 
 std::string corpus(const std::string& file) { return test::source_path("tests/fuzz/corpus/" + file).string(); }
 
