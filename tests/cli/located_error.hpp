@@ -18,14 +18,16 @@ namespace relslam::test {
 // outcomes and only the release build the 1 GB.
 #ifdef RELSLAM_SANITIZED
 inline constexpr double kRefusalPeakRssMb = 4096;
+inline constexpr double kRefusalSeconds = 120;
 #else
 inline constexpr double kRefusalPeakRssMb = 1024;
+inline constexpr double kRefusalSeconds = 20;
 #endif
 
 // Runs the relslam program with `arguments` in a scratch folder: exit 2, `located` in the
 // message, within `seconds` and kRefusalPeakRssMb.
 inline void expect_located_error(const std::vector<std::string>& arguments, const std::string& located,
-                                 double seconds) {
+                                 double seconds = kRefusalSeconds) {
   ScratchDir dir;
   std::vector<std::string> argv = {std::string(RELSLAM_BINARY_DIR) + "/relslam"};
   argv.insert(argv.end(), arguments.begin(), arguments.end());

@@ -17,16 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-#ifdef RELSLAM_SANITIZED
-constexpr double kSeconds = 120;
-#else
-constexpr double kSeconds = 20;
-#endif
-
-// Exit 2 with `located` in the message, within kSeconds and 1 GB.
-void expect_located_error(const std::vector<std::string>& arguments, const std::string& located) {
-  test::expect_located_error(arguments, located, kSeconds);
-}
+using test::expect_located_error;  // exit 2, the location, within kRefusalSeconds and 1 GB
 
 fs::path repro3_dir() { return test::source_path("../shared/reliability/repro3"); }
 std::string repro3(const std::string& name) { return (repro3_dir() / name).string(); }

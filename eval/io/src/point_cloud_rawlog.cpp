@@ -153,7 +153,17 @@ void add_observation(PointCloudFrame& frame, const CObservationVelodyneScan& giv
   // Raw packets become points with MRPT's decoder (its calibration, its range limits).
   if (obs.point_cloud.x.empty() && !obs.scan_packets.empty()) {
     require_count(obs.scan_packets.size() * 384, at, "scan_packets");  // 12 blocks × 32 returns
-    obs.generatePointCloud();
+    // MRPT decodes with the calibration's per-laser corrections and knows the 16-, 32- and
+    // 64-laser models only; it throws (its own assertion) for any other count, e.g. none.
+    const std::size_t lasers = obs.calibration.laser_corrections.size();
+    if (lasers != 16 && lasers != 32 && lasers != 64)
+      at.fail("calibration", "raw packets need the calibration of a 16-, 32- or 64-laser Velodyne to decode, got " +
+                                 std::to_string(lasers) + " laser corrections");
+    try {
+      obs.generatePointCloud();
+    } catch (const std::exception& e) {
+      at.fail("scan_packets", "MRPT cannot decode the raw packets: " + mrpt_exception_message(e.what()));
+    }
   }
   frame.source = "velodyne";
   add_points(frame, obs.point_cloud.x, obs.point_cloud.y, obs.point_cloud.z, rotation, at, "point_cloud");

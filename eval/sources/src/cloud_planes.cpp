@@ -1,6 +1,7 @@
 #include "relslam/eval/sources/cloud_planes.hpp"
 
 #include "extractors.hpp"
+#include "point_file_header.hpp"
 #include "relslam/core/option_issue.hpp"
 #include "relslam/em/em1.hpp"
 #include "relslam/em/em2.hpp"
@@ -122,6 +123,10 @@ PointCloudFrame read_point_file(const std::filesystem::path& path) {
     frame = read_csv_points(path);
   } else if (extension == ".ply" || extension == ".pcd") {
 #ifdef RELSLAM_HAVE_OPEN3D
+    if (extension == ".ply")
+      check_ply_header(path);
+    else
+      check_pcd_header(path);
     frame = read_open3d_points(path);
 #else
     throw InputError(name, 0, "", "reading " + extension + " needs Open3D, and this relslam was built without it");
@@ -130,6 +135,9 @@ PointCloudFrame read_point_file(const std::filesystem::path& path) {
     throw InputError(name, 0, "", "unknown point file type '" + extension + "' (.csv, .ply or .pcd)");
   }
   if (frame.points.empty()) throw InputError(name, 0, "", "empty cloud: no point");
+  if (frame.points.size() > kMaxCloudPoints)
+    throw InputError(name, 0, "", std::to_string(frame.points.size()) + " points, more than the " +
+                                      std::to_string(kMaxCloudPoints) + " a cloud may hold");
   return frame;
 }
 

@@ -59,10 +59,11 @@ struct BatchOptimumOptions {
 void describe(OptionsOf<BatchOptimumOptions> auto& o, auto& f) {
   f.choice("start", o.start, "start of the solve: truth (perturbed, seeded) or relative_point (its run's poses)",
            kOptimumStarts);
+  // Bounded above so that a typo cannot start the solve beyond where it may diverge to [C].
   f.field("start_sigma_position", o.start_sigma_position, "start truth: perturbation of each pose per axis, units",
-          at_least(0.0));
+          at_least(0.0), at_most(1e6));
   f.degrees("start_sigma_rotation_deg", o.start_sigma_rotation_rad,
-            "start truth: perturbation of each pose's rotation per axis", at_least(0.0));
+            "start truth: perturbation of each pose's rotation per axis", at_least(0.0), at_most(180.0));
   f.field("use_odometry", o.use_odometry, "add the frames' odometry as relative-pose measurements");
   f.field("odometry_std_xyz", o.odometry_std_xyz, "odometry std. deviation per step, units", above(0.0));
   f.degrees("odometry_std_angle_deg", o.odometry_std_angle_rad, "odometry rotation std. deviation per step",

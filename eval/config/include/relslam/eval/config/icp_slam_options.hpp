@@ -19,6 +19,9 @@ enum class IcpMethod { Classic, LevenbergMarquardt };
 inline constexpr IcpMethod kIcpMethods[] = {IcpMethod::Classic, IcpMethod::LevenbergMarquardt};
 inline std::string_view to_string(IcpMethod m) { return m == IcpMethod::Classic ? "classic" : "levenberg_marquardt"; }
 
+// The largest pairing distance a scenario may give ICP [C: beyond any indoor scan's pairs].
+inline constexpr double kMaxIcpDistance_m = 100.0;
+
 struct IcpSlamOptions {
   // [ICP]
   int max_iterations = 80;
@@ -49,11 +52,15 @@ void describe(OptionsOf<IcpSlamOptions> auto& o, auto& f) {
   f.field("max_iterations", o.max_iterations, "ICP iterations at most per scan", at_least(1), at_most(100000));
   f.field("min_abs_step_trans", o.min_abs_step_trans, "ICP stops below this translation step, m", above(0.0));
   f.field("min_abs_step_rot", o.min_abs_step_rot_rad, "ICP stops below this rotation step, rad", above(0.0));
-  f.field("threshold_dist", o.threshold_dist, "initial pairing distance, m", above(0.0));
+  // Pairing distances up to the longest laser range (MRPT shrinks the threshold by alfa until the
+  // smallest: from 1e300 that took longer than any run) [C].
+  f.field("threshold_dist", o.threshold_dist, "initial pairing distance, m", above(0.0), at_most(kMaxIcpDistance_m));
   f.degrees("threshold_ang_deg", o.threshold_ang_rad, "pairing distance growth with a point's range, degrees",
             at_least(0.0), at_most(90.0));
-  f.field("alfa", o.alfa, "thresholds times this after convergence", above(0.0), at_most(1.0));
-  f.field("smallest_threshold_dist", o.smallest_threshold_dist, "smallest pairing distance, m", above(0.0));
+  // MRPT's ICP asserts alfa < 1 (at 1 it failed the run with MRPT's stack trace as its status) [C].
+  f.field("alfa", o.alfa, "thresholds times this after convergence", above(0.0), at_most(0.99));
+  f.field("smallest_threshold_dist", o.smallest_threshold_dist, "smallest pairing distance, m", above(0.0),
+          at_most(o.threshold_dist, "threshold_dist"));
   f.field("only_unique_robust", o.only_unique_robust, "unique pairs in both directions");
   f.choice("method", o.method, "ICP variant: classic or levenberg_marquardt", kIcpMethods);
   f.field("corresponding_points_decimation", o.corresponding_points_decimation,
