@@ -62,8 +62,10 @@ def read_csv(path, required=(), numeric=(), strings=()):
         raise DataError(path, f"missing column(s) {', '.join(missing)}")
     # Text columns (algorithm, status, folder, an axis's labels) stay as written: keep_default_na=False
     # stops pandas from turning a label such as "None" or "NA" into NaN; empty fields and C++'s
-    # spellings of not-a-number are NaN.
-    frame = pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=NAN_SPELLINGS,
+    # spellings of not-a-number are NaN. Numbers are read exactly as Python's float() reads them
+    # (round_trip): pandas' faster default may be one unit in the last place off, enough to change a
+    # difference of two nearly equal numbers.
+    frame = pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=NAN_SPELLINGS, float_precision="round_trip",
                         dtype={c: str for c in strings if c in header} or None)
     is_numeric = numeric if callable(numeric) else lambda name: name in numeric
     for column in filter(is_numeric, frame.columns):

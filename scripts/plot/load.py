@@ -8,8 +8,8 @@ measure that finds a column or row missing names the file too (measures.common.a
 """
 import os
 
-import relslam_data
-import relslam_plot as rp
+import relslam_plot as rp  # first: it puts python/ (relslam_data) on the path
+import relslam_data  # noqa: E402
 from measures.common import ALG, PLANE, arrays, seed_means
 from measures.planes import planar_track
 
