@@ -126,7 +126,8 @@ class Planes(unittest.TestCase):
         with self.assertRaisesRegex(rp.DataError, "manifest.json: no scenario.planar.loops"):
             planes.run_loops({"scenario": {}})
         with self.assertRaisesRegex(rp.DataError, "loops is 0: no loops"):
-            planes.loop_means(types.SimpleNamespace(manifest=manifest(0, 10), iterations=r.iterations), "mean_map_error")
+            no_loops = types.SimpleNamespace(manifest=manifest(0, 10), iterations=r.iterations)
+            planes.loop_means(no_loops, "mean_map_error")
 
     def test_invariance_turns_the_offset_into_the_first_plane_frame(self):
         # Two parallel walls one unit apart; the robot sees them at heading 0 and turned by 90 degrees.
@@ -164,7 +165,8 @@ class Planes(unittest.TestCase):
         self.assertEqual(right, [0.5, 1.0])  # plane 1's first end is a wall end once in two, plane 2's second always
 
     def test_interval_mode_errors_average_the_seeds(self):
-        seeds = [iterations([1.0, 3.0, float("nan")], "mean_map_error"), iterations([3.0, 5.0, 7.0, 9.0], "mean_map_error")]
+        seeds = [iterations([1.0, 3.0, float("nan")], "mean_map_error"),
+                 iterations([3.0, 5.0, 7.0, 9.0], "mean_map_error")]
         errors = planes.interval_mode_errors([(("group", "gauss"), seeds)])
         it, err, mean, n = errors[("group", "gauss")]
         self.assertEqual(list(it), [0, 1, 2])  # cut to the shortest seed
