@@ -5,7 +5,8 @@
 # Default experiment: S-EKF-F8 (scenarios/s-ekf-f8.json), one loop of the figure eight at
 # density 25 with the Relative Point algorithm and MRPT's 6D EKF on the same observations,
 # scored against the simulator's truth (the run takes one to two minutes on two cores; the first
-# build longer). Builds only the relslam program; scripts/test.sh builds everything.
+# build longer: it compiles the library, simulator and harness). Builds only the relslam program;
+# scripts/test.sh builds everything.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=runs/demo
@@ -13,7 +14,7 @@ scenario=scenarios/s-ekf-f8.json
 while [ $# -gt 0 ]; do
   case "$1" in
     --out) out=$2; shift 2 ;;
-    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,9p' "$0"; exit 0 ;;
     *) echo "demo: unknown argument $1" >&2; exit 2 ;;
   esac
 done

@@ -110,9 +110,12 @@ def plot_top_view(run, colour):
     if view.empty:
         return None
     fig, ax = plt.subplots(figsize=(9, 7))
-    # As `relslam render` draws each half from above: point worlds z right, x up; planar worlds
-    # x right, z up. Both are rotations of the world, never its mirror image.
-    h, v = ("x", "z") if view.walls is not None else ("z", "x")
+    planes = {name: a.planes for name, a in run.algorithms.items()
+              if a.planes is not None and {"kp1_x", "kp1_z", "kp2_x", "kp2_z"} <= set(a.planes.columns)}
+    # As `relslam render` draws each half from above: point worlds z right, x up; planar worlds (true
+    # walls or mapped planes, also a run of your own plane file) x right, z up. Both are rotations of
+    # the world, never its mirror image.
+    h, v = ("x", "z") if view.walls is not None or planes else ("z", "x")
     if view.truth_points is not None:
         ax.scatter(view.truth_points[h], view.truth_points[v], s=4, c="0.7", label="true landmarks")
     if view.walls is not None:
@@ -120,12 +123,19 @@ def plot_top_view(run, colour):
             ax.plot([wall.a_x, wall.b_x], [wall.a_z, wall.b_z], color="0.5", lw=3, alpha=0.6,
                     label="true walls" if i == 0 else None)
     for name, points in view.maps.items():
+        if name in planes:  # a plane map is drawn as its segments, key point to key point
+            ends = planes[name][["kp1_x", "kp1_z", "kp2_x", "kp2_z"]].dropna()
+            for i, p in enumerate(ends.itertuples(index=False)):
+                ax.plot([p.kp1_x, p.kp2_x], [p.kp1_z, p.kp2_z], color=colour[name], lw=1.5,
+                        label=f"{algorithm_label(name)} map ({len(ends)} planes)" if i == 0 else None)
+            continue
         ax.scatter(points[h], points[v], s=6, color=colour[name], alpha=0.7, marker="x",
                    label=f"{algorithm_label(name)} map")
     for name, path in view.paths:
         truth = name == "truth"
         ax.plot(path[h], path[v], lw=1.6 if truth else 1, ls="--" if truth else "-",
-                color=TRUTH_COLOUR if truth else colour[name], label="true path" if truth else algorithm_label(name))
+                color=TRUTH_COLOUR if truth else colour[name],
+                label="true path" if truth else f"{algorithm_label(name)} path")
     ax.set_xlabel(f"{h} (units)")
     ax.set_ylabel(f"{v} (units)")
     ax.set_aspect("equal", adjustable="datalim")

@@ -41,10 +41,12 @@ def _read_text(path):
     return text
 
 
-def read_csv(path, required=(), numeric=()):
+def read_csv(path, required=(), numeric=(), strings=()):
     """The CSV as a DataFrame, checked: a header, every row as long as the header, the `required`
     columns present and the `numeric` ones numbers (empty fields are NaN). `numeric` is a list of
-    names or a test on a column name (for tables whose columns depend on the run).
+    names or a test on a column name (for tables whose columns depend on the run). The `strings`
+    columns stay strings as written even where they look like numbers (a sweep axis's "0.10",
+    a list of plane ids "3"); their empty fields are NaN too.
 
     Checking the field count row by row is what catches a cut file; pandas would pad it."""
     text = _read_text(path)
@@ -60,8 +62,11 @@ def read_csv(path, required=(), numeric=()):
         raise DataError(path, f"missing column(s) {', '.join(missing)}")
     # Text columns (algorithm, status, folder, an axis's labels) stay as written: keep_default_na=False
     # stops pandas from turning a label such as "None" or "NA" into NaN; empty fields and C++'s
-    # spellings of not-a-number are NaN.
-    frame = pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=NAN_SPELLINGS)
+    # spellings of not-a-number are NaN. Numbers are read exactly as Python's float() reads them
+    # (round_trip): pandas' faster default may be one unit in the last place off, enough to change a
+    # difference of two nearly equal numbers.
+    frame = pd.read_csv(io.StringIO(text), keep_default_na=False, na_values=NAN_SPELLINGS, float_precision="round_trip",
+                        dtype={c: str for c in strings if c in header} or None)
     is_numeric = numeric if callable(numeric) else lambda name: name in numeric
     for column in filter(is_numeric, frame.columns):
         if not pd.api.types.is_numeric_dtype(frame[column]):
@@ -100,8 +105,9 @@ def read_json(path):
 
 
 def scenario_name(manifest, folder):
-    """The scenario's name a manifest.json records, else the folder's name."""
+    """The scenario's name a manifest.json records, else the folder's name (also for a run without a
+    scenario file, whose manifest says "(defaults)")."""
     scenario = manifest.get("scenario")
-    if isinstance(scenario, dict) and scenario.get("name"):
+    if isinstance(scenario, dict) and scenario.get("name") and not str(scenario["name"]).startswith("("):
         return scenario["name"]
     return Path(folder).name

@@ -5,15 +5,17 @@ import os
 import numpy as np
 
 from draw import Figure, MS, P, POS, finish
-from measures.common import PLANE, iterations, sweep_series
+from measures.common import PLANE
 from measures.em import extracted_planes, robot_pose
-from measures.planes import (EVENT_JUMP, EVENT_SETTLED, GROWN_TOP, HEAL_ITERATIONS, OFF_LINE, PAIR_NAMES,
-    collinear_run, count_summary, event_healing, first_corner, first_seed, first_seen_far, frustum_turns,
-    group_counts, group_layout, grown_lengths, grown_text, interval_mode_errors, invariance, key_point_pair,
-    key_points_by_phase, largest_healed_event, last_finite, loop_means, map_error_events, mapped_length, misplaced,
-    observed_wall, one_plane_iteration, planar_rotation, planar_track, plane_sweep, plane_table, rltplane_rows,
-    runtime_by_size, size_mismatches, true_path, true_walls, under_sized, variant_folder_of, wall_lengths,
-    wall_table, wrong_episodes)
+from measures.planes import (E07_AXES, EVENT_JUMP, EVENT_SETTLED, GROWN_TOP, HEAL_ITERATIONS, OFF_LINE, PAIR_NAMES,
+    collinear_run, count_summary, event_healing, first_corner, first_seen_far, frustum_turns, group_counts,
+    group_layout, grown_lengths, grown_text, interval_mode_errors, invariance, key_point_pair, key_points_by_phase,
+    largest_healed_event, last_finite, loop_means, map_error_events, mapped_length, misplaced, observed_wall,
+    one_plane_iteration, planar_rotation, planar_track, rltplane_rows, runtime_by_size, size_mismatches, under_sized,
+    wall_lengths, wall_table, wrong_episodes)
+import load
+from load import (PlanarRun, first_seed, iteration_frame, iterations, plane_sweep, plane_table, sweep_series,
+    true_path, true_walls, variant_folder_of)
 import relslam_plot as rp
 
 
@@ -24,6 +26,11 @@ WALL = {"color": "gold", "lw": 5, "solid_capstyle": "butt", "zorder": 1}  # the 
 
 
 MAPPED = {"color": "blue", "lw": 1.6, "zorder": 3}  # and mapped planes blue (Fig 70's text)
+
+
+def groups_of(run):
+    """measures.planes.group_layout of a planar run folder."""
+    return group_layout(load.plane_file(run, "groups.csv"), load.plane_file(run, "planes.csv"))
 
 
 def plane_overlay(ax, run, groups=False, title=None):
@@ -42,7 +49,7 @@ def plane_overlay(ax, run, groups=False, title=None):
     est = rp.read_tum(os.path.join(run, PLANE, "trajectory.tum"))
     ax.plot(est["x"], est["z"], color="tab:blue", lw=0.6, ls="--", label="estimated path (valid poses)")
     if groups:
-        layout, mid = group_layout(run)
+        layout, mid = groups_of(run)
         for gid, (gx, gz, members) in layout.items():
             for m in members:
                 ax.plot([gx, mid[m][0]], [gz, mid[m][1]], color="grey", lw=0.5, zorder=2)
@@ -58,12 +65,12 @@ def map_overlay(fig, run, groups=False):
     """Figs 64, 67: the final map over the true walls."""
     ax = fig.subplots()
     plane_overlay(ax, run, groups)
-    s = count_summary(run)
+    s = count_summary(load.summary(run))
     shows = (f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} seen walls mapped, {s['duplicates']:.0f} duplicates, "
              f"final mean map error {s['final_mean_map_error']:.3g} units per plane, pose valid in "
              f"{100 * s['pose_valid_fraction']:.0f} % of the iterations")
     if groups:
-        shows += f"; {len(group_layout(run)[0])} groups"
+        shows += f"; {len(groups_of(run)[0])} groups"
     return shows
 
 
@@ -75,7 +82,7 @@ def four_planes_errors(fig, run):
     texts = []
     for ax, column, ylabel in zip(axes, ["mean_map_error", "position_error"], [MAP_ERROR, POS]):
         ax.plot(d["iteration"], d[column], lw=0.4, color="lightsteelblue", label="per iteration")
-        loops = loop_means(run, column)
+        loops = loop_means(PlanarRun(run), column)
         for k, (lo, hi, mean) in enumerate(loops):
             ax.plot([lo, hi], [mean, mean], color="darkblue", lw=2, label="mean per loop" if k == 0 else None)
         finish(ax, "iteration" if ax is axes[-1] else "", ylabel)
@@ -86,7 +93,7 @@ def four_planes_errors(fig, run):
 
 def rltplane_table(fig, run, wall=0):
     """Fig 65 / paper Fig 1: the RltPlane structure as a table of one plane's untransformed observations."""
-    rows, total = rltplane_rows(run, wall)
+    rows, total = rltplane_rows(load.observations(run), wall)
     rows.insert(len(rows) - 1, ["…"] * 5)
     ax = fig.subplots()
     ax.axis("off")
@@ -103,7 +110,7 @@ def rltplane_table(fig, run, wall=0):
 
 def invariance_scatter(fig, run):
     """Fig 66 / paper Fig 3 (E01): raw midpoint difference and Rule 3 offset against the heading."""
-    psi, raw, rel, expected = invariance(run)
+    psi, raw, rel, expected = invariance(PlanarRun(run))
     axes = fig.subplots(1, 2, sharex=True)
     for ax, j, name in zip(axes, [0, 1], ["Δx", "Δz"]):
         ax.plot(psi, raw[:, j], ".", color="tab:orange", ms=4, label="raw: m2 − m1")
@@ -124,10 +131,10 @@ def hallway_groups(fig, run):
     for column, style in [("groups", {"lw": 3, "alpha": 0.5}), ("links (incl. X0's anchor)", {"lw": 1.2, "ls": "--"})]:
         bottom.plot(d["iteration"], d[column.split()[0]], drawstyle="steps-post", label=column, **style)
     finish(bottom, "iteration", "count")
-    links = plane_table(run, "links.csv", ["from", "linking_planes"], text=("linking_planes",))
+    links = plane_table(run, "links.csv", ["from", "linking_planes"], strings=("linking_planes",))
     per_link = [len([s for s in p.split(";") if s]) for f, p in zip(links["from"], links["linking_planes"])
                 if np.isfinite(f)]
-    s = count_summary(run)
+    s = count_summary(load.summary(run))
     return (f"{d['groups'][-1]:.0f} groups, {len(per_link)} links with {', '.join(map(str, per_link))} linking "
             f"planes; {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, final mean map error "
             f"{s['final_mean_map_error']:.3g}")
@@ -156,7 +163,7 @@ E06 = ("p-e06-rule12",)
 def key_point_pairs_figure(fig, run):
     """Fig 68 / paper Fig 4 (E02): the four offset series of Rule 13 for one growing and one shrinking
     plane, and their standard deviations; the chosen pair is the lowest."""
-    series, sig, chosen, right = key_point_pair(run)
+    series, sig, chosen, right = key_point_pair(PlanarRun(run))
     top, bottom = fig.subplots(1, 2, width_ratios=[2.2, 1])
     t = series["iteration"]
     for k, (a, b) in enumerate(zip(sig["kp_a"].astype(int), sig["kp_b"].astype(int))):
@@ -183,7 +190,7 @@ def key_point_pairs_figure(fig, run):
 def interval_mode_figure(fig, sweep, mode):
     """Figs 74 (group) and 75 (pair), E07: map error over the run under both noise models, and the
     run means of all four combinations as bars."""
-    errors = interval_mode_errors(sweep)
+    errors = interval_mode_errors(load.plane_frames(sweep, E07_AXES))
     top, bottom = fig.subplots(2, 1, height_ratios=[1.6, 1])
     for (m, noise), (it, err, _, seeds) in errors.items():
         if m == mode:
@@ -210,8 +217,9 @@ def bad_key_points_figure(fig, sweep, panel):
         for (name,), folders in plane_sweep(sweep):
             heal, wrong = [], []
             for run in folders:
-                heal += [min(h, clip + 1) if h is not None else clip + 1 for _, _, h, _ in map_error_events(run)]
-                wrong += [min(e[3], clip + 1) for e in wrong_episodes(run)]
+                events = map_error_events(iteration_frame(run, PLANE))
+                heal += [min(h, clip + 1) if h is not None else clip + 1 for _, _, h, _ in events]
+                wrong += [min(e[3], clip + 1) for e in wrong_episodes(load.plane_file(run, "keypoints.csv"))]
             ax.hist([heal, wrong], bins=bins, histtype="step", lw=1.5,
                     label=[f"{name}: map-error events ({len(folders)} seeds)", f"{name}: wrong key-point episodes"])
             texts.append(f"{name}, {len(folders)} seed(s): {sum(h <= HEAL_ITERATIONS for h in heal)} of {len(heal)} "
@@ -224,7 +232,7 @@ def bad_key_points_figure(fig, sweep, panel):
         finish(ax, "iterations until healed", "count")
         return "; ".join(texts)
     name, run = runs[0]
-    d, k, event = largest_healed_event(run)
+    d, k, event = largest_healed_event(iteration_frame(run, PLANE))
     lo, hi = (0, len(d["iteration"])) if panel == 76 else (max(0, k - 5), min(len(d["iteration"]), k + 15))
     it = d["iteration"][lo:hi]
     if panel == 78:
@@ -258,11 +266,11 @@ def bad_key_points_figure(fig, sweep, panel):
     for vname, vrun in runs:
         v = iterations(vrun, ["map_error"], PLANE)
         ax.plot(v["iteration"], v["map_error"], lw=0.8, label=f"{vname}: map error (sum of e_ends)")
-    ev = map_error_events(run)
+    ev = map_error_events(iteration_frame(run, PLANE))
     ax.plot([e[0] for e in ev], [d["map_error"][int(np.nonzero(d["iteration"] == e[0])[0][0])] for e in ev], "rv",
             label=f"{name}: events (a jump of ≥ {EVENT_JUMP:g} in one iteration)")
     finish(ax, "iteration", "map error (units)")
-    n, quick, never, median = event_healing(run)
+    n, quick, never, median = event_healing(iteration_frame(run, PLANE))
     return (f"{name}: {n} events, {quick} healed within {HEAL_ITERATIONS} iterations, {never} never healed; final map "
             f"error {d['map_error'][-1]:.3g}")
 
@@ -274,12 +282,12 @@ def per_wall_bars(fig, sweep, column, ylabel, names=None):
     width = 0.8 / len(variants)
     texts = []
     for i, (name, run) in enumerate(variants):
-        table = wall_table(run)
+        table = wall_table(load.plane_file(run, "planes.csv"))
         walls = sorted(table)
         values = [max(table[w])[0 if column == "len_ratio" else 1] for w in walls]
         ax.bar(np.array(walls) + (i - (len(variants) - 1) / 2) * width, values, width, label=name)
-        s = count_summary(run)
-        small = under_sized(run)
+        s = count_summary(load.summary(run))
+        small = under_sized(load.plane_file(run, "planes.csv"))
         texts.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls, {s['duplicates']:.0f} "
                      f"duplicates, final mean map error {s['final_mean_map_error']:.3g}, under-sized "
                      + (", ".join(f"wall {w} ({r:.2f})" for w, r in small) or "none"))
@@ -298,11 +306,11 @@ def variant_overlays(fig, sweep, names, groups=False):
     texts = []
     for name in names:
         run = variant_folder_of(sweep, name)
-        s = count_summary(run)
+        s = count_summary(load.summary(run))
         texts.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
                      f"{s['duplicates']:.0f} duplicates, final mean map error {s['final_mean_map_error']:.3g}")
         if groups:
-            layout = group_layout(run)[0]
+            layout = groups_of(run)[0]
             texts[-1] += (f", {len(layout)} groups on the map, X0 holds plane(s) "
                           + (", ".join(map(str, layout[0][2])) if 0 in layout else "none"))
     return "; ".join(texts)
@@ -318,7 +326,7 @@ def too_many_groups(fig, sweep):
         ax.axhline(n, color="grey", ls=":", lw=0.8)
         ax.annotate(text, (0, n), fontsize=7, va="bottom")
     finish(ax, "iteration", "groups (RltXPoints)")
-    return "; ".join(f"{k}: {v} groups" for k, v in group_counts(sweep).items())
+    return "; ".join(f"{k}: {v} groups" for k, v in group_counts(load.first_seed_iterations(sweep)).items())
 
 
 def rule28_figure(fig, sweep):
@@ -333,8 +341,8 @@ def rule28_figure(fig, sweep):
         top.bar(np.arange(len(p["id"])) + (i - (len(runs) - 1) / 2) * width, p["e_perp"], width, label=name)
         d = iterations(folders[0], ["position_error"], PLANE)
         bottom.plot(d["iteration"], d["position_error"], lw=1, label=name)
-        n, total, gap = size_mismatches(folders[0])
-        off = misplaced(folders[0])
+        n, total, gap = size_mismatches(load.plane_file(folders[0], "edges.csv"))
+        off = misplaced(load.plane_file(folders[0], "planes.csv"))
         texts.append(f"{name}: " + (", ".join(f"wall {w} {e:.3g} off its line" for w, e in off) or
                                     f"every plane within {OFF_LINE:g} of its wall's line")
                      + f"; final position error {last_finite(d['position_error']):.3g}; {n} of {total} chain edges "
@@ -348,7 +356,7 @@ def rule28_figure(fig, sweep):
 def collinear_figure(fig, run):
     """Fig 97 (E18): Map D with the small frustum, the defaults (the distance test on, Rule 30 off): the
     collinear pieces tie both diagonals (Rule 15) and the distance test takes the real ends."""
-    d, first_bad, ambiguous_claims, ambiguous_edges = collinear_run(run)
+    d, first_bad, ambiguous_claims, ambiguous_edges = collinear_run(PlanarRun(run))
     axes = fig.subplots(2, 1, sharex=True)
     axes[0].plot(d["iteration"], d["map_error"], lw=1, label="map error (sum of e_ends)")
     axes[0].plot(d["iteration"], d["position_error"], lw=1, label="position error")
@@ -360,7 +368,7 @@ def collinear_figure(fig, run):
             ax.axvline(first_bad, color="grey", ls=":")
     finish(axes[0], "", "units")
     finish(axes[1], "iteration", "flag")
-    s = count_summary(run)
+    s = count_summary(load.summary(run))
     until = "throughout" if first_bad is None else f"until iteration {first_bad}"
     valid = np.nonzero(d["pose_valid"] == 1)[0]
     return (f"pose exact (error ≤ 1e-6) {until}, last valid pose at iteration "
@@ -383,7 +391,7 @@ def planes_on_map_figure(fig, sweep):
     for (name,), folders in plane_sweep(sweep):
         d = iterations(folders[0], ["planes_in_map"], PLANE)
         ax.plot(d["iteration"], d["planes_in_map"], lw=1, label=name)
-        s = count_summary(folders[0])
+        s = count_summary(load.summary(folders[0]))
         texts.append(f"{name}: {int(d['planes_in_map'][-1])} planes at the end, {s['walls_mapped']:.0f} of "
                      f"{s['walls_seen']:.0f} walls mapped")
     finish(ax, "iteration", "planes on the map")
@@ -435,8 +443,9 @@ def runtime_figure(fig, sweep):
     right.boxplot([d["runtime_ms"][d["visible_planes"] == c] for c in counts], labels=[str(c) for c in counts],
                   showfliers=False)
     finish(right, f"planes in view ({loops[0]} loops)", MS, legend=False)
+    sizes = runtime_by_size(load.first_seed_iterations(sweep, "planar.loops"))
     return "; ".join(f"{k} loop(s): median {v[0]:.3g} ms, first tenth {v[1]:.3g}, last tenth {v[2]:.3g}, "
-                     f"{v[3]} RltPlanes, {v[4]} iterations" for k, v in runtime_by_size(sweep).items())
+                     f"{v[3]} RltPlanes, {v[4]} iterations" for k, v in sizes.items())
 
 
 E09, E15 = ("p-e09-plane5",), ("p-e15-loop-closure-map-e",)
@@ -452,9 +461,9 @@ def draw_view(ax, run, iteration, walls=None):
     """The robot at an iteration (true pose, a triangle looking along its heading) and what it saw then:
     each observed plane (of `walls`, else all) moved into the world by the true pose, red. Returns the
     pieces drawn as [(a, b, wall)] in the world."""
-    t, psi = robot_pose(run, iteration)
+    t, psi = robot_pose(load.truth_path(run), iteration)
     rot = planar_rotation(psi)
-    pieces = [(rot @ a + t, rot @ b + t, w) for a, b, w in extracted_planes(run, iteration)
+    pieces = [(rot @ a + t, rot @ b + t, w) for a, b, w in extracted_planes(load.observations(run), iteration)
               if walls is None or w in walls]
     for i, (a, b, _) in enumerate(pieces):
         ax.plot([a[0], b[0]], [a[1], b[1]], label="in view at that iteration" if i == 0 else None, **VIEWED)
@@ -472,13 +481,13 @@ def first_corner_map(fig, sweep):
     run = first_seed(sweep)
     ax = fig.subplots()
     plane_overlay(ax, run)
-    est = planar_track(os.path.join(run, PLANE, "trajectory.tum"))
+    est = planar_track(load.tum(run, PLANE, "trajectory.tum"))
     d = iterations(run, ["mm_active"], PLANE)
     mm = np.isin(est["iteration"], d["iteration"][d["mm_active"] == 1])
     ax.plot(est["x"][mm], est["z"][mm], ".", color="red", ms=3, zorder=4, label="estimated poses, motion model")
     ax.legend(fontsize=8)
-    e, before, heading = first_corner(run)
-    s = count_summary(run)
+    e, before, heading = first_corner(PlanarRun(run))
+    s = count_summary(load.summary(run))
     return (f"seed 1: the motion model tracks plane {e['plane']} (wall {e['wall']}) from iteration {e['first']}, "
             f"{before:.2g} units before the turn, to {e['last']}, {heading:.0f}° into it; {s['walls_mapped']:.0f} of "
             f"{s['walls_seen']:.0f} seen walls mapped, final mean map error {s['final_mean_map_error']:.3g} per plane "
@@ -490,7 +499,7 @@ def mm_pose_track(fig, sweep):
     heading (the motion model's own heading in its frame as dots), the motion model shaded."""
     run = first_seed(sweep)
     d = iterations(run, ["position_error", "mm_active", "mm_heading_deg"], PLANE)
-    truth, est = true_path(run), planar_track(os.path.join(run, PLANE, "trajectory.tum"))
+    truth, est = true_path(run), planar_track(load.tum(run, PLANE, "trajectory.tum"))
     top, bottom = fig.subplots(2, 1, sharex=True)
     top.plot(d["iteration"], d["position_error"], lw=1, label="position error")
     shade_motion_model(top, d, np.nanmax(d["position_error"]))
@@ -510,9 +519,9 @@ def mm_growth(fig, sweep):
     """Fig 85 (E11): the motion model's track: its distance to the wall, and the wall's tracked length
     (mm_s_max − mm_s_min) beside the length in view, against the iteration."""
     run = first_seed(sweep)
-    e, _, _ = first_corner(run)
+    e, _, _ = first_corner(PlanarRun(run))
     d = iterations(run, ["mm_distance", "mm_s_min", "mm_s_max", "mm_active"], PLANE)
-    seen = observed_wall(run, e["wall"])
+    seen = observed_wall(PlanarRun(run), e["wall"])
     lo, hi = e["first"] - 30, e["last"] + 30
     window = (d["iteration"] >= lo) & (d["iteration"] <= hi)
     top, bottom = fig.subplots(2, 1, sharex=True)
@@ -536,7 +545,7 @@ def mm_key_points(fig, sweep):
     d = iterations(run, ["map_error", "kp_checked", "kp_wrong", "mm_active"], PLANE)
     top, bottom = fig.subplots(2, 1, sharex=True)
     top.plot(d["iteration"], d["map_error"], lw=1, label="map error (sum of e_ends)")
-    events = map_error_events(run)
+    events = map_error_events(iteration_frame(run, PLANE))
     at = {int(i): k for k, i in enumerate(d["iteration"])}
     top.plot([e[0] for e in events], [d["map_error"][at[e[0]]] for e in events], "rv",
              label=f"events (a jump of ≥ {EVENT_JUMP:g})")
@@ -546,8 +555,8 @@ def mm_key_points(fig, sweep):
     bottom.bar(d["iteration"], d["kp_wrong"], width=1, color="red", label="wrong (not a real wall end)")
     shade_motion_model(bottom, d, np.nanmax(d["kp_checked"]))
     finish(bottom, "iteration", "claims")
-    split = key_points_by_phase(run)
-    n, quick, never, _ = event_healing(run)
+    split = key_points_by_phase(iteration_frame(run, PLANE))
+    n, quick, never, _ = event_healing(iteration_frame(run, PLANE))
     return (f"seed 1: wrong key-point claims {split['in'][0]} of {split['in'][1]} inside the motion model, "
             f"{split['out'][0]} of {split['out'][1]} outside; {n} map-error events ({quick} healed within "
             f"{HEAL_ITERATIONS} iterations, {never} never), {sum(e[3] for e in events)} of them a new plane joining "
@@ -557,7 +566,7 @@ def mm_key_points(fig, sweep):
 def grow_threshold_figure(fig, sweep):
     """Fig 88 (E13): per growth threshold, each motion model's tracked length at its end over the wall's
     true length, and the mapped length ratio of the planes it grew (every seed)."""
-    stats = grown_lengths(sweep)
+    stats = grown_lengths(load.planar_variants(sweep))
     axes = fig.subplots(1, 2, sharey=True)
     for ax, index, ylabel in zip(axes, (0, 1), ("tracked length at the motion model's end / true length",
                                                  "grown plane's mapped length / true length (planes.csv)")):
@@ -580,7 +589,7 @@ def frustum_figure(fig, sweep):
     """Fig 89 (E14): the end wall's length in view and the range of its farther end against the heading
     through the turn, per frustum shape and size; its mapped length dashed; the far distance f and the
     trapezoid's corner reach f / cos α dotted."""
-    turns = frustum_turns(sweep)
+    turns = frustum_turns(load.first_seeds(sweep))
     left, right = fig.subplots(1, 2)
     texts = []
     for i, (name, (frustum, shape, wall, seen, mapped, true)) in enumerate(turns.items()):
@@ -609,13 +618,13 @@ E22 = ("p-e22-one-partial-plane",)
 def one_partial_plane(fig, run):
     """Fig 69 / paper Fig 5 (E22): the map, the robot at a corner of its last loop with the motion model
     active, and the part of the single wall in its view, red."""
-    k, first, last = one_plane_iteration(run)
+    k, first, last = one_plane_iteration(PlanarRun(run))
     ax = fig.subplots()
     plane_overlay(ax, run)
     pieces = draw_view(ax, run, k)
     d = iterations(run, ["position_error", "mm_active", "visible_planes"], PLANE)
     row = int(np.nonzero(d["iteration"] == k)[0][0])
-    lengths = wall_lengths(run)
+    lengths = wall_lengths(load.truth_walls(run))
     return (f"iteration {k} (of the stretch {first}-{last} on the last loop): motion model "
             f"{'on' if d['mm_active'][row] == 1 else 'off'}, {d['visible_planes'][row]:.0f} plane in view: "
             + ", ".join(f"wall {w}, {np.linalg.norm(b - a):.3g} of its {lengths[w]:.3g} units" for a, b, w in pieces)
@@ -626,11 +635,11 @@ def first_seen_figure(fig, sweep, name):
     """Fig 100 (E19): the wall first seen from farthest away, red, from where the robot first saw it (the
     large frustum, no occlusion), over variant `name`'s final map."""
     run = variant_folder_of(sweep, name)
-    wall, k, near = first_seen_far(run)
+    wall, k, near = first_seen_far(load.observations(run))
     ax = fig.subplots()
     plane_overlay(ax, run, title=f"{name}: the final map; wall {wall} as first seen")
     draw_view(ax, run, k, walls={wall})
-    on_map = np.isfinite(mapped_length(run, wall))
+    on_map = np.isfinite(mapped_length(load.plane_file(run, "planes.csv"), wall))
     return (f"{name}: wall {wall} is first seen at iteration {k}, its nearer end {near:.3g} units away; "
             f"{'on' if on_map else 'not on'} the final map")
 

@@ -6,10 +6,13 @@ import numpy as np
 
 from chapter4 import MAP_ERROR, WALL, plane_overlay
 from draw import Figure, P, SMOOTH, finish
-from measures.common import PLANE, sweep_series
-from measures.em import (EXTRACTORS, bench_scores, compare_frames, demo_times, em_frame_score, extracted_planes,
-    point_frame, sweep_cell, visible_pieces)
-from measures.planes import count_summary, plane_table, variant_folder_of
+from measures.common import PLANE
+from load import sweep_series
+from measures.em import (EXTRACTORS, compare_frames, demo_times, em_frame_score, extracted_planes, point_frame,
+    visible_pieces)
+import load
+from load import bench_scores, plane_table, sweep_cell, variant_folder_of
+from measures.planes import count_summary
 import noise_sweep
 import relslam_plot as rp
 
@@ -38,9 +41,10 @@ def frame_points(ax, points, title):
 
 def em_planes_vs_visible(ax, run, iteration, points, ids, title):
     """EM planes (red) over the visible wall pieces (yellow) and the points, robot frame."""
-    for i, (a, b) in enumerate(visible_pieces(run, iteration, points, ids).values()):
+    pieces = visible_pieces(load.truth_path(run), load.truth_walls(run), iteration, points, ids)
+    for i, (a, b) in enumerate(pieces.values()):
         ax.plot([a[0], b[0]], [a[1], b[1]], label="visible wall pieces" if i == 0 else None, **WALL)
-    planes = extracted_planes(run, iteration)
+    planes = extracted_planes(load.observations(run), iteration)
     for i, (a, b, _) in enumerate(planes):
         ax.plot([a[0], b[0]], [a[1], b[1]], label=f"extracted planes ({len(planes)})" if i == 0 else None, **EXTRACTED)
     ax.scatter(points[:, 0], points[:, 2], **{**POINTS, "alpha": 0.25})
@@ -61,11 +65,11 @@ def em_views(fig, run):
     """Figs 105-108, paper Fig 6: the thesis's four windows (5.2) at the last written point frame:
     true walls vs the generated map; the points in view; the extracted planes vs the wall pieces in
     view; the Relative Plane map with its groups and plane numbers."""
-    k, points, ids = point_frame(run)
+    k, points, ids = point_frame(load.table(run, "point_frames.csv"))
     axes = fig.subplots(2, 2)
     plane_overlay(axes[0, 0], run, title="true walls (yellow) and the generated map (blue), end of run")
     frame_points(axes[0, 1], points, f"points in view at iteration {k}")
-    score = em_frame_score(run, k)
+    score = em_frame_score(load.table(run, "em_frames.csv"), k)
     em_planes_vs_visible(axes[1, 0], run, k, points, ids,
                          f"extracted planes vs the walls in view, iteration {k}: recall {score['recall']:.3g}, "
                          f"precision {score['precision']:.3g}")
@@ -76,7 +80,7 @@ def em_views(fig, run):
             ax.get_legend().remove()
     axes[0, 0].legend(fontsize=6, loc="best")
     axes[1, 0].legend(fontsize=6, loc="best")
-    s = count_summary(run)
+    s = count_summary(load.summary(run))
     frames = rp.read_table(os.path.join(run, "em_frames.csv"), ["recall", "precision"])
     return (f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} seen walls mapped, {s['duplicates']:.0f} duplicates, "
             f"final mean map error {s['final_mean_map_error']:.3g} per plane, pose valid in "
@@ -88,10 +92,10 @@ def em_views(fig, run):
 
 def points_and_em(fig, run):
     """Fig 46: the simulated points of one frame and the planes EM made of them."""
-    k, points, ids = point_frame(run)
+    k, points, ids = point_frame(load.table(run, "point_frames.csv"))
     left, right = fig.subplots(1, 2)
     frame_points(left, points, f"the point sensor's points, iteration {k}")
-    score = em_frame_score(run, k)
+    score = em_frame_score(load.table(run, "em_frames.csv"), k)
     em_planes_vs_visible(right, run, k, points, ids, f"EM's planes (red), iteration {k}")
     right.legend(fontsize=7)
     return (f"iteration {k}: {len(points)} points, {score['n_planes']:.0f} planes for {score['n_true_visible']:.0f} "
@@ -167,7 +171,7 @@ def demo_maps(fig, sweep, variants):
         run = sweep_cell(sweep, variant)
         plane_overlay(ax, run, title=variant)
         ax.legend(fontsize=6)
-        s = count_summary(run)
+        s = count_summary(load.summary(run))
         shows.append(f"{variant}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
                      f"{s['duplicates']:.0f} duplicates, final mean map error {s['final_mean_map_error']:.3g}, "
                      f"pose valid {100 * s['pose_valid_fraction']:.0f} %")
@@ -177,7 +181,7 @@ def demo_maps(fig, sweep, variants):
 def demo_timing(fig, sweep):
     """Extra (E27): ms per iteration of EM and of Relative Plane, median and 95th percentile per cell,
     against the paper's 30 iterations a second."""
-    times = demo_times(sweep)
+    times = demo_times(load.variant_iterations(sweep))
     ax = fig.subplots()
     x = np.arange(len(times))
     shows = []
@@ -204,7 +208,7 @@ def em_compare(fig, *runs, labels):
     axes = np.atleast_1d(fig.subplots(1, len(runs), sharey=True))
     shows = []
     for ax, run, label in zip(axes, runs, labels):
-        it, by = compare_frames(run)
+        it, by = compare_frames(load.table(run, "em_compare.csv"))
         for j, (e, d) in enumerate(by.items()):
             ax.plot(it, rp.moving_average(d["ms"], SMOOTH), color=f"C{j}", lw=1,
                     label=f"{e}: median {np.median(d['ms']):.3g} ms, recall {np.mean(d['recall']):.4f}, "
@@ -227,7 +231,7 @@ def w_ma_figure(fig, *sweeps, labels):
         series = sweep_series(sweep, ["mean_map_error"], algorithm=PLANE)
         cells = []
         for name, d in series.items():
-            s = count_summary(variant_folder_of(sweep, name))
+            s = count_summary(load.summary(variant_folder_of(sweep, name)))
             ax.plot(d["iteration"], d["mean_map_error"], lw=1, label=f"{name}: final {s['final_mean_map_error']:.3g}, "
                     f"{s['walls_mapped']:.0f}/{s['walls_seen']:.0f} walls, pose valid "
                     f"{100 * s['pose_valid_fraction']:.0f} %")

@@ -6,9 +6,11 @@ import numpy as np
 import pandas as pd
 
 from draw import Figure, LE, MS, P, POS, SMOOTH, draw_fits, finish, label_densities, readable
-from measures.common import ALG, algorithms, iterations, line_fit, steady, sweep_series
+from measures.common import ALG, line_fit, steady
 from measures.compare import side_by_side
-from measures.points import COMPONENTS, density_table, vp_benchmarks, vp_landmarks
+from measures.points import COMPONENTS, density_table, vp_benchmarks
+import load
+from load import algorithms, iterations, sweep_series, vp_landmarks
 import relslam_plot as rp
 
 
@@ -195,7 +197,7 @@ def binning_lines(fig, run, column, ylabel, heuristic, percents=TENS, refs=(), c
 
 
 def density_series(ax, sweep, column, label, fits, color=None):
-    t = density_table(sweep)
+    t = density_table(load.density_runs(sweep))
     x, y = t["visible_points"], t[column]
     ax.plot(x, y, "o-", color=color, label=label)
     label_densities(ax, x, y, t["density"])
@@ -219,7 +221,7 @@ def density_pair(fig, *sweeps, labels, fits):
 
 def density_shares(fig, sweep):
     """Fig 142: each component's share of the run time, stacked, per density."""
-    t = density_table(sweep)
+    t = density_table(load.density_runs(sweep))
     ax = fig.subplots()
     bottom = np.zeros(len(t["density"]))
     for c in [*COMPONENTS, "t_other_ms"]:
@@ -232,7 +234,7 @@ def density_shares(fig, sweep):
 
 def density_excess(fig, sweep):
     """Fig 143: measured time minus its linear extrapolation from the lowest density, total vs load."""
-    t = density_table(sweep)
+    t = density_table(load.density_runs(sweep))
     x = t["visible_points"]
     ax = fig.subplots()
     excess = {name: t[c] - t[c][0] * x / x[0] for c, name in [("runtime_ms", "total"), ("t_load_ms", "load")]}
@@ -301,7 +303,7 @@ def vp_overlay(fig, run):
 
 def vp_timing(fig, path):
     """Extra: Victoria Park ms per scan per grouping level (Google Benchmark JSON) vs the thesis."""
-    measured = vp_benchmarks(path)
+    measured = vp_benchmarks(load.read_json(path), path)
     series = {"thesis (Athlon 64 3400+)": THESIS_VP_MS, **{f"ours, window {w}": v for w, v in measured.items()}}
     ax = fig.subplots()
     width = 0.8 / len(series)

@@ -13,6 +13,7 @@ import re
 
 import numpy as np
 
+import load
 import noise_sweep
 import relslam_plot as rp
 from measures import common, compare, planes, points
@@ -50,7 +51,7 @@ class Run:
 
     def iterations(self, columns, algorithm=ALG):
         self.file(algorithm, "iterations.csv")
-        return common.iterations(self.path, columns, algorithm)
+        return load.iterations(self.path, columns, algorithm)
 
     def summary(self, columns):
         """{algorithm: {column: value}} from summary.csv."""
@@ -60,7 +61,7 @@ class Run:
     def density(self):
         self.file("sweep.csv")
         self.read.append(os.path.join(os.path.relpath(self.path, self.runs), "*", "seed-*", ALG, "iterations.csv"))
-        return points.density_table(self.path)
+        return points.density_table(load.density_runs(self.path))
 
 
 def pick_density(available, wanted):
@@ -101,7 +102,7 @@ def after_closure(run):
     """Mean run time once the first loop is done (thesis 6.5.1: closure at about iteration 4000)."""
     path = run.file("manifest.json")
     try:
-        loop_end = int(common.read_json(path)["scenario"]["sim"]["iterations_per_loop"])
+        loop_end = int(load.read_json(path)["scenario"]["sim"]["iterations_per_loop"])
     except (KeyError, TypeError, ValueError):
         raise rp.DataError(f"{path}: no scenario.sim.iterations_per_loop") from None
     d = run.iterations(["runtime_ms"])
@@ -138,8 +139,8 @@ def dense(run, column, unit, wanted=550.0):
 
 def dense_total_points(run, wanted=550.0):
     density, note = pick_density(run.density()["density"], wanted)
-    folder = dict((float(v), f) for v, f in common.sweep_runs(run.path, "sim.density"))[density]
-    d = common.iterations(folder, ["landmarks_in_map"])
+    folder = dict((float(v), f) for v, f in load.sweep_runs(run.path, "sim.density"))[density]
+    d = load.iterations(folder, ["landmarks_in_map"])
     run.read.append(os.path.relpath(os.path.join(folder, ALG, "iterations.csv"), run.runs))
     return f"{d['landmarks_in_map'][-1]:.0f} landmarks on the map{note}"
 
@@ -197,8 +198,9 @@ def dynamic_drop(run):
 
 def vp_level(run, level):
     """ms per scan and the time for all 7249 scans, per window, from Google Benchmark JSON."""
+    path = run.file()
     cells = [f"{ms[level]:.3g} ms ({ms[level] * 7.249:.3g} s) [{window}]"
-             for window, ms in points.vp_benchmarks(run.file()).items() if level in ms]
+             for window, ms in points.vp_benchmarks(load.read_json(path), path).items() if level in ms]
     return "; ".join(cells) or f"no 'levels {level}' benchmark"
 
 
@@ -235,7 +237,7 @@ def verdict(s):
 def rule3_invariance(run):
     run.file("plane_observations.csv")
     run.file("ground_truth_path.tum")
-    psi, raw, rel, expected = planes.invariance(run.path)
+    psi, raw, rel, expected = planes.invariance(load.PlanarRun(run.path))
     return (f"raw std (Δx, Δz) ({raw[:, 0].std():.3g}, {raw[:, 1].std():.3g}) vs Rule 3 std ({rel[:, 0].std():.3g}, "
             f"{rel[:, 1].std():.3g}), Rule 3 mean ({rel[:, 0].mean():.4g}, {rel[:, 1].mean():.4g}) vs true "
             f"({expected[0]:.4g}, {expected[1]:.4g}); {len(psi)} iterations, ψ from {np.nanmin(psi):.0f}° to "
@@ -245,8 +247,9 @@ def rule3_invariance(run):
 def no_drift(run):
     run.file("manifest.json")
     run.file(PLANE, "iterations.csv")
-    loops = planes.loop_means(run.path, "mean_map_error")
-    pose = planes.loop_means(run.path, "position_error")
+    frames = load.PlanarRun(run.path)
+    loops = planes.loop_means(frames, "mean_map_error")
+    pose = planes.loop_means(frames, "position_error")
     first, last = loops[0][2], loops[-1][2]
     return (f"{'no drift' if last <= DRIFT_RATIO * first else 'drift'}: mean map error per plane, loop 1 "
             f"{first:.3g}, loop {len(loops)} {last:.3g} (ratio {last / first:.2f}; loops range "
@@ -312,9 +315,10 @@ def e21(run):
 def e10(run):
     """Rule 21's group counts (planes.group_counts, as Fig 82 shows them); Rule 22's time is the next row."""
     run.file("sweep.csv")
-    for (name,), folders in planes.plane_sweep(run.path):
+    for (name,), folders in load.plane_sweep(run.path):
         run.file(os.path.relpath(folders[0], run.path), PLANE, "iterations.csv")
-    return "; ".join(f"{name}: {n} groups" for name, n in planes.group_counts(run.path).items()) + \
+    counts = planes.group_counts(load.first_seed_iterations(run.path))
+    return "; ".join(f"{name}: {n} groups" for name, n in counts.items()) + \
         " (Rule 22's time while revisiting: the row 'E10 Rule 22')"
 
 
@@ -338,7 +342,7 @@ def e02(run):
     run.file(PLANE, "pairs.csv")
     run.file(PLANE, "pair_sigma.csv")
     run.file("plane_observations.csv")
-    series, sig, chosen, right = planes.key_point_pair(run.path)
+    series, sig, chosen, right = planes.key_point_pair(load.PlanarRun(run.path))
     others = [s for k, s in enumerate(sig["sigma"]) if k != chosen]
     name = planes.PAIR_NAMES[(int(sig["kp_a"][chosen]), int(sig["kp_b"][chosen]))]
     return (f"lowest σ {sig['sigma'][chosen]:.3g} ({name}) vs {min(others):.3g}-{max(others):.3g} for the other "
@@ -348,7 +352,7 @@ def e02(run):
 
 def e07(run):
     run.file("sweep.csv")
-    errors = planes.interval_mode_errors(run.path)
+    errors = planes.interval_mode_errors(load.plane_frames(run.path, planes.E07_AXES))
     cell = {key: v[2] for key, v in errors.items()}
     seeds = min(v[3] for v in errors.values())
     return ("run mean of the map error per plane, " + ", ".join(f"{m}/{n} {e:.3g}" for (m, n), e in cell.items())
@@ -360,13 +364,13 @@ def e08(run):
     and how soon they heal; wrong key-point episodes scored against the truth."""
     run.file("sweep.csv")
     cells = []
-    for (name,), folders in planes.plane_sweep(run.path):
+    for (name,), folders in load.plane_sweep(run.path):
         events = quick = never = episodes = longest = 0
         for folder in folders:
             run.file(os.path.relpath(folder, run.path), PLANE, "iterations.csv")
             run.file(os.path.relpath(folder, run.path), PLANE, "keypoints.csv")
-            n, q, nv, _ = planes.event_healing(folder)
-            k, _, _, lg = planes.healing(folder)
+            n, q, nv, _ = planes.event_healing(load.iteration_frame(folder, PLANE))
+            k, _, _, lg = planes.healing(load.plane_file(folder, "keypoints.csv"))
             events, quick, never, episodes, longest = events + n, quick + q, never + nv, episodes + k, max(longest, lg)
         cells.append(f"{name} ({len(folders)} seed(s)): {quick} of {events} map-error events healed within "
                      f"{planes.HEAL_ITERATIONS} iterations, {never} never; {episodes} wrong key-point episodes, longest "
@@ -379,7 +383,7 @@ def per_variant(run, names, name_file, describe):
     run.file("sweep.csv")
     cells = []
     for name in names:
-        folder = planes.variant_folder_of(run.path, name)
+        folder = load.variant_folder_of(run.path, name)
         run.file(os.path.relpath(folder, run.path), PLANE, name_file)
         cells.append(f"{name}: " + describe(folder))
     return "; ".join(cells)
@@ -387,7 +391,8 @@ def per_variant(run, names, name_file, describe):
 
 def e09(run):
     return per_variant(run, ("rule21_off", "rule21_new_group", "rule21_walkthrough"), "planes.csv",
-                       lambda folder: ", ".join(f"wall {w} at {r:.2f} of its length" for w, r in planes.under_sized(folder))
+                       lambda folder: ", ".join(f"wall {w} at {r:.2f} of its length"
+                                                for w, r in planes.under_sized(load.plane_file(folder, "planes.csv")))
                        or f"no wall under {planes.UNDER_SIZED:g} of its length")
 
 
@@ -395,10 +400,10 @@ def e10_rule22(run):
     run.file("sweep.csv")
     times = {}
     for name in ("rule21_capped", "rule22_off"):
-        folder = planes.variant_folder_of(run.path, name)
+        folder = load.variant_folder_of(run.path, name)
         run.file(os.path.relpath(folder, run.path), PLANE, "iterations.csv")
         run.file(os.path.relpath(folder, run.path), "ground_truth_path.tum")
-        times[name] = planes.revisit_time(folder)
+        times[name] = planes.revisit_time(load.PlanarRun(folder))
     on, off = times["rule21_capped"], times["rule22_off"]
     if on is None or off is None:
         return "no revisit: the runs end before the robot is back at its start"
@@ -408,14 +413,15 @@ def e10_rule22(run):
 
 def e12(run):
     return per_variant(run, ("rule28_on", "rule28_off"), "planes.csv",
-                       lambda folder: ", ".join(f"wall {w} {e:.3g} off its line" for w, e in planes.misplaced(folder))
+                       lambda folder: ", ".join(f"wall {w} {e:.3g} off its line"
+                                                for w, e in planes.misplaced(load.plane_file(folder, "planes.csv")))
                        or f"every mapped plane on its wall's line (≤ {planes.OFF_LINE:g})")
 
 
 def e15(run):
     run.file("sweep.csv")
     cells = []
-    for (name,), folders in planes.plane_sweep(run.path):
+    for (name,), folders in load.plane_sweep(run.path):
         rel = os.path.relpath(folders[0], run.path)
         s = plane_summary(run, rel)
         t = rp.read_table(run.file(rel, "summary.csv"), ["algorithm", "key_point_accuracy"], text=("algorithm",))
@@ -428,7 +434,7 @@ def e15(run):
 def e18(run):
     for name in ("iterations.csv", "keypoints.csv", "edges.csv"):
         run.file(PLANE, name)
-    d, first_bad, claims_tied, edges_tied = planes.collinear_run(run.path)
+    d, first_bad, claims_tied, edges_tied = planes.collinear_run(load.PlanarRun(run.path))
     s = plane_summary(run)
     until = "throughout" if first_bad is None else f"until iteration {first_bad}"
     valid = np.nonzero(d["pose_valid"] == 1)[0]
@@ -449,7 +455,7 @@ def e19(run):
 
 def e20(run):
     """Rule 37 on against off, seed by seed: iterations with another current group, one-way links, plane 1's e_ends."""
-    variants = dict(planes.plane_sweep(run.path))
+    variants = dict(load.plane_sweep(run.path))
     if ("rule37_on",) not in variants or ("rule37_off",) not in variants:
         raise rp.DataError(f"{os.path.join(run.path, 'sweep.csv')}: column variant: needs rule37_on and rule37_off")
     cells = []
@@ -470,8 +476,9 @@ def e20(run):
 
 def e32(run):
     run.file("sweep.csv")
+    sizes = planes.runtime_by_size(load.first_seed_iterations(run.path, "planar.loops"))
     return "; ".join(f"{k} loop(s): median {v[0]:.3g} ms (first tenth {v[1]:.3g}, last tenth {v[2]:.3g}), {v[3]} "
-                     f"RltPlanes" for k, v in planes.runtime_by_size(run.path).items())
+                     f"RltPlanes" for k, v in sizes.items())
 
 
 # Relative Plane part 3: the motion model (Rules 23-27, 29: E11, E13, E14, E16, E22) and the interval
@@ -481,7 +488,7 @@ def e17(run):
     run.file("sweep.csv")
     cells = []
     for name in ("interval_check_off", "interval_check_on"):
-        rel = os.path.relpath(planes.variant_folder_of(run.path, name), run.path)
+        rel = os.path.relpath(load.variant_folder_of(run.path, name), run.path)
         s = plane_summary(run, rel)
         t = rp.read_table(run.file(rel, "summary.csv"), ["algorithm", "hints", "rollbacks", "replayed_iterations"],
                           text=("algorithm",))
@@ -500,7 +507,7 @@ def seed_folders(run, names=PLANE_FILES):
     """Every run folder of a planar sweep (all variants and seeds), recording the files (relative to a run
     folder) read from each."""
     run.file("sweep.csv")
-    folders = [f for _, fs in planes.plane_sweep(run.path, ("seed",)) for f in fs]
+    folders = [f for _, fs in load.plane_sweep(run.path, ("seed",)) for f in fs]
     for folder in folders:
         for name in names:
             run.file(os.path.relpath(folder, run.path), name)
@@ -513,17 +520,18 @@ def e11(run):
     starts, ends, grown, inside, outside, events, quick, joined, longest = [], [], [], [0, 0], [0, 0], 0, 0, 0, 0
     folders = seed_folders(run, PLANE_FILES + (os.path.join(PLANE, "keypoints.csv"),))
     for folder in folders:
-        e, before, heading = planes.first_corner(folder)
+        frames = load.PlanarRun(folder)
+        e, before, heading = planes.first_corner(frames)
         starts.append(before)
         ends.append(heading)
         grown.append(e["length"] / e["true_length"])
-        split = planes.key_points_by_phase(folder)
+        split = planes.key_points_by_phase(frames.iterations)
         inside = [a + b for a, b in zip(inside, split["in"])]
         outside = [a + b for a, b in zip(outside, split["out"])]
-        n, q, _, _ = planes.event_healing(folder)
+        n, q, _, _ = planes.event_healing(frames.iterations)
         events, quick = events + n, quick + q
-        joined += sum(e[3] for e in planes.map_error_events(folder))
-        longest = max([longest] + [ep[3] for ep in planes.wrong_episodes(folder)])
+        joined += sum(e[3] for e in planes.map_error_events(frames.iterations))
+        longest = max([longest] + [ep[3] for ep in planes.wrong_episodes(frames.keypoints)])
     return (f"{len(folders)} seed(s): the motion model starts {min(starts):.2g}-{max(starts):.2g} units before the "
             f"turn (the end of the hallway) and ends {min(ends):.0f}-{max(ends):.0f}° into it; the end wall's tracked "
             f"length at its end {min(grown):.3f}-{max(grown):.3f} of its true length; wrong key-point claims (the "
@@ -538,10 +546,10 @@ LOST = 1.0  # units: a position error above this is a lost pose, not noise
 
 def e13(run):
     seed_folders(run)
-    stats = planes.grown_lengths(run.path)
+    stats = planes.grown_lengths(load.planar_variants(run.path))
     cells = []
-    for (name,), folders in planes.plane_sweep(run.path):
-        lost = [int(np.sum(common.iterations(f, ["position_error"], PLANE)["position_error"] > LOST)) for f in folders]
+    for (name,), folders in load.plane_sweep(run.path):
+        lost = [int(np.sum(load.iterations(f, ["position_error"], PLANE)["position_error"] > LOST)) for f in folders]
         cells.append(planes.grown_text(name, stats[name]) + f"; position error above {LOST:g} in "
                      f"{', '.join(map(str, lost))} iterations (per seed)")
     return "; ".join(cells)
@@ -550,7 +558,8 @@ def e13(run):
 def e14(run):
     seed_folders(run, (os.path.join(PLANE, "planes.csv"), "plane_observations.csv", "ground_truth_path.tum"))
     cells = []
-    for name, (frustum, shape, wall, seen, mapped, true) in planes.frustum_turns(run.path).items():
+    turns = planes.frustum_turns(load.first_seeds(run.path))
+    for name, (frustum, shape, wall, seen, mapped, true) in turns.items():
         k = int(np.argmax(seen["length"]))
         cells.append(f"{name}: wall {wall} in view up to {seen['length'][k]:.3g} (ψ {seen['psi_deg'][k]:.0f}°), "
                      f"{seen['length'][-1]:.3g} at the turn's end, farthest end {np.max(seen['range']):.3g}; mapped "
@@ -561,10 +570,10 @@ def e14(run):
 def e16(run):
     cells = []
     for name in ("rule29_on", "rule29_off"):
-        folder = planes.variant_folder_of(run.path, name)
+        folder = load.variant_folder_of(run.path, name)
         for file in ("iterations.csv", "groups.csv", "planes.csv"):
             run.file(os.path.relpath(folder, run.path), PLANE, file)
-        n, back, groups = planes.motion_model_exits(folder)
+        n, back, groups = planes.motion_model_exits(load.PlanarRun(folder))
         s = plane_summary(run, os.path.relpath(folder, run.path))
         cells.append(f"{name}: {groups} groups; {back} of {n} motion models ended in a group made before them; "
                      f"{s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, final mean map error "
@@ -575,9 +584,10 @@ def e16(run):
 def e22(run):
     run.file(PLANE, "iterations.csv")
     run.file("plane_observations.csv")
-    k, first, last = planes.one_plane_iteration(run.path)
+    frames = load.PlanarRun(run.path)
+    k, first, last = planes.one_plane_iteration(frames)
     d = run.iterations(["mm_active", "visible_planes", "position_error"], PLANE)
-    loops, n = planes.run_loops(run.path)
+    loops, n = planes.run_loops(frames.manifest, frames.manifest_path)
     last_loop = d["iteration"] >= n * (loops - 1) / loops
     single = last_loop & (d["visible_planes"] == 1)
     return (f"on the last loop {int(np.sum(single))} iterations have a single plane in view, the motion model active "
@@ -654,8 +664,8 @@ def e27_real_time(run):
     """ms per iteration of EM and the Relative Plane algorithm, per E27 cell."""
     run.file("sweep.csv")
     cells = []
-    for variant, (em, rplane) in em_measures.demo_times(run.path).items():
-        run.read.append(os.path.join(os.path.relpath(em_measures.sweep_cell(run.path, variant), run.runs), PLANE,
+    for variant, (em, rplane) in em_measures.demo_times(load.variant_iterations(run.path)).items():
+        run.read.append(os.path.join(os.path.relpath(load.sweep_cell(run.path, variant), run.runs), PLANE,
                                      "iterations.csv"))
         total = em + rplane
         cells.append(f"{variant}: EM {np.median(em):.3g} + RP {np.median(rplane):.3g} ms median, together p95 "
@@ -667,7 +677,7 @@ def e27_real_time(run):
 def e30_bench(run):
     """Each failure case of the test bench beside the defaults: mean recall / precision over the seeds
     of EM2 and EM1 (bench.csv)."""
-    t = em_measures.bench_scores(run.path)
+    t = load.bench_scores(run.path)
     run.file("bench.csv")
     cases = [("close walls 0.1 apart", "close_parallel", "gap=0.1"), ("0.5 apart", "close_parallel", "gap=0.5"),
              ("d_in 0.6", "attached_smaller", "inlier_distance=0.6"),
@@ -690,7 +700,7 @@ def e29_speed(*runs):
     cells = []
     for run in runs:
         run.file("em_compare.csv")
-        it, by = em_measures.compare_frames(run.path)
+        it, by = em_measures.compare_frames(load.table(run.path, "em_compare.csv"))
         if not {"em1", "em2"} <= set(by):
             raise rp.DataError(f"{os.path.join(run.path, 'em_compare.csv')}: no ms_em1 and ms_em2 columns")
         em1, em2 = by["em1"], by["em2"]
@@ -709,7 +719,7 @@ def e23_w_ma(*sweeps):
     for run in sweeps:
         run.file("sweep.csv")
         maps = []
-        for (name,), folders in planes.plane_sweep(run.path):
+        for (name,), folders in load.plane_sweep(run.path):
             s = plane_summary(run, os.path.relpath(folders[0], run.path))
             maps.append(f"{name}: {s['walls_mapped']:.0f} of {s['walls_seen']:.0f} walls mapped, "
                         f"{s['duplicates']:.0f} duplicate(s), final mean map error {s['final_mean_map_error']:.3g}, "

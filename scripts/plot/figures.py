@@ -27,7 +27,8 @@ import chapter5
 import chapter6
 import relslam_plot as rp
 from draw import DPI, FIGSIZE, Figure
-from measures.common import ALG, read_json
+from measures.common import ALG
+from load import read_json
 
 
 def chapter_of(figure):

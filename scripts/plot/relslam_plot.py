@@ -4,7 +4,6 @@ Plots read only CSV and manifest.json; they never rerun C++.
 
 Usage: import relslam_plot as rp; rp.read_table("runs/f8/relative_point/iterations.csv", ["iteration"])
 """
-import csv
 import json
 import os
 import sys
@@ -16,6 +15,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 matplotlib.use("Agg")  # headless: CI and servers have no display
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import relslam_data  # noqa: E402
 
 
 class DataError(Exception):
@@ -24,33 +24,15 @@ class DataError(Exception):
 
 def read_table(path, names, text=()):
     """Returns {name: numpy array} for the requested columns: floats (empty fields are NaN), or
-    strings for the names in `text`. Raises DataError naming the file, line and column."""
-    if not os.path.exists(path):
-        raise DataError(f"{path}: file not found")
-    with open(path, newline="") as f:
-        reader = csv.reader(f)
-        header = next(reader, None) or []
-        missing = [n for n in names if n not in header]
-        if missing:
-            raise DataError(f"{path}: missing column(s) {', '.join(missing)}")
-        index = {n: header.index(n) for n in names}
-        columns = {n: [] for n in names}
-        for line, row in enumerate(reader, start=2):
-            for n, i in index.items():
-                field = row[i] if i < len(row) else None
-                if field is None:
-                    raise DataError(f"{path}:{line}: column {n}: row too short")
-                columns[n].append(field if n in text else _number(field, path, line, n))
-    return {n: np.array(v, dtype=object if n in text else float) for n, v in columns.items()}
-
-
-def _number(field, path, line, name):
-    if field == "":
-        return float("nan")
+    strings for the names in `text`. Read by relslam_data's checked reader (python/relslam_data, the
+    loader plot_run.py and load.py use); raises DataError naming the file, line and column."""
     try:
-        return float(field)
-    except ValueError:
-        raise DataError(f"{path}:{line}: column {name}: not a number: {field!r}") from None
+        frame = relslam_data.read_csv(path, required=names, numeric=[n for n in names if n not in text],
+                                      strings=text)
+    except relslam_data.DataError as e:
+        raise DataError(str(e)) from None
+    return {n: np.array(["" if v != v else str(v) for v in frame[n]], dtype=object) if n in text
+            else frame[n].to_numpy(dtype=float) for n in names}
 
 
 def read_columns(path, names):
@@ -64,19 +46,11 @@ def read_columns(path, names):
 
 
 def read_tum(path):
-    """TUM trajectory -> {t, x, y, z, qx, qy, qz, qw} lists."""
-    if not os.path.exists(path):
-        raise DataError(f"{path}: file not found")
-    names = ("t", "x", "y", "z", "qx", "qy", "qz", "qw")
-    cols = {k: [] for k in names}
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            v = [float(s) for s in line.split()]
-            for k, value in zip(names, v):
-                cols[k].append(value)
-    return cols
+    """TUM trajectory -> {t, x, y, z, qx, qy, qz, qw} lists (relslam_data's checked reader)."""
+    try:
+        return {k: list(v) for k, v in relslam_data.read_tum(path).items()}
+    except relslam_data.DataError as e:
+        raise DataError(str(e)) from None
 
 
 def moving_average(values, width):

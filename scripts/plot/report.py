@@ -156,14 +156,18 @@ def chapter_sections(results, renders, render_notes):
 # ---- the summary page ------------------------------------------------------------------------
 
 def number(value, digits=3):
-    return "–" if value is None or value != value else f"{value:.{digits}g}"
+    """3 significant digits, but never powers of ten for 1000 and more (a reader compares 2216 with 146
+    more easily than 2.22e+03)."""
+    if value is None or value != value:
+        return "–"
+    return f"{value:.0f}" if abs(value) >= 10 ** digits else f"{value:.{digits}g}"
 
 
 def comparison_table(runs):
     """Relative Point against each baseline in every comparison run that exists: one row per algorithm."""
     head = ("<tr><th>experiment</th><th>algorithm</th><th>status</th><th>iterations</th>" +
             "".join(f"<th>{html.escape(h)}</th>" for h in compare.SUMMARY_COLUMNS.values()) + "</tr>")
-    body, notes = [], []
+    body, notes, untruthed = [], [], False
     for folder, what, figure in COMPARISONS:
         if not os.path.isdir(os.path.join(runs, folder)):
             continue
@@ -172,6 +176,7 @@ def comparison_table(runs):
         except DataError as e:
             notes.append(f"<li>{html.escape(folder)}: {html.escape(str(e))}</li>")
             continue
+        untruthed = untruthed or folder.startswith("vp-")
         link = f'<a href="chapter6.html#fig{figure}">{html.escape(what)}</a> (<code>{folder}</code>)'
         for i, (name, r) in enumerate(rows.iterrows()):
             cells = "".join(f'<td class="num">{number(r.get(c))}</td>' for c in compare.SUMMARY_COLUMNS)
@@ -186,6 +191,9 @@ def comparison_table(runs):
                          f"faster than {html.escape(algorithm_label(base))} (median ms per iteration).</li>")
     if not body:
         return "<p>No comparison run in this report (scripts/reproduce.sh makes them).</p>"
+    if untruthed:
+        notes.append("<li>–: no truth to score against (Victoria Park has GPS only; its figures set the maps and "
+                     "paths against GPS).</li>")
     return (f"<table>{head}{''.join(body)}</table>\n<ul>{''.join(notes)}</ul>\n")
 
 
@@ -244,12 +252,13 @@ def headline(runs, rows):
     for quantity, _, ours, verdict, _ in rows:
         if quantity.startswith("Relative vs EKF position error, figure eight"):
             said.append(f"The thesis calls the two position errors comparable (Fig 147): that <b>{verdict}</b> here "
-                        f"({html.escape(ours.split(': ', 1)[-1])}).")
+                        f"({html.escape(ours)}).")
     counts = {v: sum(r[3] == v for r in rows) for v in VERDICT_CLASS}
     said.append(f"Of {len(rows)} thesis claims, {counts[claims.HOLDS]} hold, {counts[claims.PARTLY]} partly hold and "
                 f"{counts[claims.DOES_NOT]} do not; {counts[claims.NOT_JUDGED]} are not judged (times on the thesis's "
-                f"2004 hardware, or pictures to compare by eye: read them in the table) and {counts[claims.NOT_RUN]} "
-                "were not run.")
+                "2004 hardware, or pictures to compare by eye: read them in the table)" +
+                (f" and {counts[claims.NOT_RUN]} were not run" if counts[claims.NOT_RUN] else "") +
+                ': <a href="#claims">each claim with its verdict</a>.')
     return f'<p class="headline">{" ".join(said)}</p>\n'
 
 
@@ -265,7 +274,7 @@ def summary_body(runs, results, renders, claim_rows):
     chapters = "".join(f'<li><a href="{f}">{html.escape(t)}</a></li>' for _, t, f in CHAPTERS)
     return (f"{headline(runs, claim_rows)}<h2>Relative Point against the EKF and the other baselines</h2>\n"
             f"{comparison_table(runs)}"
-            f"{''.join(key)}\n<h2>The thesis's claims: do they hold in our runs?</h2>\n"
+            f"{''.join(key)}\n<h2 id='claims'>The thesis's claims: do they hold in our runs?</h2>\n"
             f"{claims_table(claim_rows, ids)}\n<h2>Figures by chapter</h2>\n<ul>{chapters}</ul>\n"
             f"<p>{made} of {total} figures produced from <code>{html.escape(runs)}</code>.</p>\n" +
             (f"<p>Missing runs: {html.escape('; '.join(missing))}.</p>\n" if missing else ""))

@@ -266,7 +266,7 @@ expect "malformed CSV: Fig 119 skipped naming s-f8-first-three" \
 mkdir -p "$work/bad/s-f8-first-three"
 out=$("$python" "$plot/figures.py" --runs "$work/bad" --out "$work/bad/figures" --fig 119 2>&1)
 expect "bad value: Fig 119 reports file, line and column" \
-  grep -q "s-f8/relative_point/iterations.csv:3: column landmark_error: not a number: 'oops'" <<<"$out"
+  grep -q "s-f8/relative_point/iterations.csv: line 3: column landmark_error: not a number" <<<"$out"
 out=$("$python" "$plot/figures.py" --runs "$work/bad" --out "$work/bad/figures" --fig 999 2>&1)
 expect "unknown figure: exit 2" [ $? -eq 2 ]
 

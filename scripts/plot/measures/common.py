@@ -1,66 +1,63 @@
-"""Reading run folders and fitting curves: the pieces every chapter's measures share."""
-import json
-import os
+"""The pieces every chapter's measures share: columns of a loaded table, means over seeds, fitted curves.
 
+Every measure in this package is a pure function: it takes the data frames load.py reads (or, in tests,
+frames built by hand) and returns numbers; nothing here opens a file or draws.
+"""
 import numpy as np
 
 import relslam_plot as rp
 
 
 ALG = "relative_point"
-
-
+PLANE = "relative_plane"
 STEADY_FROM = 200  # thesis 6: density means are over iterations 200..end (Fig 136 also starts there)
 
 
-def iterations(run, columns, algorithm=ALG):
-    """One algorithm's iterations.csv columns (plus `iteration`); an empty file is an error."""
-    path = os.path.join(run, algorithm, "iterations.csv")
-    table = rp.read_table(path, ["iteration", *columns])
-    if len(table["iteration"]) == 0:
-        raise rp.DataError(f"{path}: no rows")
-    return table
+def source(table):
+    """The file a table was read from (load.py records it), for messages."""
+    return getattr(table, "attrs", {}).get("path", "table")
 
 
-def algorithms(run):
-    """Algorithms of a run, in summary.csv order (the relative_point/ekf6d row holds ratios)."""
-    t = rp.read_table(os.path.join(run, "summary.csv"), ["algorithm", "status"], text=("algorithm", "status"))
-    return [a for a, s in zip(t["algorithm"], t["status"]) if s != "ratio"]
-
-
-def sweep_runs(sweep, axis, algorithm=ALG):
-    """[(axis value, run folder)] of a `relslam sweep` folder, one algorithm's rows, sweep order."""
-    path = os.path.join(sweep, "sweep.csv")
-    t = rp.read_table(path, [axis, "folder", "algorithm"], text=(axis, "folder", "algorithm"))
-    runs = [(v, os.path.join(sweep, f)) for v, f, a in zip(t[axis], t["folder"], t["algorithm"]) if a == algorithm]
-    if not runs:
-        raise rp.DataError(f"{path}: column algorithm: no {algorithm} rows")
-    return runs
-
-
-def sweep_series(sweep, columns, axis="variant", algorithm=ALG):
-    """{axis value: {column: per-iteration mean over the seeds}} (seeds cut to the shortest run)."""
-    grouped = {}
-    for value, folder in sweep_runs(sweep, axis, algorithm):
-        grouped.setdefault(value, []).append(iterations(folder, columns, algorithm))
+def arrays(table, names, strings=()):
+    """{name: numpy array} of a table's columns: floats (empty fields NaN), or str for the `strings`
+    (empty ones ""). The table is a DataFrame (load.py's) or already such a dict; a missing column or a
+    field that is not a number is a DataError naming the file."""
+    missing = [n for n in names if n not in table]
+    if missing:
+        raise rp.DataError(f"{source(table)}: missing column(s) {', '.join(missing)}")
     out = {}
-    for value, runs in grouped.items():
-        n = min(len(r["iteration"]) for r in runs)
-        out[value] = {c: np.mean([r[c][:n] for r in runs], axis=0) for c in ["iteration", *columns]}
+    for n in names:
+        if n in strings:
+            out[n] = np.array(["" if v is None or (isinstance(v, float) and v != v) else str(v) for v in table[n]],
+                              dtype=object)
+            continue
+        try:
+            out[n] = np.asarray(table[n], dtype=float)
+        except (TypeError, ValueError):
+            raise rp.DataError(f"{source(table)}: {first_non_number(table[n])}column {n}: not a number") from None
     return out
+
+
+def first_non_number(values):
+    """'line L: ' of the first value that is not a number (line 1 is a CSV file's header), else ''."""
+    for row, v in enumerate(values):
+        try:
+            float(v)
+        except (TypeError, ValueError):
+            return f"line {row + 2}: "
+    return ""
+
+
+def seed_means(runs, columns):
+    """{column: per-iteration mean over the runs} of tables of the same columns (one per seed), each cut
+    to the shortest."""
+    n = min(len(r[columns[0]]) for r in runs)
+    return {c: np.mean([np.asarray(r[c], dtype=float)[:n] for r in runs], axis=0) for c in columns}
 
 
 def steady(values):
     """Iterations from STEADY_FROM on; shortened (quick) runs keep their second half instead."""
     return values[STEADY_FROM:] if len(values) >= 2 * STEADY_FROM else values[len(values) // 2:]
-
-
-def read_json(path):
-    try:
-        with open(path) as f:
-            return json.load(f)
-    except (OSError, ValueError) as e:
-        raise rp.DataError(f"{path}: {e}") from None
 
 
 def n_log_n(n):
@@ -81,5 +78,3 @@ def line_fit(x, y):
     slope, intercept = np.polyfit(np.asarray(x, float), np.asarray(y, float), 1)
     return float(slope), float(intercept)
 
-
-PLANE = "relative_plane"

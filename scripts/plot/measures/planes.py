@@ -1,51 +1,52 @@
-"""Chapter 4 (Relative Plane) measures: the numbers its figures show and claims.py checks."""
-import os
+"""Chapter 4 (Relative Plane) measures: the numbers its figures show and claims.py checks.
 
+Pure functions on the tables of a planar run that load.py reads. A measure that needs one file takes
+its table (planes.csv, keypoints.csv, edges.csv, summary.csv, ...); one that needs several takes `r`, the
+run's tables as attributes: r.iterations (relative_plane/iterations.csv), r.planes, r.groups,
+r.keypoints, r.edges, r.pairs, r.pair_sigma (relative_plane/*.csv), r.observations
+(plane_observations.csv), r.truth_path (ground_truth_path.tum), r.walls (ground_truth_walls.csv),
+r.manifest (manifest.json as a dict). load.PlanarRun reads them when first used; a test passes a
+types.SimpleNamespace of hand-made frames.
+"""
 import numpy as np
 
-from measures.common import PLANE, iterations, read_json
+from measures.common import PLANE, arrays, source
 import relslam_plot as rp
 
-
-def plane_table(run, name, columns, text=()):
-    return rp.read_table(os.path.join(run, PLANE, name), columns, text=text)
+OBSERVED = ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"]
 
 
-def true_walls(run):
-    return rp.read_table(os.path.join(run, "ground_truth_walls.csv"), ["id", "a_x", "a_z", "b_x", "b_z"])
-
-
-def true_path(run):
-    """{iteration, x, z, psi_deg} of ground_truth_path.tum (TUM time = iteration)."""
-    return planar_track(os.path.join(run, "ground_truth_path.tum"))
-
-
-def planar_track(path):
-    """{iteration, x, z, psi_deg} of a planar run's TUM file. The planar turn by ψ is a rotation about −y
-    (core/planar_pose.hpp), so q = (0, −sin ψ/2, 0, cos ψ/2)."""
-    t = rp.read_tum(path)
+def planar_track(tum):
+    """{iteration, x, z, psi_deg} of a planar run's TUM trajectory (t, x, y, z, qx, qy, qz, qw; TUM time =
+    iteration). The planar turn by ψ is a rotation about −y (core/planar_pose.hpp), so
+    q = (0, −sin ψ/2, 0, cos ψ/2)."""
+    t = arrays(tum, ["t", "x", "z", "qy", "qw"])
     psi = np.degrees(2 * np.arctan2(-np.asarray(t["qy"]), np.asarray(t["qw"])))
     return {"iteration": np.asarray(t["t"]), "x": np.asarray(t["x"]), "z": np.asarray(t["z"]),
             "psi_deg": (psi + 180) % 360 - 180}
 
 
-def run_loops(run):
+def run_loops(manifest, where="manifest.json"):
     """(loops, iterations) of a planar run from its manifest (0 loops: the map's own path)."""
-    path = os.path.join(run, "manifest.json")
-    m = read_json(path)
     try:
-        return int(m["scenario"]["planar"]["loops"]), int(m["planar_simulation"]["iterations"])
+        return int(manifest["scenario"]["planar"]["loops"]), int(manifest["planar_simulation"]["iterations"])
     except (KeyError, TypeError, ValueError):
-        raise rp.DataError(f"{path}: no scenario.planar.loops or planar_simulation.iterations") from None
+        raise rp.DataError(f"{where}: no scenario.planar.loops or planar_simulation.iterations") from None
 
 
-def loop_means(run, column):
+def loop_means(r, column):
     """[(first iteration, last iteration, mean of column)] per loop: the run cut into its loops of equal
     length (the last iteration closes the final loop). Invalid poses (empty fields) are left out."""
-    loops, n = run_loops(run)
+    where = manifest_path(r)
+    loops, n = run_loops(r.manifest, where)
     if loops < 1:
-        raise rp.DataError(f"{os.path.join(run, 'manifest.json')}: scenario.planar.loops is {loops}: no loops")
-    return means_per_loop(iterations(run, [column], PLANE), column, loops, n)
+        raise rp.DataError(f"{where}: scenario.planar.loops is {loops}: no loops")
+    return means_per_loop(arrays(r.iterations, ["iteration", column]), column, loops, n)
+
+
+def manifest_path(r):
+    """Where r's manifest came from, for messages."""
+    return getattr(r, "manifest_path", "manifest.json")
 
 
 def means_per_loop(d, column, loops, n):
@@ -60,11 +61,12 @@ def means_per_loop(d, column, loops, n):
     return out
 
 
-def group_layout(run):
+def group_layout(groups, planes):
     """{group id: (x, z, [member plane ids])}: a label at the mean of the member planes' mapped midpoints,
-    as the paper draws its X labels ("for display purposes the centroid of the group", paper §II.D)."""
-    g = plane_table(run, "groups.csv", ["group_id", "planes"], text=("planes",))
-    p = plane_table(run, "planes.csv", ["id", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+    as the paper draws its X labels ("for display purposes the centroid of the group", paper §II.D).
+    groups, planes: groups.csv and planes.csv."""
+    g = arrays(groups, ["group_id", "planes"], strings=("planes",))
+    p = arrays(planes, ["id", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
     mid = {int(i): ((ax + bx) / 2, (az + bz) / 2)
            for i, ax, az, bx, bz in zip(p["id"], p["kp1_x"], p["kp1_z"], p["kp2_x"], p["kp2_z"])
            if np.isfinite([ax, az, bx, bz]).all()}
@@ -76,25 +78,25 @@ def group_layout(run):
     return out, mid
 
 
-def count_summary(run):
-    s = rp.read_table(os.path.join(run, "summary.csv"), ["algorithm", "final_mean_map_error", "walls_mapped",
-                                                          "walls_seen", "duplicates", "pose_valid_fraction"],
-                      text=("algorithm",))
+def count_summary(summary):
+    """summary.csv's relative_plane row: final mean map error, walls mapped and seen, duplicates, share of
+    valid poses."""
+    s = arrays(summary, ["algorithm", "final_mean_map_error", "walls_mapped", "walls_seen", "duplicates",
+                         "pose_valid_fraction"], strings=("algorithm",))
     rows = [i for i, a in enumerate(s["algorithm"]) if a == PLANE]
     if not rows:
-        raise rp.DataError(f"{os.path.join(run, 'summary.csv')}: column algorithm: no {PLANE} row")
+        raise rp.DataError(f"{source(summary)}: column algorithm: no {PLANE} row")
     return {c: s[c][rows[0]] for c in s if c != "algorithm"}
 
 
-def rltplane_rows(run, wall=0, first=6):
+def rltplane_rows(observations, wall=0, first=6):
     """Rows of one plane's untransformed observations (thesis Fig 65: iteration, location, orientation;
     paper Fig 1 adds the plane equation's d): midpoint m, normal n = tangent turned +90° (thesis 4.2.1)
-    as (nx, ny, nz) with ny = 0 (2½D), d = −n·m, robot frame."""
-    o = rp.read_table(os.path.join(run, "plane_observations.csv"),
-                      ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+    as (nx, ny, nz) with ny = 0 (2½D), d = −n·m, robot frame. observations: plane_observations.csv."""
+    o = arrays(observations, OBSERVED)
     sel = np.nonzero(o["true_wall"] == wall)[0]
     if len(sel) == 0:
-        raise rp.DataError(f"{os.path.join(run, 'plane_observations.csv')}: column true_wall: no wall {wall}")
+        raise rp.DataError(f"{source(observations)}: column true_wall: no wall {wall}")
     rows = []
     for k in [*sel[:first], sel[-1]]:
         a = np.array([o["kp1_x"][k], o["kp1_z"][k]])
@@ -106,15 +108,14 @@ def rltplane_rows(run, wall=0, first=6):
     return rows, len(sel)
 
 
-def invariance(run):
+def invariance(r):
     """E01: per iteration with both walls, the raw midpoint difference m2 − m1 and the Rule 3 offset
     Rot(−θ1)(m2 − m1), θ1 = plane 1's direction a→b (thesis 4.3.1), with the robot's true heading; plus
-    the offset the true walls give."""
-    o = rp.read_table(os.path.join(run, "plane_observations.csv"),
-                      ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+    the offset the true walls give. Uses r.observations, r.truth_path, r.walls."""
+    o = arrays(r.observations, OBSERVED)
     walls = sorted(set(o["true_wall"]))[:2]
     if len(walls) < 2:
-        raise rp.DataError(f"{os.path.join(run, 'plane_observations.csv')}: column true_wall: fewer than two walls")
+        raise rp.DataError(f"{source(r.observations)}: column true_wall: fewer than two walls")
     pose = {"m": {}, "theta": {}}
     for k in range(len(o["iteration"])):
         w = o["true_wall"][k]
@@ -125,9 +126,9 @@ def invariance(run):
     both = sorted(i for i, j in pose["m"] if j == 0 and (i, 1) in pose["m"])
     raw = np.array([pose["m"][(i, 1)] - pose["m"][(i, 0)] for i in both])
     rel = np.array([planar_rotation(-pose["theta"][(i, 0)]) @ r for i, r in zip(both, raw)])
-    path = true_path(run)
+    path = planar_track(r.truth_path)
     heading = dict(zip(path["iteration"], path["psi_deg"]))
-    w = true_walls(run)
+    w = arrays(r.walls, ["id", "a_x", "a_z", "b_x", "b_z"])
     ends = {int(i): (np.array([ax_, az]), np.array([bx, bz]))
             for i, ax_, az, bx, bz in zip(w["id"], w["a_x"], w["a_z"], w["b_x"], w["b_z"])}
     (a1, b1), (a2, b2) = ends[int(walls[0])], ends[int(walls[1])]
@@ -155,50 +156,27 @@ PAIR_NAMES = {(1, 1): "KP1–KP1", (1, 2): "KP1–KP2", (2, 1): "KP2–KP1", (2,
 UNDER_SIZED = 0.95  # a mapped plane shorter than this share of its wall is under-sized (E09) [R]
 
 
-def plane_sweep(sweep, axes=("variant",)):
-    """[(axis values tuple, [run folders over the seeds])] of a planar sweep, in sweep.csv order."""
-    path = os.path.join(sweep, "sweep.csv")
-    t = rp.read_table(path, [*axes, "folder", "algorithm"], text=(*axes, "folder", "algorithm"))
-    out = {}
-    for k in range(len(t["folder"])):
-        if t["algorithm"][k] == PLANE:
-            out.setdefault(tuple(t[a][k] for a in axes), []).append(os.path.join(sweep, t["folder"][k]))
-    if not out:
-        raise rp.DataError(f"{path}: column algorithm: no {PLANE} rows")
-    return list(out.items())
-
-
-def variant_folder_of(sweep, name):
-    """The first seed's folder of variant `name` of a planar sweep."""
-    for (value,), folders in plane_sweep(sweep):
-        if value == name:
-            return folders[0]
-    raise rp.DataError(f"{os.path.join(sweep, 'sweep.csv')}: column variant: no {name!r}")
-
-
-def seed_mean(folders, column):
-    """{iteration, column}: the per-iteration mean over the seeds' runs (cut to the shortest)."""
-    runs = [iterations(f, [column], PLANE) for f in folders]
+def seed_mean(frames, column):
+    """(iterations, per-iteration mean of column over the seeds' iterations tables, cut to the shortest)."""
+    runs = [arrays(f, ["iteration", column]) for f in frames]
     n = min(len(r["iteration"]) for r in runs)
     values = np.array([r[column][:n] for r in runs])
     seen = np.isfinite(values).sum(axis=0)  # before the first pose no seed has a value: NaN, silently
     return runs[0]["iteration"][:n], np.where(seen > 0, np.nansum(values, axis=0) / np.maximum(seen, 1), np.nan)
 
 
-def key_point_pair(run):
+def key_point_pair(r):
     """pairs.csv, pair_sigma.csv and the truth of the chosen key points: the share of the pair's
     iterations in which each chosen end is a real wall end (plane_observations.csv joined on the
-    iteration and the observation's first end)."""
+    iteration and the observation's first end). Uses r.pairs, r.pair_sigma, r.observations."""
     cols = ["iteration", "plane1", "plane2", "a1_x", "a1_z", "a2_x", "a2_z"] + [
         f"off{a}{b}_{c}" for a in (1, 2) for b in (1, 2) for c in "xz"]
-    series = plane_table(run, "pairs.csv", cols)
-    sig = plane_table(run, "pair_sigma.csv", ["kp_a", "kp_b", "sigma", "mean_x", "mean_z", "chosen", "key_point1",
-                                              "key_point2", "samples", "interval_start", "interval_end"])
+    series = arrays(r.pairs, cols)
+    sig = arrays(r.pair_sigma, ["kp_a", "kp_b", "sigma", "mean_x", "mean_z", "chosen", "key_point1", "key_point2",
+                                "samples", "interval_start", "interval_end"])
     if len(series["iteration"]) == 0 or len(sig["sigma"]) != 4:
-        raise rp.DataError(f"{os.path.join(run, PLANE, 'pairs.csv')}: no pair in which one plane grows while the "
-                           f"other shrinks")
-    obs = rp.read_table(os.path.join(run, "plane_observations.csv"),
-                        ["iteration", "kp1_x", "kp1_z", "kp1_true_end", "kp2_true_end"])
+        raise rp.DataError(f"{source(r.pairs)}: no pair in which one plane grows while the other shrinks")
+    obs = arrays(r.observations, ["iteration", "kp1_x", "kp1_z", "kp1_true_end", "kp2_true_end"])
     ends = {(i, x, z): (e1, e2) for i, x, z, e1, e2 in
             zip(obs["iteration"], obs["kp1_x"], obs["kp1_z"], obs["kp1_true_end"], obs["kp2_true_end"])}
     chosen = int(np.nonzero(sig["chosen"] == 1)[0][0])
@@ -214,20 +192,20 @@ def key_point_pair(run):
 E07_AXES = ("variant", "planar.noise.model")
 
 
-def interval_mode_errors(sweep):
+def interval_mode_errors(cells):
     """{(mode, noise model): (iterations, mean map error per iteration over the seeds, mean over the run,
-    seeds)}."""
+    seeds)}; cells: [((mode, noise model), [iterations table per seed])] (the E07 sweep, E07_AXES)."""
     out = {}
-    for (mode, noise), folders in plane_sweep(sweep, E07_AXES):
-        it, err = seed_mean(folders, "mean_map_error")
-        out[(mode, noise)] = (it, err, float(np.nanmean(err)), len(folders))
+    for (mode, noise), frames in cells:
+        it, err = seed_mean(frames, "mean_map_error")
+        out[(mode, noise)] = (it, err, float(np.nanmean(err)), len(frames))
     return out
 
 
-def wrong_episodes(run):
+def wrong_episodes(keypoints):
     """Runs of consecutive iterations in which one (group, plane)'s key-point claim is wrong, from
     keypoints.csv: [(group, plane, first iteration, iterations)], longest first."""
-    k = plane_table(run, "keypoints.csv", ["iteration", "group", "plane", "truth_correct"])
+    k = arrays(keypoints, ["iteration", "group", "plane", "truth_correct"])
     episodes = []
     open_ = {}
     order = np.lexsort((k["iteration"], k["plane"], k["group"]))
@@ -245,9 +223,10 @@ def wrong_episodes(run):
     return sorted(episodes, key=lambda e: (-e[3], e[2]))
 
 
-def healing(run):
-    """Durations of the wrong key-point episodes: (count, median, share within HEAL_ITERATIONS, max)."""
-    d = np.array([e[3] for e in wrong_episodes(run)])
+def healing(keypoints):
+    """Durations of the wrong key-point episodes (keypoints.csv): (count, median, share within
+    HEAL_ITERATIONS, max)."""
+    d = np.array([e[3] for e in wrong_episodes(keypoints)])
     if len(d) == 0:
         return 0, float("nan"), float("nan"), 0
     return len(d), float(np.median(d)), float(np.mean(d <= HEAL_ITERATIONS)), int(d.max())
@@ -262,17 +241,13 @@ EVENT_SETTLED = 0.25  # ... and it has healed once it is back within this share 
 EVENT_FROM = 5  # the first iterations build the map from nothing: no events there
 
 
-def map_error_events(run):
+def map_error_events(iterations):
     """Iterations where a plane joins the map with a large error (thesis Figs 76-79: a plane just come
-    into view, compared over a tiny interval): [(iteration, jump, iterations until healed or None)]."""
-    return error_events(iterations(run, ["map_error", "planes_in_map"], PLANE))
-
-
-def error_events(d):
-    """map_error_events on a table (a DataFrame or {column: array}) of iteration, map_error and
-    planes_in_map: [(iteration, jump, iterations until healed or None, a plane joined the map)]."""
-    e, n = np.asarray(d["map_error"], dtype=float), np.asarray(d["planes_in_map"], dtype=float)
-    it = np.asarray(d["iteration"])
+    into view, compared over a tiny interval), from relative_plane/iterations.csv's iteration, map_error
+    and planes_in_map: [(iteration, jump, iterations until healed or None, a plane joined the map)]."""
+    d = arrays(iterations, ["iteration", "map_error", "planes_in_map"])
+    e, n = d["map_error"], d["planes_in_map"]
+    it = d["iteration"]
     events = []
     for k in range(max(1, EVENT_FROM), len(e)):
         jump = e[k] - e[k - 1]
@@ -283,26 +258,26 @@ def error_events(d):
     return events
 
 
-def event_healing(run):
+def event_healing(iterations):
     """(events, healed within HEAL_ITERATIONS, never healed, median iterations to heal)."""
-    ev = map_error_events(run)
+    ev = map_error_events(iterations)
     times = [h for _, _, h, _ in ev if h is not None]
     return (len(ev), sum(h <= HEAL_ITERATIONS for h in times), sum(h is None for _, _, h, _ in ev),
             float(np.median(times)) if times else float("nan"))
 
 
-def largest_healed_event(run):
+def largest_healed_event(iterations):
     """The largest event that healed within HEAL_ITERATIONS (else the largest), as its index in
-    iterations.csv."""
-    ev = sorted(map_error_events(run), key=lambda x: (x[2] is None or x[2] > HEAL_ITERATIONS, -x[1]))
-    d = iterations(run, ["map_error", "mean_map_error", "planes_in_map", "kp_wrong"], PLANE)
+    iterations.csv: (the table's columns, index, event or None)."""
+    ev = sorted(map_error_events(iterations), key=lambda x: (x[2] is None or x[2] > HEAL_ITERATIONS, -x[1]))
+    d = arrays(iterations, ["iteration", "map_error", "mean_map_error", "planes_in_map", "kp_wrong"])
     k = int(np.nonzero(d["iteration"] == ev[0][0])[0][0]) if ev else int(np.argmax(d["map_error"]))
     return d, k, (ev[0] if ev else None)
 
 
-def wall_table(run):
+def wall_table(planes):
     """planes.csv's mapped planes: {true_wall: [(len_ratio, e_ends), ...]} (a wall with two planes has two)."""
-    p = plane_table(run, "planes.csv", ["true_wall", "len_ratio", "e_ends"])
+    p = arrays(planes, ["true_wall", "len_ratio", "e_ends"])
     out = {}
     for w, r, e in zip(p["true_wall"], p["len_ratio"], p["e_ends"]):
         if np.isfinite(w):
@@ -310,40 +285,39 @@ def wall_table(run):
     return out
 
 
-def under_sized(run):
-    """Walls whose largest mapped plane is under UNDER_SIZED of their length: [(wall, len_ratio)]."""
-    return [(w, max(r for r, _ in v)) for w, v in sorted(wall_table(run).items())
+def under_sized(planes):
+    """Walls whose largest mapped plane (planes.csv) is under UNDER_SIZED of their length: [(wall, len_ratio)]."""
+    return [(w, max(r for r, _ in v)) for w, v in sorted(wall_table(planes).items())
             if max(r for r, _ in v) < UNDER_SIZED]
 
 
-def group_counts(sweep):
-    """{variant: groups at the end} of the E10 sweep."""
-    return {name: int(iterations(folders[0], ["groups"], PLANE)["groups"][-1]) for (name,), folders in
-            plane_sweep(sweep)}
+def group_counts(runs):
+    """{variant: groups at the end} of the E10 sweep; runs: [(variant, iterations table of its first seed)]."""
+    return {name: int(arrays(frame, ["groups"])["groups"][-1]) for name, frame in runs}
 
 
 REVISIT_AWAY, REVISIT_BACK = 5.0, 1.0  # units: the robot has been this far from its start, and is back this close
 
 
-def revisit_time(run):
+def revisit_time(r):
     """Summed step time (ms) over the revisit phase (thesis 4.3.5: "when the robot visits a previously
     viewed area"): from the first iteration at which the true robot is back within REVISIT_BACK of its
     start after having been REVISIT_AWAY from it, to the end. (total ms, first iteration), or None when
-    the run ends before the robot returns (a shortened run)."""
-    path = true_path(run)
+    the run ends before the robot returns (a shortened run). Uses r.truth_path and r.iterations."""
+    path = planar_track(r.truth_path)
     gone = np.hypot(path["x"] - path["x"][0], path["z"] - path["z"][0])
     away = np.nonzero(gone >= REVISIT_AWAY)[0]
     back = np.nonzero((gone <= REVISIT_BACK) & (np.arange(len(gone)) > (away[0] if len(away) else len(gone))))[0]
     if len(back) == 0:
         return None
     start = path["iteration"][back[0]]
-    d = iterations(run, ["runtime_ms"], PLANE)
+    d = arrays(r.iterations, ["iteration", "runtime_ms"])
     return float(np.sum(d["runtime_ms"][d["iteration"] >= start])), int(start)
 
 
-def size_mismatches(run):
+def size_mismatches(edges):
     """edges.csv: the edges whose lengths differ from the planes' canonical sizes (Rule 28's L_e vs L*)."""
-    e = plane_table(run, "edges.csv", ["valid", "length1", "length2", "canonical1", "canonical2"])
+    e = arrays(edges, ["valid", "length1", "length2", "canonical1", "canonical2"])
     gap = np.maximum(np.abs(e["length1"] - e["canonical1"]), np.abs(e["length2"] - e["canonical2"]))
     return int(np.sum((e["valid"] == 1) & (gap > 0.02))), len(gap), float(np.max(gap, initial=0.0))
 
@@ -351,29 +325,31 @@ def size_mismatches(run):
 OFF_LINE = 1e-6  # noise-free: a plane further than this from its wall's line is misplaced ('s bound)
 
 
-def misplaced(run):
-    """Mapped planes off their wall's line (e_perp above OFF_LINE): [(wall, e_perp)]; the measure of a
-    placement error that does not count walls never seen whole (e_ends does)."""
-    p = plane_table(run, "planes.csv", ["true_wall", "e_perp"])
+def misplaced(planes):
+    """Mapped planes (planes.csv) off their wall's line (e_perp above OFF_LINE): [(wall, e_perp)]; the
+    measure of a placement error that does not count walls never seen whole (e_ends does)."""
+    p = arrays(planes, ["true_wall", "e_perp"])
     return [(int(w), float(e)) for w, e in zip(p["true_wall"], p["e_perp"]) if np.isfinite(w) and e > OFF_LINE]
 
 
-def collinear_run(run):
+def collinear_run(r):
     """When the run's position error first passes 1e-6 (the pose exact until then; the map error also
-    counts walls not yet seen whole), and the tied (Rule 15) key-point claims and chain edges."""
-    d = iterations(run, ["map_error", "position_error", "pose_valid", "kp_wrong"], PLANE)
+    counts walls not yet seen whole), and the tied (Rule 15) key-point claims and chain edges. Uses
+    r.iterations, r.keypoints, r.edges."""
+    d = arrays(r.iterations, ["iteration", "map_error", "position_error", "pose_valid", "kp_wrong"])
     bad = np.nonzero(d["position_error"] > 1e-6)[0]
-    k = plane_table(run, "keypoints.csv", ["iteration", "ambiguous"])
-    e = plane_table(run, "edges.csv", ["ambiguous"])
+    k = arrays(r.keypoints, ["iteration", "ambiguous"])
+    e = arrays(r.edges, ["ambiguous"])
     return d, (int(d["iteration"][bad[0]]) if len(bad) else None), int(np.sum(k["ambiguous"] == 1)), \
         int(np.sum(e["ambiguous"] == 1))
 
 
-def runtime_by_size(sweep):
-    """{loops: (median ms, median ms of the first and last tenth, RltPlanes at the end, iterations)}."""
+def runtime_by_size(runs):
+    """{loops: (median ms, median ms of the first and last tenth, RltPlanes at the end, iterations)};
+    runs: [(loops, iterations table of its first seed)]."""
     out = {}
-    for (loops,), folders in plane_sweep(sweep, ("planar.loops",)):
-        d = iterations(folders[0], ["runtime_ms", "rlt_planes"], PLANE)
+    for loops, frame in runs:
+        d = arrays(frame, ["runtime_ms", "rlt_planes"])
         n = len(d["runtime_ms"])
         tenth = max(1, n // 10)
         out[int(float(loops))] = (float(np.median(d["runtime_ms"])), float(np.median(d["runtime_ms"][:tenth])),
@@ -381,28 +357,24 @@ def runtime_by_size(sweep):
     return dict(sorted(out.items()))
 
 
-def first_seed(sweep):
-    """The first run folder of a planar sweep (also of one without variants, over seeds only)."""
-    return plane_sweep(sweep, ("seed",))[0][1][0]
-
-
 def wrap_deg(angle):
     return (np.asarray(angle) + 180) % 360 - 180
 
 
-def wall_lengths(run):
-    w = rp.read_table(os.path.join(run, "ground_truth_walls.csv"), ["id", "length"])
+def wall_lengths(walls):
+    """{wall id: length} of ground_truth_walls.csv."""
+    w = arrays(walls, ["id", "length"])
     return {int(i): float(n) for i, n in zip(w["id"], w["length"])}
 
 
-def mm_episodes(run):
+def mm_episodes(r):
     """Each motion model of a run (consecutive iterations with mm_active on one mm_plane), as a dict: first
     and last iteration, plane, its true wall and the wall's length, and the tracked length
-    (mm_s_max − mm_s_min) at its first and last iteration."""
-    d = iterations(run, ["mm_active", "mm_plane", "mm_s_min", "mm_s_max"], PLANE)
-    p = plane_table(run, "planes.csv", ["id", "true_wall"])
+    (mm_s_max − mm_s_min) at its first and last iteration. Uses r.iterations, r.planes, r.walls."""
+    d = arrays(r.iterations, ["iteration", "mm_active", "mm_plane", "mm_s_min", "mm_s_max"])
+    p = arrays(r.planes, ["id", "true_wall"])
     wall_of = {int(i): int(w) for i, w in zip(p["id"], p["true_wall"]) if np.isfinite(w)}
-    lengths = wall_lengths(run)
+    lengths = wall_lengths(r.walls)
     active = np.nonzero(d["mm_active"] == 1)[0]
     starts = [k for k in active if k == 0 or d["mm_active"][k - 1] != 1 or d["mm_plane"][k - 1] != d["mm_plane"][k]]
     out = []
@@ -420,18 +392,17 @@ def mm_episodes(run):
     return out
 
 
-def no_motion_model(run):
-    return rp.DataError(f"{os.path.join(run, PLANE, 'iterations.csv')}: column mm_active: no motion model")
+def no_motion_model(iterations):
+    return rp.DataError(f"{source(iterations)}: column mm_active: no motion model")
 
 
-def observed_wall(run, wall):
-    """One wall's observations (plane_observations.csv, robot frame, the robot at the origin): {iteration,
-    length in view, range of its farther end, heading (true, degrees)}."""
-    o = rp.read_table(os.path.join(run, "plane_observations.csv"),
-                      ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+def observed_wall(r, wall):
+    """One wall's observations (r.observations, robot frame, the robot at the origin): {iteration,
+    length in view, range of its farther end, heading (true, degrees; r.truth_path)}."""
+    o = arrays(r.observations, OBSERVED)
     sel = o["true_wall"] == wall
     it = o["iteration"][sel]
-    path = true_path(run)
+    path = planar_track(r.truth_path)
     heading = dict(zip(path["iteration"], path["psi_deg"]))
     return {"iteration": it,
             "length": np.hypot(o["kp2_x"][sel] - o["kp1_x"][sel], o["kp2_z"][sel] - o["kp1_z"][sel]),
@@ -439,62 +410,64 @@ def observed_wall(run, wall):
             "psi_deg": np.array([heading.get(i, np.nan) for i in it])}
 
 
-def turn_iterations(run):
-    """The iterations of the run's first turn in place: the true heading changes, the position does not."""
-    path = true_path(run)
+def turn_iterations(truth_path):
+    """The iterations of the run's first turn in place (ground_truth_path.tum): the true heading changes,
+    the position does not."""
+    path = planar_track(truth_path)
     turning = np.abs(wrap_deg(np.diff(path["psi_deg"]))) > 1e-6
     first = np.nonzero(turning)[0]
     if len(first) == 0:
-        raise rp.DataError(f"{os.path.join(run, 'ground_truth_path.tum')}: the robot never turns")
+        raise rp.DataError(f"{source(truth_path)}: the robot never turns")
     last = first[0]
     while last + 1 < len(turning) and turning[last + 1]:
         last += 1
     return path["iteration"][first[0]:last + 2]
 
 
-def mapped_length(run, wall):
+def mapped_length(planes, wall):
     """The longest mapped plane of a wall (planes.csv), NaN when none is mapped."""
-    p = plane_table(run, "planes.csv", ["true_wall", "length"])
+    p = arrays(planes, ["true_wall", "length"])
     lengths = p["length"][(p["true_wall"] == wall) & np.isfinite(p["length"])]
     return float(lengths.max()) if len(lengths) else float("nan")
 
 
-def first_corner(run):
+def first_corner(r):
     """The first motion model of an E1 run against the truth: its episode, how far the robot was from the
     turn when it started (units of path), and the true heading when it ended."""
-    episodes = mm_episodes(run)
+    episodes = mm_episodes(r)
     if not episodes:
-        raise no_motion_model(run)
+        raise no_motion_model(r.iterations)
     e = episodes[0]
-    path = true_path(run)
-    turn = turn_iterations(run)
+    path = planar_track(r.truth_path)
+    turn = turn_iterations(r.truth_path)
     at = {int(i): k for k, i in enumerate(path["iteration"])}
     k0, k1 = at[e["first"]], at[int(turn[0])]
     before = float(np.sum(np.hypot(np.diff(path["x"][k0:k1 + 1]), np.diff(path["z"][k0:k1 + 1]))))
     return e, before, float(path["psi_deg"][at[e["last"]]] - path["psi_deg"][k1])
 
 
-def key_points_by_phase(run):
-    """(wrong, checked) key-point claims inside and outside the motion models: {"in": (...), "out": (...)}."""
-    d = iterations(run, ["kp_checked", "kp_wrong", "mm_active"], PLANE)
+def key_points_by_phase(iterations):
+    """(wrong, checked) key-point claims inside and outside the motion models: {"in": (...), "out": (...)},
+    from relative_plane/iterations.csv."""
+    d = arrays(iterations, ["kp_checked", "kp_wrong", "mm_active"])
     mm = d["mm_active"] == 1
     return {"in": (int(np.sum(d["kp_wrong"][mm])), int(np.sum(d["kp_checked"][mm]))),
             "out": (int(np.sum(d["kp_wrong"][~mm])), int(np.sum(d["kp_checked"][~mm])))}
 
 
-def grown_lengths(sweep):
+def grown_lengths(variants):
     """{variant: (tracked length / true length at each motion model's end, the grown planes' mapped
-    len_ratio, seeds)} over every seed of a planar sweep."""
+    len_ratio, seeds)} over every seed of a planar sweep; variants: [(variant, [r per seed])]."""
     out = {}
-    for (name,), folders in plane_sweep(sweep):
+    for name, seeds in variants:
         tracked, mapped = [], []
-        for folder in folders:
-            p = plane_table(folder, "planes.csv", ["id", "len_ratio"])
-            ratio = {int(i): r for i, r in zip(p["id"], p["len_ratio"])}
-            for e in mm_episodes(folder):
+        for r in seeds:
+            p = arrays(r.planes, ["id", "len_ratio"])
+            ratio = {int(i): x for i, x in zip(p["id"], p["len_ratio"])}
+            for e in mm_episodes(r):
                 tracked.append(e["length"] / e["true_length"])
                 mapped.append(ratio.get(e["plane"], float("nan")))
-        out[name] = (np.array(tracked), np.array(mapped), len(folders))
+        out[name] = (np.array(tracked), np.array(mapped), len(seeds))
     return out
 
 
@@ -509,45 +482,46 @@ def grown_text(name, values):
             f"0.1 %; grown planes' mapped len_ratio median {np.nanmedian(mapped):.4f}, max {np.nanmax(mapped):.4f}")
 
 
-def run_frustum(run):
+def run_frustum(manifest, where="manifest.json"):
     """(frustum preset, shape) of a planar run from its manifest's scenario."""
-    path = os.path.join(run, "manifest.json")
     try:
-        planar = read_json(path)["scenario"]["planar"]
+        planar = manifest["scenario"]["planar"]
         return planar["frustum"], planar["frustum_shape"]
     except (KeyError, TypeError):
-        raise rp.DataError(f"{path}: no scenario.planar.frustum / frustum_shape") from None
+        raise rp.DataError(f"{where}: no scenario.planar.frustum / frustum_shape") from None
 
 
-def end_wall_turn(run):
+def end_wall_turn(r):
     """The wall seen in most iterations of the first turn (the corner's end wall), its observations in
     the turn, and its mapped length."""
-    turn = turn_iterations(run)
-    o = rp.read_table(os.path.join(run, "plane_observations.csv"), ["iteration", "true_wall"])
+    turn = turn_iterations(r.truth_path)
+    o = arrays(r.observations, ["iteration", "true_wall"])
     walls, counts = np.unique(o["true_wall"][np.isin(o["iteration"], turn)], return_counts=True)
     if len(walls) == 0:
-        raise rp.DataError(f"{os.path.join(run, 'plane_observations.csv')}: no wall seen in the turn")
+        raise rp.DataError(f"{source(r.observations)}: no wall seen in the turn")
     wall = int(walls[np.argmax(counts)])
-    seen = observed_wall(run, wall)
+    seen = observed_wall(r, wall)
     sel = np.isin(seen["iteration"], turn)
-    return wall, {k: v[sel] for k, v in seen.items()}, mapped_length(run, wall)
+    return wall, {k: v[sel] for k, v in seen.items()}, mapped_length(r.planes, wall)
 
 
-def frustum_turns(sweep):
-    """{variant: (frustum, shape, wall, observations in the turn, mapped length, true length)}."""
+def frustum_turns(variants):
+    """{variant: (frustum, shape, wall, observations in the turn, mapped length, true length)};
+    variants: [(variant, r of its first seed)]."""
     out = {}
-    for (name,), folders in plane_sweep(sweep):
-        wall, seen, mapped = end_wall_turn(folders[0])
-        out[name] = (*run_frustum(folders[0]), wall, seen, mapped, wall_lengths(folders[0])[wall])
+    for name, r in variants:
+        wall, seen, mapped = end_wall_turn(r)
+        out[name] = (*run_frustum(r.manifest, manifest_path(r)), wall, seen, mapped, wall_lengths(r.walls)[wall])
     return out
 
 
-def motion_model_exits(run):
-    """(motion models, how many ended in a group created before they started, groups at the end)."""
-    d = iterations(run, ["current_group"], PLANE)
-    g = plane_table(run, "groups.csv", ["group_id", "created_iter"])
+def motion_model_exits(r):
+    """(motion models, how many ended in a group created before they started, groups at the end). Uses
+    r.iterations, r.groups and what mm_episodes does."""
+    d = arrays(r.iterations, ["iteration", "current_group"])
+    g = arrays(r.groups, ["group_id", "created_iter"])
     created = dict(zip(g["group_id"].astype(int), g["created_iter"]))
-    episodes = mm_episodes(run)
+    episodes = mm_episodes(r)
     back = 0
     for e in episodes:
         after = np.nonzero((d["iteration"] > e["last"]) & np.isfinite(d["current_group"]))[0]
@@ -555,25 +529,24 @@ def motion_model_exits(run):
     return len(episodes), back, len(g["group_id"])
 
 
-def one_plane_iteration(run):
+def one_plane_iteration(r):
     """The middle iteration of the first stretch of the last loop in which the motion model is active
-    and a single plane is in view."""
-    loops, n = run_loops(run)
-    d = iterations(run, ["mm_active", "visible_planes"], PLANE)
+    and a single plane is in view. Uses r.manifest and r.iterations."""
+    loops, n = run_loops(r.manifest, manifest_path(r))
+    d = arrays(r.iterations, ["iteration", "mm_active", "visible_planes"])
     sel = np.nonzero((d["iteration"] >= n * (loops - 1) / max(loops, 1)) & (d["mm_active"] == 1)
                      & (d["visible_planes"] == 1))[0]
     if len(sel) == 0:
-        raise rp.DataError(f"{os.path.join(run, PLANE, 'iterations.csv')}: no motion model with one plane in view "
-                           f"on the last loop")
+        raise rp.DataError(f"{source(r.iterations)}: no motion model with one plane in view on the last loop")
     stretch = sel[:np.argmax(np.diff(np.append(sel, sel[-1] + 2)) > 1) + 1]
     return int(d["iteration"][stretch[len(stretch) // 2]]), int(d["iteration"][stretch[0]]), \
         int(d["iteration"][stretch[-1]])
 
 
-def first_seen_far(run):
-    """The wall first seen from farthest away: (wall, iteration, distance of its nearer observed end)."""
-    o = rp.read_table(os.path.join(run, "plane_observations.csv"),
-                      ["iteration", "true_wall", "kp1_x", "kp1_z", "kp2_x", "kp2_z"])
+def first_seen_far(observations):
+    """The wall first seen from farthest away (plane_observations.csv): (wall, iteration, distance of its
+    nearer observed end)."""
+    o = arrays(observations, OBSERVED)
     best = None
     for wall in sorted(set(o["true_wall"]) - {-1}):
         k = int(np.nonzero(o["true_wall"] == wall)[0][0])
@@ -581,5 +554,5 @@ def first_seen_far(run):
         if best is None or near > best[2]:
             best = (int(wall), int(o["iteration"][k]), float(near))
     if best is None:
-        raise rp.DataError(f"{os.path.join(run, 'plane_observations.csv')}: no wall seen")
+        raise rp.DataError(f"{source(observations)}: no wall seen")
     return best
