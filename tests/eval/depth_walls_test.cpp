@@ -62,9 +62,9 @@ TEST(DepthWalls, KinectNoiseWallsLieOnTheirTrueWallsAndRelativePlaneMapsThem) {
   EXPECT_GT(walls, frames);  // a wall or more per image
   EXPECT_EQ(unknown, 0);
   // Measured: every end within 0.47 of its wall's line (at the Kinect's noise a far piece's ends
-  // lie up to 8 units out, where the depth σ is 9 cm), 6 of 90 frames with a pose: the camera's
-  // 62° view rarely holds the two non-parallel walls that agree with the map which a valid pose
-  // needs (docs/algorithms/range-sensors.md).
+  // lie up to 8 units out, where the depth σ is 9 cm), 6 of 90 frames with a pose: Relative
+  // Plane rarely gets a pose from the camera's walls, not yet explained
+  // (docs/algorithms/range-sensors.md).
   EXPECT_LT(worst, 0.6);
   EXPECT_GE(valid, 4);
 }
