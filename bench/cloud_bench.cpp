@@ -4,12 +4,19 @@
 // precision and the largest normal error against the truth. Frames: a 640 × 480 room (walls,
 // floor, ceiling, a pillar) rendered noise-free and at a Kinect-like noise (σ = 0.0012 z², 5 %
 // missing returns), the real Kinect frame and Velodyne VLP-16 scan of Debian's mrpt-common
-// (skipped where absent). Nothing is asserted: the numbers are read.
+// (skipped where absent); and frames of the simulated depth camera (sim/depth_camera.hpp) over
+// planar worlds with floor and ceiling, noise-free and at the Kinect's noise: a room with a
+// pillar from six poses, and Map E (e_motion_room) every 60th pose of its path, scored over all
+// frames of a set (recall over the surfaces with at least 0.5 square units in view). Nothing is
+// asserted: the numbers are read.
 //
 //   relslam_bench_clouds [--repeat N] [--no-segment-plane]
 #include "relslam/eval/sources/cloud_planes.hpp"
 
 #include "depth_scenes.hpp"
+#include "relslam/eval/io/planar_map_file.hpp"
+#include "relslam/sim/planar_path.hpp"
+#include "sim_depth_views.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -78,6 +85,55 @@ void run(const Case& c, eval::CloudExtractor e, int repeat) {
   std::printf("\n");
 }
 
+// A set of simulated depth frames through one extractor: the median ms per frame, the planes,
+// and recall / precision / largest normal error over all frames.
+void run_views(const std::string& name, const sim::PlanarWorld& world, const std::vector<PlanarPose>& poses,
+               const sim::DepthCameraOptions& camera, eval::CloudExtractor e) {
+  std::vector<double> ms;
+  em::test::DepthScore total;
+  long long points = 0, summary = 0;
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    const em::test::SimDepthView view = em::test::sim_depth_view(world, camera, poses[k], 1, static_cast<int>(k));
+    eval::PointCloudFrame frame;
+    frame.points = view.points;
+    frame.width = view.width, frame.height = view.height;
+    const eval::CloudPlanes found = eval::extract_cloud_planes(e, frame, eval::CloudPlaneOptions{}, 1);
+    ms.push_back(found.ms);
+    points += static_cast<long long>(frame.returns()), summary += found.summary_points;
+    const em::test::DepthScore s = em::test::score_view(view, found.result.planes, 0.5);
+    total.true_planes += s.true_planes, total.found += s.found, total.planes += s.planes;
+    total.correct += s.correct, total.duplicates += s.duplicates;
+    total.max_normal_error_deg = std::max(total.max_normal_error_deg, s.max_normal_error_deg);
+  }
+  std::sort(ms.begin(), ms.end());
+  const auto n = static_cast<long long>(poses.size());
+  std::printf("%-22s %-14s %8lld %8lld %9.1f %7.1f %7.3f %9.3f %11.4f %5d   (%d surfaces in %lld frames)\n",
+              name.c_str(), std::string(eval::to_string(e)).c_str(), points / n, summary / n, ms[ms.size() / 2],
+              static_cast<double>(total.planes) / static_cast<double>(n), total.recall(), total.precision(),
+              total.max_normal_error_deg, total.duplicates, total.true_planes, n);
+}
+
+struct ViewSet {
+  std::string name;
+  sim::PlanarWorld world;
+  std::vector<PlanarPose> poses;
+  sim::DepthCameraOptions camera;
+};
+
+std::vector<ViewSet> view_sets() {
+  sim::DepthCameraOptions exact, kinect;  // kinect: the camera's defaults
+  exact.noise_per_depth2 = 0.0, exact.missing = 0.0;
+  std::vector<ViewSet> sets = {{"sim pillar room exact", em::test::pillar_room(), em::test::pillar_room_poses(), exact},
+                               {"sim pillar room kinect", em::test::pillar_room(), em::test::pillar_room_poses(), kinect}};
+  const sim::PlanarMap map = eval::read_planar_map(RELSLAM_SOURCE_DIR "/scenarios/maps/e_motion_room.json");
+  const sim::PlanarPath path(map.path);
+  std::vector<PlanarPose> poses;
+  for (int k = 0; k < path.iterations(); k += 60) poses.push_back(path.world_T_robot(k));
+  sets.push_back({"sim map E exact", map.world, poses, exact});
+  sets.push_back({"sim map E kinect", map.world, poses, kinect});
+  return sets;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -96,10 +152,14 @@ int main(int argc, char** argv) {
     cases.push_back(*c);
   std::printf("%-22s %-14s %8s %8s %9s %7s %7s %9s %11s %5s\n", "frame", "extractor", "points", "summary", "ms",
               "planes", "recall", "precision", "normal_deg", "dups");
+  auto wanted = [&](eval::CloudExtractor e) {
+    return eval::cloud_extractor_available(e) && (e != eval::CloudExtractor::SegmentPlane || segment_plane);
+  };
   for (const Case& c : cases)
-    for (eval::CloudExtractor e : eval::kCloudExtractors) {
-      if (!eval::cloud_extractor_available(e) || (e == eval::CloudExtractor::SegmentPlane && !segment_plane)) continue;
-      run(c, e, repeat);
-    }
+    for (eval::CloudExtractor e : eval::kCloudExtractors)
+      if (wanted(e)) run(c, e, repeat);
+  for (const ViewSet& v : view_sets())
+    for (eval::CloudExtractor e : eval::kCloudExtractors)
+      if (wanted(e) && (e != eval::CloudExtractor::SegmentPlane || v.poses.size() <= 6)) run_views(v.name, v.world, v.poses, v.camera, e);
   return 0;
 }

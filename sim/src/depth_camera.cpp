@@ -74,4 +74,16 @@ DepthFrame DepthCamera::frame(const PlanarWorld& world, const PlanarPose& world_
   return out;
 }
 
+std::vector<Eigen::Vector3d> depth_points(const DepthFrame& frame, const DepthCameraOptions& o) {
+  std::vector<Eigen::Vector3d> points(frame.depth.size(), Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+  for (int v = 0; v < frame.height; ++v)
+    for (int u = 0; u < frame.width; ++u) {
+      const double z = frame.at(u, v);
+      if (z <= 0.0) continue;
+      // Image x runs to the robot's right (−z), image y down (−y).
+      points[static_cast<std::size_t>(v) * frame.width + u] = {z, -(v - o.cy) / o.fy * z, -(u - o.cx) / o.fx * z};
+    }
+  return points;
+}
+
 }  // namespace relslam::sim

@@ -65,27 +65,21 @@ DepthFrame render(const DepthScene& s, double noise_k, double missing, std::uint
   return f;
 }
 
-DepthScore score(const DepthScene& scene, const DepthFrame& frame, const std::vector<std::vector<int>>& supports,
-                 const std::vector<Eigen::Vector3d>& normals, int min_pixels) {
+DepthScore score_surfaces(const std::vector<int>& truth, const std::vector<Eigen::Vector3d>& true_normals,
+                          const std::vector<bool>& required, const std::vector<std::vector<int>>& supports,
+                          const std::vector<Eigen::Vector3d>& normals) {
   DepthScore out;
-  std::vector<int> pixels(scene.planes.size(), 0);
-  for (int id : frame.plane_of)
-    if (id >= 0) ++pixels[static_cast<std::size_t>(id)];
-  std::vector<bool> required(scene.planes.size());
-  for (std::size_t k = 0; k < scene.planes.size(); ++k) {
-    required[k] = pixels[k] >= min_pixels;
-    out.true_planes += required[k];
-  }
+  for (bool r : required) out.true_planes += r;
   // Largest extracted planes first claim their true plane.
   std::vector<std::size_t> order(supports.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return supports[a].size() > supports[b].size(); });
-  std::vector<bool> matched(scene.planes.size(), false);
+  std::vector<bool> matched(true_normals.size(), false);
   out.planes = static_cast<int>(supports.size());
   for (std::size_t k : order) {
     std::map<int, int> votes;
-    for (int i : supports[k]) ++votes[frame.plane_of[static_cast<std::size_t>(i)]];
+    for (int i : supports[k]) ++votes[truth[static_cast<std::size_t>(i)]];
     const auto top = std::max_element(votes.begin(), votes.end(),
                                       [](const auto& a, const auto& b) { return a.second < b.second; });
     if (top == votes.end() || top->first < 0 || 2 * top->second < static_cast<int>(supports[k].size())) continue;
@@ -98,10 +92,24 @@ DepthScore score(const DepthScene& scene, const DepthFrame& frame, const std::ve
     matched[id] = true;
     if (!required[id]) continue;
     ++out.found;
-    const double cosine = std::min(1.0, std::abs(normals[k].dot(scene.planes[id].normal)));
+    const double cosine = std::min(1.0, std::abs(normals[k].dot(true_normals[id])));
     out.max_normal_error_deg = std::max(out.max_normal_error_deg, std::acos(cosine) * 180.0 / std::numbers::pi);
   }
   return out;
+}
+
+DepthScore score(const DepthScene& scene, const DepthFrame& frame, const std::vector<std::vector<int>>& supports,
+                 const std::vector<Eigen::Vector3d>& normals, int min_pixels) {
+  std::vector<int> pixels(scene.planes.size(), 0);
+  for (int id : frame.plane_of)
+    if (id >= 0) ++pixels[static_cast<std::size_t>(id)];
+  std::vector<bool> required(scene.planes.size());
+  std::vector<Eigen::Vector3d> true_normals;
+  for (std::size_t k = 0; k < scene.planes.size(); ++k) {
+    required[k] = pixels[k] >= min_pixels;
+    true_normals.push_back(scene.planes[k].normal);
+  }
+  return score_surfaces(frame.plane_of, true_normals, required, supports, normals);
 }
 
 }  // namespace relslam::em::test

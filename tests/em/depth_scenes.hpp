@@ -52,4 +52,10 @@ struct DepthScore {
 DepthScore score(const DepthScene& scene, const DepthFrame& frame, const std::vector<std::vector<int>>& supports,
                  const std::vector<Eigen::Vector3d>& normals, int min_pixels);
 
+// The same on any frame with per-pixel truth: truth[i] is pixel i's surface (an index into
+// `true_normals`, -1 for none), `required` says which surfaces recall counts.
+DepthScore score_surfaces(const std::vector<int>& truth, const std::vector<Eigen::Vector3d>& true_normals,
+                          const std::vector<bool>& required, const std::vector<std::vector<int>>& supports,
+                          const std::vector<Eigen::Vector3d>& normals);
+
 }  // namespace relslam::em::test

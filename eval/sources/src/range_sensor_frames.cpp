@@ -1,6 +1,9 @@
 #include "range_sensor_frames.hpp"
 
+#include "relslam/em/dense_extraction.hpp"
+#include "relslam/em/em_random.hpp"
 #include "relslam/em/plane_conversion.hpp"
+#include "relslam/eval/sources/cloud_planes.hpp"
 #include "relslam/eval/io/rawlog.hpp"
 #include "relslam/scan/wall_extraction.hpp"
 #include "relslam/sim/odometry_noise.hpp"
@@ -25,12 +28,21 @@ RangeSensorFrames::RangeSensorFrames(const LoadedScenario& loaded, const sim::Pl
       options_(loaded.scenario.planar),
       seed_(loaded.scenario.seed),
       walls_(loaded.scenario.laser.walls),
-      extract_(options_.sensor == PlanarSensorKind::Laser && options_.laser_planes == LaserPlanes::Extracted) {
+      extract_(options_.sensor == PlanarSensorKind::Laser ? options_.laser_planes == LaserPlanes::Extracted
+                                                           : options_.depth_planes == LaserPlanes::Extracted) {
   if (options_.sensor == PlanarSensorKind::Laser) laser_.emplace(options_.laser);
   else depth_.emplace(options_.depth);
 }
 
 namespace {
+
+// Evaluation only: the true wall ends in the robot frame, as em::extracted_plane_truth takes them.
+std::vector<em::TrueWallEnds> true_ends(const sim::PlanarWorld& world, const PlanarPose& world_T_robot) {
+  std::vector<em::TrueWallEnds> ends;
+  for (const sim::Wall& w : world.walls)
+    ends.push_back({w.id, world_T_robot.inverse_apply(w.a), world_T_robot.inverse_apply(w.b)});
+  return ends;
+}
 
 // Evaluation only: an extracted wall's truth is the wall most of its rays hit, and an end is the
 // wall's real end when one of that wall's true ends lies within `end_tolerance` of it, as for
@@ -41,30 +53,63 @@ std::vector<PlaneTruth> wall_truth(const std::vector<scan::ExtractedWall>& walls
   std::vector<int> ray_wall_ids(shot.wall.size(), -1);
   for (std::size_t i = 0; i < shot.wall.size(); ++i)
     if (shot.wall[i] >= 0) ray_wall_ids[i] = world.walls[static_cast<std::size_t>(shot.wall[i])].id;
-  std::vector<em::TrueWallEnds> ends;
-  for (const sim::Wall& w : world.walls)
-    ends.push_back({w.id, world_T_robot.inverse_apply(w.a), world_T_robot.inverse_apply(w.b)});
+  const std::vector<em::TrueWallEnds> ends = true_ends(world, world_T_robot);
   std::vector<PlaneTruth> out;
   for (const scan::ExtractedWall& w : walls)
     out.push_back(em::extracted_plane_truth(w.plane, w.rays, ray_wall_ids, ends, end_tolerance));
   return out;
 }
 
+// The depth camera's EM [C]: the extract command's defaults for metric depth frames (d_in 5 cm,
+// 3σ of a Kinect at 3.5 m; a 4,800-point summary of the image).
+const CloudPlaneOptions kDepthExtraction{};
+// A real end is known to within two summary pixels at 2.5 units (stride 8 at 525 px) [C].
+constexpr double kDepthEndTolerance = 0.1;
+
 }  // namespace
+
+// The depth camera's walls in place of the plane sensor's planes. The image's points are in the
+// planar robot frame with the camera at the origin (y from the camera), so the walls' heights are
+// moved up by the camera's height to stand on the floor like the plane sensor's.
+void RangeSensorFrames::extract(int k, const sim::DepthFrame& image, sim::PlaneSimFrame& frame) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Eigen::Vector3d> points = sim::depth_points(image, options_.depth);
+  const em::DenseCloud cloud{points, image.width, image.height};
+  const em::DenseResult found = em::extract_dense(cloud, em::EmVariant::Em2, kDepthExtraction.em,
+                                                 kDepthExtraction.dense, em::em_frame_seed(seed_, k));
+  em::ExtractedPlanes walls = em::to_plane_objects(found.result, kDepthExtraction.em, k);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  for (PlaneObject& p : walls.frame.planes) {
+    p.y_lo += options_.depth.camera_height;
+    p.y_hi += options_.depth.camera_height;
+  }
+  frame.observation.planes = std::move(walls.frame.planes);
+  const std::vector<em::TrueWallEnds> ends = true_ends(world_, frame.truth.world_T_robot);
+  frame.truth.planes.clear();
+  for (std::size_t i = 0; i < frame.observation.planes.size(); ++i)
+    frame.truth.planes.push_back(em::extracted_plane_truth(frame.observation.planes[i], walls.support[i], image.truth,
+                                                           ends, kDepthEndTolerance));
+  count(ms, static_cast<int>(frame.observation.planes.size()));
+}
+
+void RangeSensorFrames::count(double ms, int walls) {
+  last_ms_ = ms;
+  last_walls_ = walls;
+  ms_total_ += ms;
+  walls_total_ += walls;
+  ++frames_;
+}
 
 // The laser's walls in place of the plane sensor's planes.
 void RangeSensorFrames::extract(int k, const sim::LaserSimFrame& shot, sim::PlaneSimFrame& frame) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<scan::ExtractedWall> walls = scan::extract_walls(shot.scan, walls_, k);
-  last_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   frame.observation.planes.clear();
   for (const scan::ExtractedWall& w : walls) frame.observation.planes.push_back(w.plane);
   // A real end is known to within the extractor's corner distance [C].
   frame.truth.planes = wall_truth(walls, shot, world_, frame.truth.world_T_robot, walls_.corner_distance);
-  last_walls_ = static_cast<int>(walls.size());
-  ms_total_ += last_ms_;
-  walls_total_ += last_walls_;
-  ++frames_;
+  count(ms, static_cast<int>(walls.size()));
 }
 
 std::vector<CsvField> RangeSensorFrames::measured() const {
@@ -91,8 +136,12 @@ void RangeSensorFrames::add(int k, const std::optional<PlanarPose>& previous, si
   }
   // Depth: the odometry of the frames between two recorded ones adds up into the next record's.
   if (frame.odometry) unrecorded_odometry_ = unrecorded_odometry_ ? *unrecorded_odometry_ * *frame.odometry : *frame.odometry;
-  if (!rawlog_ || k % options_.depth_record_every != 0) return;
-  rawlog_->write(depth_->frame(world_, world_T_robot, seed_, k), options_.depth, unrecorded_odometry_, stamp);
+  const bool record = rawlog_ && k % options_.depth_record_every == 0;
+  if (!extract_ && !record) return;
+  const sim::DepthFrame image = depth_->frame(world_, world_T_robot, seed_, k);
+  if (extract_) extract(k, image, sim_frame);
+  if (!record) return;
+  rawlog_->write(image, options_.depth, unrecorded_odometry_, stamp);
   unrecorded_odometry_.reset();
   ++recorded_;
 }
@@ -105,9 +154,10 @@ nlohmann::json RangeSensorFrames::describe() const {
   nlohmann::json j = {{"sensor", std::string(to_string(options_.sensor))}, {"rawlog_records", recorded_}};
   if (laser_) j["rays"] = options_.laser.rays;
   if (laser_) j["laser_planes"] = std::string(to_string(options_.laser_planes));
+  if (depth_) j["depth_planes"] = std::string(to_string(options_.depth_planes));
   if (extract_) {
     const double n = frames_ > 0 ? static_cast<double>(frames_) : 1.0;
-    j["walls_per_scan"] = static_cast<double>(walls_total_) / n;
+    j[laser_ ? "walls_per_scan" : "walls_per_image"] = static_cast<double>(walls_total_) / n;
     j["extract_ms_mean"] = ms_total_ / n;
   }
   if (depth_) j["image"] = std::to_string(options_.depth.width) + "x" + std::to_string(options_.depth.height);

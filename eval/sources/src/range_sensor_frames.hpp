@@ -3,8 +3,11 @@
 // or "depth"). Each frame of the plane sensor gets the robot's noisy odometry and, with the
 // laser, the scan taken at the same pose (PlaneFrame::scan, which scan-matching baselines read)
 // and, unless planar.laser_planes is "sensor", the walls extracted from that scan in place of
-// the plane sensor's planes, with their truth (the wall most of its rays hit); recorded, the frames go to an MRPT rawlog (laser.rawlog, depth.rawlog) as MRPT's tools read
-// it.
+// the plane sensor's planes, with their truth (the wall most of its rays hit); with the depth
+// camera, unless planar.depth_planes is "sensor", the walls EM2 finds in its image at sensor
+// density (thesis 3.5, then 4.5's conversion), with their truth (the wall most of their pixels
+// see). Recorded, the frames go to an MRPT rawlog (laser.rawlog, depth.rawlog) as MRPT's tools
+// read it.
 
 #include "relslam/core/plane_object.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
@@ -45,6 +48,8 @@ class RangeSensorFrames {
  private:
   RangeSensorFrames(const LoadedScenario& loaded, const sim::PlanarWorld& world);
   void extract(int k, const sim::LaserSimFrame& shot, sim::PlaneSimFrame& frame);
+  void extract(int k, const sim::DepthFrame& image, sim::PlaneSimFrame& frame);
+  void count(double ms, int walls);
   const sim::PlanarWorld& world_;
   const PlanarOptions& options_;
   std::uint64_t seed_;

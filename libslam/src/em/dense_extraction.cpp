@@ -28,59 +28,85 @@ std::vector<Owners> owners_of(const EmResult& summary_result, std::size_t count)
   return owners;
 }
 
-// The nearest accepting plane among `candidates` (-1 for none).
+// A plane's membership test (EmPlane::accepts) with its widened box worked out once: the
+// assignment asks it for every pixel.
+struct Membership {
+  Eigen::Vector3d lo, hi, normal;
+  double offset;
+};
+
+std::vector<Membership> memberships(const std::vector<EmPlane>& planes, const EmOptions& o) {
+  std::vector<Membership> out;
+  const Eigen::Vector3d margin = Eigen::Vector3d::Constant(o.bound_expansion);
+  for (const EmPlane& plane : planes)
+    out.push_back({plane.box.min() - margin, plane.box.max() + margin, plane.normal, plane.offset});
+  return out;
+}
+
+// The nearest accepting plane among `candidates` (-1 for none): EmPlane::accepts, then the
+// nearest, as absorb_unassigned decides.
 template <typename Candidates>
-int nearest_plane(const std::vector<EmPlane>& planes, const Eigen::Vector3d& p, const Candidates& candidates,
-                  const EmOptions& o) {
+int nearest_plane(const std::vector<Membership>& planes, const Eigen::Vector3d& p, const Candidates& candidates,
+                  double inlier_distance) {
   int best = -1;
   double nearest = std::numeric_limits<double>::infinity();
   for (int k : candidates) {
     if (k < 0) continue;
-    const EmPlane& plane = planes[static_cast<std::size_t>(k)];
-    if (!plane.accepts(p, o.inlier_distance, o.bound_expansion)) continue;
-    const double d = std::abs(plane.distance(p));
-    if (d < nearest) nearest = d, best = k;
+    const Membership& m = planes[static_cast<std::size_t>(k)];
+    if ((p.array() < m.lo.array()).any() || (p.array() > m.hi.array()).any()) continue;
+    const double d = std::abs(m.normal.dot(p) + m.offset);
+    if (d <= inlier_distance && d < nearest) nearest = d, best = k;
   }
   return best;
 }
 
-// Organised: the planes of the (up to) four summary pixels around each pixel.
+// The distinct planes of the (up to) four summary pixels around grid cell (r0, c0) into
+// `candidates` (-1 after the last).
+void candidates_around(const CloudSummary& s, const std::vector<Owners>& owners, int r0, int c0,
+                       std::array<int, 8>& candidates) {
+  const int r1 = std::min(r0 + 1, s.rows - 1), c1 = std::min(c0 + 1, s.columns - 1);
+  const int cells[4] = {r0 * s.columns + c0, r0 * s.columns + c1, r1 * s.columns + c0, r1 * s.columns + c1};
+  int count = 0;
+  for (int cell : cells) {
+    const int k = s.grid[static_cast<std::size_t>(cell)];
+    if (k < 0) continue;
+    for (int plane : owners[static_cast<std::size_t>(k)])
+      if (plane >= 0 && std::find(candidates.begin(), candidates.begin() + count, plane) == candidates.begin() + count)
+        candidates[static_cast<std::size_t>(count++)] = plane;
+  }
+  std::fill(candidates.begin() + count, candidates.end(), -1);
+}
+
+// Organised: the planes of the (up to) four summary pixels around each pixel, found once per
+// run of `stride` pixels that share them.
 void assign_image(const DenseCloud& cloud, const CloudSummary& s, const std::vector<Owners>& owners,
                   const std::vector<EmPlane>& planes, const EmOptions& o, std::vector<std::vector<int>>& members) {
+  const std::vector<Membership> tests = memberships(planes, o);
   std::array<int, 8> candidates{};
-  for (int y = 0; y < cloud.height; ++y) {
-    const int r0 = y / s.stride, r1 = std::min(r0 + 1, s.rows - 1);
-    for (int x = 0; x < cloud.width; ++x) {
-      const int index = y * cloud.width + x;
-      const Eigen::Vector3d& p = cloud.points[static_cast<std::size_t>(index)];
-      if (!p.allFinite()) continue;
-      const int c0 = x / s.stride, c1 = std::min(c0 + 1, s.columns - 1);
-      const int cells[4] = {r0 * s.columns + c0, r0 * s.columns + c1, r1 * s.columns + c0, r1 * s.columns + c1};
-      int count = 0;  // the distinct planes around the pixel
-      for (int cell : cells) {
-        const int k = s.grid[static_cast<std::size_t>(cell)];
-        if (k < 0) continue;
-        for (int plane : owners[static_cast<std::size_t>(k)])
-          if (plane >= 0 && std::find(candidates.begin(), candidates.begin() + count, plane) == candidates.begin() + count)
-            candidates[static_cast<std::size_t>(count++)] = plane;
+  for (int y = 0; y < cloud.height; ++y)
+    for (int c0 = 0; c0 * s.stride < cloud.width; ++c0) {
+      candidates_around(s, owners, y / s.stride, c0, candidates);
+      if (candidates[0] < 0) continue;
+      const int end = std::min(cloud.width, (c0 + 1) * s.stride);
+      for (int index = y * cloud.width + c0 * s.stride; index < y * cloud.width + end; ++index) {
+        const Eigen::Vector3d& p = cloud.points[static_cast<std::size_t>(index)];
+        if (!p.allFinite()) continue;
+        const int best = nearest_plane(tests, p, candidates, o.inlier_distance);
+        if (best >= 0) members[static_cast<std::size_t>(best)].push_back(index);
       }
-      if (count == 0) continue;
-      std::fill(candidates.begin() + count, candidates.end(), -1);
-      const int best = nearest_plane(planes, p, candidates, o);
-      if (best >= 0) members[static_cast<std::size_t>(best)].push_back(index);
     }
-  }
 }
 
 // Unorganised: every plane asked (its widened box rejects most points at once).
 void assign_all(const DenseCloud& cloud, const std::vector<EmPlane>& planes, const EmOptions& o,
                 std::vector<std::vector<int>>& members) {
+  const std::vector<Membership> tests = memberships(planes, o);
   std::vector<int> all(planes.size());
   for (std::size_t k = 0; k < planes.size(); ++k) all[k] = static_cast<int>(k);
   for (std::size_t i = 0; i < cloud.points.size(); ++i) {
     const Eigen::Vector3d& p = cloud.points[i];
     if (!p.allFinite()) continue;
-    const int best = nearest_plane(planes, p, all, o);
+    const int best = nearest_plane(tests, p, all, o.inlier_distance);
     if (best >= 0) members[static_cast<std::size_t>(best)].push_back(static_cast<int>(i));
   }
 }

@@ -20,8 +20,7 @@ void update_box(EmPlane& plane, std::span<const Eigen::Vector3d> points) {
 }
 
 bool refit(EmPlane& plane, std::span<const Eigen::Vector3d> points) {
-  update_box(plane, points);
-  const std::optional<PlaneFit> fit = fit_plane(points, plane.points);
+  const std::optional<PlaneFit> fit = fit_plane(points, plane.points, &plane.box);
   if (!fit) return false;
   plane.normal = fit->normal;
   plane.offset = fit->offset;

@@ -11,10 +11,20 @@ constexpr double kCollinear = 1e-12;
 
 }  // namespace
 
-std::optional<PlaneFit> fit_plane(std::span<const Eigen::Vector3d> points, std::span<const int> indices) {
-  if (indices.size() < 3) return std::nullopt;
+std::optional<PlaneFit> fit_plane(std::span<const Eigen::Vector3d> points, std::span<const int> indices,
+                                   Eigen::AlignedBox3d* box) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (int i : indices) centroid += points[static_cast<std::size_t>(i)];
+  if (box) {
+    box->setEmpty();
+    for (int i : indices) {
+      const Eigen::Vector3d& p = points[static_cast<std::size_t>(i)];
+      centroid += p;
+      box->extend(p);
+    }
+  } else {
+    for (int i : indices) centroid += points[static_cast<std::size_t>(i)];
+  }
+  if (indices.size() < 3) return std::nullopt;
   centroid /= static_cast<double>(indices.size());
   if (!centroid.allFinite()) return std::nullopt;
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();

@@ -3,6 +3,7 @@
 // Eigen only.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <optional>
 #include <span>
@@ -24,7 +25,9 @@ struct PlaneFit {
 // M the SVD's singular vectors are its eigenvectors). The normal is turned towards the origin,
 // the sensor (d >= 0), so a fit's sign never depends on the points' order. Nothing (no plane)
 // for fewer than 3 points, non-finite points, or points with no plane of their own: all equal
-// or collinear (the middle eigenvalue below 1e-12 of the largest).
-std::optional<PlaneFit> fit_plane(std::span<const Eigen::Vector3d> points, std::span<const int> indices);
+// or collinear (the middle eigenvalue below 1e-12 of the largest). With `box`, the points' tight
+// axis-aligned box is set in the same pass (also when there is no plane).
+std::optional<PlaneFit> fit_plane(std::span<const Eigen::Vector3d> points, std::span<const int> indices,
+                                  Eigen::AlignedBox3d* box = nullptr);
 
 }  // namespace relslam::em

@@ -70,6 +70,12 @@ struct DepthFrame {
   int truth_at(int u, int v) const { return truth[static_cast<std::size_t>(v) * width + u]; }
 };
 
+// The frame's returns as 3-D points in the planar robot frame (x forward along the optical axis,
+// y up from the camera, z to the robot's left; see the planar half in docs/frames.md), row-major
+// like the image (an organised cloud), NaN where there is no return. The camera is the origin,
+// as EM's planes expect (their normals face the sensor).
+std::vector<Eigen::Vector3d> depth_points(const DepthFrame& frame, const DepthCameraOptions& options);
+
 class DepthCamera {
  public:
   // Throws OptionError when the options fail check().

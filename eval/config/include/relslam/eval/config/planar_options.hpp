@@ -49,9 +49,8 @@ void describe(OptionsOf<PlanarNoiseSettings> auto& n, auto& f) {
 // The sensor's output kind: plane observations (Chapter 4) or points on the walls, from which
 // relative_plane.extractor finds the planes (Chapter 5; thesis 5.1, 3.5); or a range sensor ray
 // casting the walls (sim/laser_sensor.hpp, sim/depth_camera.hpp), whose frames carry the raw
-// scan or image beside planes: the depth camera's and, with laser_planes "sensor", the laser's
-// are the plane sensor's at the same pose; by default the laser's are the walls extracted from
-// its scan.
+// scan or image beside planes: by default the walls extracted from the laser's scan or the depth
+// camera's image; with laser_planes / depth_planes "sensor" the plane sensor's at the same pose.
 enum class PlanarSensorKind { Planes, Points, Laser, Depth };
 inline constexpr PlanarSensorKind kPlanarSensorKinds[] = {PlanarSensorKind::Planes, PlanarSensorKind::Points,
                                                          PlanarSensorKind::Laser, PlanarSensorKind::Depth};
@@ -65,7 +64,8 @@ inline std::string_view to_string(PlanarSensorKind kind) {
   return "planes";
 }
 
-// The planes a simulated laser's frames carry (planar.sensor "laser"): the walls extracted from
+// The planes a simulated range sensor's frames carry (planar.sensor "laser", and "depth" with
+// depth_planes): the walls extracted from
 // the simulated scans by libslam's extractor (relslam/scan/wall_extraction.hpp, keys
 // laser.walls.*, as for recorded logs) [C: the laser pipeline measured against the truth], or
 // the plane sensor's planes at the same pose (the thesis's simulated input, Chapter 4).
@@ -116,6 +116,10 @@ struct PlanarOptions {
   sim::LaserSensorOptions laser;  // planar.sensor "laser"
   LaserPlanes laser_planes = LaserPlanes::Extracted;
   sim::DepthCameraOptions depth;  // planar.sensor "depth"
+  // The planes a depth camera's frames carry: the walls EM2 finds in its 640×480 images (at
+  // sensor density, relslam/em/dense_extraction.hpp, then thesis 4.5's wall conversion)
+  // [C: the depth pipeline measured against the truth], or the plane sensor's at the same pose.
+  LaserPlanes depth_planes = LaserPlanes::Extracted;
   // The laser's and the depth camera's frames carry odometry with this noise [C].
   sim::OdometryNoiseOptions odometry;
   // The depth camera's rawlog of `relslam simulate` holds every n-th frame: a 640×480 frame is
@@ -154,6 +158,8 @@ void describe(OptionsOf<PlanarOptions> auto& o, auto& f) {
            "laser sensor: the walls extracted from its scans (laser.walls.*) or the plane sensor's planes",
            kLaserPlanes);
   f.nested("depth", o.depth);
+  f.choice("depth_planes", o.depth_planes,
+           "depth sensor: the walls EM2 extracts from its images or the plane sensor's planes", kLaserPlanes);
   f.nested("odometry", o.odometry);
   f.field("depth_record_every", o.depth_record_every, "depth sensor: simulate writes every n-th frame to depth.rawlog",
           at_least(1));
