@@ -1,5 +1,7 @@
 #include "relslam/scan/wall_registration.hpp"
 
+#include "relslam/scan/segment_stability.hpp"
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -13,13 +15,6 @@ struct Pair {
   const PlaneObject* previous;
   const PlaneObject* current;
 };
-
-// The overlap of b's projection on a's line with a itself, > 0 when they share a stretch.
-double overlap(const PlaneObject& a, const PlaneObject& b) {
-  const Eigen::Vector2d u = a.tangent();
-  const double b0 = u.dot(b.a - a.a), b1 = u.dot(b.b - a.a);
-  return std::min(a.length(), std::max(b0, b1)) - std::max(0.0, std::min(b0, b1));
-}
 
 // The previous wall nearest to `moved` (the current wall in the previous frame) within the
 // bounds, if any.
