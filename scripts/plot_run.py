@@ -4,7 +4,8 @@ of summary.csv in each figure) and a top view of the trajectories over the truth
 
 Usage: scripts/plot_run.py RUN [--out DIR] [--smooth N]
   RUN    a folder written by `relslam run` (or victoria-park, or one seed-N cell of a sweep)
-  --out  where the PNGs go (default RUN/plots): errors.png, runtime.png, map_size.png, top_view.png
+  --out  where the PNGs go (default RUN/plots): errors.png, runtime.png, map_size.png, top_view.png,
+         and for a laser run with ICP-SLAM wall_map.png (the walls over ICP-SLAM's point map)
 Exit status 2 with a message naming the file when the folder is damaged (missing or cut file).
 """
 import argparse
@@ -13,6 +14,7 @@ from pathlib import Path
 
 # The package next to this script, whether or not it is pip-installed (python/README.md).
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "python"))
+sys.path.insert(0, str(Path(__file__).resolve().parent / "plot"))
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")  # headless: CI and servers have no display
@@ -21,6 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from relslam_data import DataError, load_run  # noqa: E402
 from relslam_data import frames  # noqa: E402
 from relslam_data.names import algorithm_label, metric_label  # noqa: E402
+from laser_map import plot_wall_map  # noqa: E402
 
 DPI = 120
 TRUTH_COLOUR = "black"
@@ -149,7 +152,8 @@ def plot_run(folder, out, width=12):
     run = load_run(folder)
     colour = colours(run)
     figures = {"errors": plot_errors(run, colour), "runtime": plot_runtime(run, colour, width),
-               "map_size": plot_map_size(run, colour), "top_view": plot_top_view(run, colour)}
+               "map_size": plot_map_size(run, colour), "top_view": plot_top_view(run, colour),
+               "wall_map": plot_wall_map(run, colour, algorithm_label)}
     return [save(fig, Path(out), name) for name, fig in figures.items() if fig is not None]
 
 

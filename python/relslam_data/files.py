@@ -72,8 +72,10 @@ def read_csv(path, required=(), numeric=(), strings=()):
         if not pd.api.types.is_numeric_dtype(frame[column]):
             converted = pd.to_numeric(frame[column], errors="coerce")
             bad = frame[column][converted.isna() & frame[column].notna()]
-            line = int(bad.index[0]) + 2
-            raise DataError(path, f"line {line}: column {column}: not a number: {bad.iloc[0]!r}")
+            if len(bad):
+                line = int(bad.index[0]) + 2
+                raise DataError(path, f"line {line}: column {column}: not a number: {bad.iloc[0]!r}")
+            frame[column] = converted  # a header without rows reads as text: no row is wrong
     return frame
 
 

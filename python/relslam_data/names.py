@@ -11,6 +11,9 @@ ALGORITHMS = {
     "ekf6d": "EKF (MRPT, 6D)",
     "ekf2d": "EKF (MRPT, 2D)",
     "ekf2d_no_odometry": "EKF (MRPT, 2D, no odometry)",
+    "icp_slam": "ICP-SLAM (MRPT)",
+    "odometry": "odometry",
+    "wall_odometry": "wall registration (prediction)",
 }
 
 # metric -> (what it is, unit or None); a metric not listed gets its unit from its name's suffix.

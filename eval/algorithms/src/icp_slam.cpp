@@ -3,6 +3,8 @@
 // is written as icp_points.csv, over which the walls of the other algorithms can be drawn.
 #include "icp_slam.hpp"
 
+#include "pose_prediction.hpp"
+
 #include "relslam/eval/io/csv_writer.hpp"
 #include "relslam/eval/io/mrpt_scan.hpp"
 #include "relslam/eval/io/rawlog.hpp"
@@ -120,6 +122,29 @@ class Odometry final : public PathOnlyAlgorithm {
   PlanarPose start_;
 };
 
+class WallOdometry final : public PathOnlyAlgorithm {
+ public:
+  WallOdometry(MotionPredictionOptions options, const PlanarPose& world_T_start)
+      : PathOnlyAlgorithm("wall_odometry"), start_(world_T_start), prediction_(registered(options), world_T_start) {}
+  void step(const PlaneFrame& frame) override {
+    unassigned(frame);
+    prediction_.moved(frame);
+    pose_ = prediction_.robot_pose(start_);
+  }
+  std::vector<std::string> iteration_columns() const override { return {"reg_pairs"}; }
+  void iteration_fields(std::vector<CsvField>& out) const override {
+    out.push_back(csv_field(prediction_.registration().pairs));
+  }
+
+ private:
+  static MotionPredictionOptions registered(MotionPredictionOptions o) {
+    o.register_walls = true;
+    return o;
+  }
+  PlanarPose start_;
+  PosePrediction prediction_;
+};
+
 }  // namespace
 
 std::string icp_slam_ini(const IcpSlamOptions& o) {
@@ -153,6 +178,11 @@ std::string icp_slam_ini(const IcpSlamOptions& o) {
 
 std::unique_ptr<PlaneAlgorithm> make_icp_slam(const IcpSlamOptions& options, const PlanarPose& world_T_start) {
   return std::make_unique<IcpSlam>(options, world_T_start);
+}
+
+std::unique_ptr<PlaneAlgorithm> make_wall_odometry(const MotionPredictionOptions& options,
+                                                   const PlanarPose& world_T_start) {
+  return std::make_unique<WallOdometry>(options, world_T_start);
 }
 
 std::unique_ptr<PlaneAlgorithm> make_odometry(const PlanarPose& world_T_start) {

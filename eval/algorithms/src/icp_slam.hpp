@@ -5,6 +5,7 @@
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/eval/algorithms/plane_algorithm.hpp"
 #include "relslam/eval/config/icp_slam_options.hpp"
+#include "relslam/eval/config/laser_options.hpp"
 
 #include <memory>
 #include <string>
@@ -24,5 +25,12 @@ std::string icp_slam_ini(const IcpSlamOptions& options);
 // Dead reckoning: world_T_start followed by every frame's odometry. Throws (ending its run as
 // failed) on a frame after the first without odometry.
 std::unique_ptr<PlaneAlgorithm> make_odometry(const PlanarPose& world_T_start);
+
+// Relative Plane's motion prediction alone (motion_prediction.*, with register_walls on):
+// world_T_start followed by every frame's step, the odometry, the last step or none, refined
+// by registering the frame's walls against the previous frame's. What Relative Plane is handed
+// before it matches, as a path of its own; no planes.
+std::unique_ptr<PlaneAlgorithm> make_wall_odometry(const MotionPredictionOptions& options,
+                                                   const PlanarPose& world_T_start);
 
 }  // namespace relslam::eval

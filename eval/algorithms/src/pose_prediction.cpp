@@ -1,44 +1,75 @@
 #include "pose_prediction.hpp"
 
 namespace relslam::eval {
+namespace {
 
-PlaneFrame PosePrediction::moved(const PlaneFrame& frame) {
-  ++frames_since_last_;
-  if (frame.odometry)
-    odometry_since_last_ = odometry_since_last_ * *frame.odometry;
-  else
-    odometry_complete_ = false;
-  // From the last valid pose: the odometry since then where used and complete, else the last
-  // step repeated once per frame since that pose, else no motion.
-  PlanarPose predicted = last_.value_or(PlanarPose::identity());
-  if (last_ && options_.use_odometry && odometry_complete_) {
-    predicted = predicted * odometry_since_last_;
-  } else if (last_ && options_.constant_velocity && have_step_) {
-    for (int i = 0; i < frames_since_last_; ++i) predicted = predicted * step_;
-  }
-  start_T_predicted_ = predicted;
-  PlaneFrame out = frame;
-  for (PlaneObject& p : out.planes) {
-    const int iteration = p.iteration;
-    p = p.transformed(start_T_predicted_);
-    p.iteration = iteration;
+std::vector<PlaneObject> moved_by(const std::vector<PlaneObject>& planes, const PlanarPose& a_T_b) {
+  std::vector<PlaneObject> out;
+  out.reserve(planes.size());
+  for (const PlaneObject& p : planes) {
+    PlaneObject m = p.transformed(a_T_b);
+    m.iteration = p.iteration;
+    out.push_back(m);
   }
   return out;
 }
 
+}  // namespace
+
+// The step since the previous frame before any registration: the odometry where used and
+// present, else the last step repeated where asked, else none.
+PlanarPose PosePrediction::step_guess(const PlaneFrame& frame) const {
+  if (options_.use_odometry && frame.odometry) return *frame.odometry;
+  if (options_.constant_velocity && have_step_) return step_;
+  return PlanarPose::identity();
+}
+
+// The step refined by registering the frame's walls against the recent frames' (in the
+// registration's start frame), and the recent walls updated.
+PlanarPose PosePrediction::registered_step(const PlaneFrame& frame, const PlanarPose& guess) {
+  std::vector<PlaneObject> target;
+  for (const std::vector<PlaneObject>& walls : recent_walls_) target.insert(target.end(), walls.begin(), walls.end());
+  registration_ = scan::register_walls(target, frame.planes, registered_ * guess, options_.registration);
+  const PlanarPose step = registered_.inverse() * registration_.previous_T_current;
+  registered_ = registration_.previous_T_current;
+  recent_walls_.push_back(moved_by(frame.planes, registered_));
+  while (static_cast<int>(recent_walls_.size()) > options_.registration_frames) recent_walls_.pop_front();
+  return step;
+}
+
+PlaneFrame PosePrediction::moved(const PlaneFrame& frame) {
+  PlanarPose step = step_guess(frame);
+  registration_ = {};
+  if (options_.register_walls) {
+    if (have_previous_)
+      step = registered_step(frame, step);
+    else
+      recent_walls_.push_back(frame.planes);
+  }
+  predicted_step_ = step;
+  start_T_predicted_ = have_previous_ ? previous_ * step : PlanarPose::identity();
+  PlaneFrame out = frame;
+  out.planes = moved_by(frame.planes, start_T_predicted_);
+  return out;
+}
+
 std::optional<PlanarPose> PosePrediction::robot_pose(const std::optional<PlanarPose>& world_T_moved) {
-  if (!world_T_moved) return std::nullopt;
-  const PlanarPose world_T_robot = *world_T_moved * start_T_predicted_;
-  const PlanarPose start_T_robot = start_.inverse() * world_T_robot;
-  if (last_ && frames_since_last_ == 1) {
-    step_ = last_->inverse() * start_T_robot;
+  // Without the algorithm's pose the prediction stands in for the next frame's.
+  const PlanarPose start_T_robot =
+      world_T_moved ? start_.inverse() * (*world_T_moved * start_T_predicted_) : start_T_predicted_;
+  // The velocity: the registered step where the walls gave one (the algorithm's corrections of
+  // a drifting pose are no motion), else the step between the two poses.
+  if (registration_.used) {
+    step_ = predicted_step_;
+    have_step_ = true;
+  } else if (have_previous_) {
+    step_ = previous_.inverse() * start_T_robot;
     have_step_ = true;
   }
-  last_ = start_T_robot;
-  frames_since_last_ = 0;
-  odometry_since_last_ = PlanarPose::identity();
-  odometry_complete_ = true;
-  return world_T_robot;
+  previous_ = start_T_robot;
+  have_previous_ = true;
+  if (!world_T_moved) return std::nullopt;
+  return *world_T_moved * start_T_predicted_;
 }
 
 }  // namespace relslam::eval

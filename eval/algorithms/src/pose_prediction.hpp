@@ -3,13 +3,18 @@
 // frame (MotionPredictionOptions in laser_options.hpp says why; the thesis predicts nothing).
 // The frame's planes are moved by the prediction P (given relative to the start pose), the
 // algorithm estimates C = world_T_(moved frame), which stays near the start pose, and the
-// robot's pose is C P.
+// robot's pose is C P. P is the previous frame's pose (the algorithm's where it had one, else
+// the previous prediction) composed with the step: the odometry, the last step again or none,
+// refined by registering the frame's walls against the previous frames' where asked.
 
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"
 #include "relslam/eval/config/laser_options.hpp"
+#include "relslam/scan/wall_registration.hpp"
 
+#include <deque>
 #include <optional>
+#include <vector>
 
 namespace relslam::eval {
 
@@ -21,20 +26,32 @@ class PosePrediction {
   // The frame the algorithm is given (planes moved by the prediction) and the prediction itself.
   PlaneFrame moved(const PlaneFrame& frame);
   const PlanarPose& prediction() const { return start_T_predicted_; }
+  // This frame's wall registration (pairs 0 and not used without one).
+  const scan::WallRegistration& registration() const { return registration_; }
+  // The step from the previous frame's pose to the prediction.
+  const PlanarPose& step() const { return predicted_step_; }
   // The algorithm's pose for the moved frame back as the robot's, and remembered for the next
   // prediction; nothing when the algorithm had none.
   std::optional<PlanarPose> robot_pose(const std::optional<PlanarPose>& world_T_moved);
 
  private:
+  PlanarPose step_guess(const PlaneFrame& frame) const;
+  PlanarPose registered_step(const PlaneFrame& frame, const PlanarPose& guess);
+
   MotionPredictionOptions options_;
   PlanarPose start_;
   PlanarPose start_T_predicted_;
-  std::optional<PlanarPose> last_;  // start_T_robot at the last valid pose
-  PlanarPose step_;                 // the last step between two consecutive valid poses
-  int frames_since_last_ = 0;       // frames since last_
+  PlanarPose previous_;  // start_T_robot of the previous frame (algorithm's, else predicted)
+  bool have_previous_ = false;
+  PlanarPose step_;  // the last step between two frames' poses
   bool have_step_ = false;
-  PlanarPose odometry_since_last_;  // the odometry composed since last_
-  bool odometry_complete_ = true;   // every frame since last_ had odometry
+  // The registration's own chain: start_T_robot of the previous frame by registered steps only
+  // (the algorithm's corrections of its pose do not move the walls registered against), and the
+  // last registration_frames frames' walls in that start frame.
+  PlanarPose registered_;
+  std::deque<std::vector<PlaneObject>> recent_walls_;
+  scan::WallRegistration registration_;
+  PlanarPose predicted_step_;
 };
 
 }  // namespace relslam::eval

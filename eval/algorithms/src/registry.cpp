@@ -65,6 +65,12 @@ const std::vector<AlgorithmEntry>& algorithm_registry() {
                   [](const PlaneAlgorithmContext& c) { return make_icp_slam(c.scenario.icp_slam, c.world_T_start); }),
       plane_entry("odometry", "dead reckoning: the start pose followed by every frame's odometry; no planes",
                   [](const PlaneAlgorithmContext& c) { return make_odometry(c.world_T_start); }),
+      plane_entry("wall_odometry",
+                  "Relative Plane's motion prediction alone: each frame's walls registered against the previous "
+                  "frame's (motion_prediction.*); no planes",
+                  [](const PlaneAlgorithmContext& c) {
+                    return make_wall_odometry(c.scenario.motion_prediction, c.world_T_start);
+                  }),
   };
   return entries;
 }

@@ -86,6 +86,23 @@ const Columns<IterationRow> kIntegrityColumns = {
     {"pose_reason", [](const IterationRow& r) { return csv_field(std::string(to_string(r.step.pose_reason))); }},
 };
 
+// With a motion prediction: the step predicted from the previous frame's pose and the wall
+// registration's pairs and residual (motion_prediction.*). Not a column without one.
+struct PredictionRow {
+  const PosePrediction& prediction;
+};
+
+const Columns<PredictionRow> kPredictionColumns = {
+    {"pred_step_x", [](const PredictionRow& r) { return csv_field(r.prediction.step().translation.x()); }},
+    {"pred_step_z", [](const PredictionRow& r) { return csv_field(r.prediction.step().translation.y()); }},
+    {"pred_step_heading_deg",
+     [](const PredictionRow& r) { return csv_field(r.prediction.step().heading * 180.0 / std::numbers::pi); }},
+    {"reg_pairs", [](const PredictionRow& r) { return csv_field(r.prediction.registration().pairs); }},
+    {"reg_rms", [](const PredictionRow& r) {
+       return r.prediction.registration().used ? csv_field(r.prediction.registration().rms) : CsvField{};
+     }},
+};
+
 bool adaptive(const RltXPointsS& slam) { return slam.options().preset == plane::Preset::Adaptive; }
 
 // One RltPlane as planes.csv sees it, after the recorder's scored columns.
@@ -155,11 +172,13 @@ class RelativePlane final : public PlaneAlgorithm {
   std::vector<std::string> iteration_columns() const override {
     std::vector<std::string> names = column_names(kIterationColumns);
     if (adaptive(slam_)) std::ranges::copy(column_names(kIntegrityColumns), std::back_inserter(names));
+    if (prediction_) std::ranges::copy(column_names(kPredictionColumns), std::back_inserter(names));
     return names;
   }
   void iteration_fields(std::vector<CsvField>& out) const override {
     append_fields(kIterationColumns, IterationRow{last_, slam_}, out);
     if (adaptive(slam_)) append_fields(kIntegrityColumns, IterationRow{last_, slam_}, out);
+    if (prediction_) append_fields(kPredictionColumns, PredictionRow{*prediction_}, out);
   }
   bool scores_wrong_valid() const override { return adaptive(slam_); }
   std::vector<std::string> plane_columns() const override { return column_names(kPlaneColumns); }

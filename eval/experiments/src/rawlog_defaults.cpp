@@ -33,7 +33,9 @@ std::vector<std::string> default_rawlog_settings(const RawlogFiles& files) {
   // real-sena.json (docs/laser-scans.md): real steps and flickering walls.
   if (log.frames.empty())
     return {"kind=planar",
-            "algorithms=relative_plane",
+            "algorithms=relative_plane,wall_odometry",
+            "motion_prediction.register_walls=true",
+            "motion_prediction.constant_velocity=true",
             "relative_plane.key_points=false",
             "relative_plane.min_readings=2",
             "relative_plane.min_common=2",

@@ -10,14 +10,6 @@ double line_distance(const PlaneObject& plane, const Eigen::Vector2d& p) {
   return std::abs(plane.normal().dot(p) + plane.offset());
 }
 
-// The overlap of b's projection on a's line with a itself, > 0 when they share a stretch.
-double overlap(const PlaneObject& a, const PlaneObject& b) {
-  const Eigen::Vector2d u = a.tangent();
-  const double a0 = 0, a1 = a.length();
-  const double b0 = u.dot(b.a - a.a), b1 = u.dot(b.b - a.a);
-  return std::min(a1, std::max(b0, b1)) - std::max(a0, std::min(b0, b1));
-}
-
 bool same_wall(const PlaneObject& a, const PlaneObject& b, const CounterpartBounds& bounds) {
   if (a.normal().dot(b.normal()) < std::cos(bounds.max_angle_rad)) return false;
   if (line_distance(a, b.midpoint()) > bounds.max_offset || line_distance(b, a.midpoint()) > bounds.max_offset)
@@ -26,6 +18,13 @@ bool same_wall(const PlaneObject& a, const PlaneObject& b, const CounterpartBoun
 }
 
 }  // namespace
+
+double overlap(const PlaneObject& a, const PlaneObject& b) {
+  const Eigen::Vector2d u = a.tangent();
+  const double a0 = 0, a1 = a.length();
+  const double b0 = u.dot(b.a - a.a), b1 = u.dot(b.b - a.a);
+  return std::min(a1, std::max(b0, b1)) - std::max(a0, std::min(b0, b1));
+}
 
 bool has_counterpart(const PlaneObject& current, const std::vector<PlaneObject>& previous,
                      const PlanarPose& previous_T_current, const CounterpartBounds& bounds) {

@@ -20,6 +20,9 @@ struct CounterpartBounds {
   double max_offset = 0.15;
 };
 
+// The length along a's line that b's projection shares with a (> 0 when they overlap).
+double overlap(const PlaneObject& a, const PlaneObject& b);
+
 // Whether `current` (in the current robot frame) has a counterpart in `previous` (in the
 // previous robot frame); previous_T_current is the motion between the two.
 bool has_counterpart(const PlaneObject& current, const std::vector<PlaneObject>& previous,

@@ -5,6 +5,7 @@
 
 #include "relslam/core/option_fields.hpp"
 #include "relslam/scan/wall_extraction.hpp"
+#include "relslam/scan/wall_registration.hpp"
 
 #include <string>
 
@@ -35,13 +36,25 @@ struct MotionPredictionOptions {
   bool constant_velocity = false;
   // The frame's odometry, where the log has it (before constant_velocity).
   bool use_odometry = false;
-  bool enabled() const { return constant_velocity || use_odometry; }
+  // The step (from the odometry, the last step or none) refined by registering the frame's
+  // walls against the previous frame's (relslam/scan/wall_registration.hpp).
+  bool register_walls = false;
+  // ... against the walls of this many previous frames, each placed by its registered pose: a
+  // wall missed in one scan (flicker) is still there, and the step is tied to more than one scan.
+  int registration_frames = 2;
+  scan::WallRegistrationOptions registration;
+  bool enabled() const { return constant_velocity || use_odometry || register_walls; }
 };
 
 void describe(OptionsOf<MotionPredictionOptions> auto& o, auto& f) {
   f.field("constant_velocity", o.constant_velocity,
           "Relative Plane: predict each pose by repeating the last step (off: the thesis)");
   f.field("use_odometry", o.use_odometry, "Relative Plane: predict each pose from the log's odometry where it has it");
+  f.field("register_walls", o.register_walls,
+          "Relative Plane: refine the predicted step by registering the walls against the previous frame's");
+  f.field("registration_frames", o.registration_frames,
+          "Relative Plane: register against the walls of this many previous frames", at_least(1));
+  f.nested("registration", o.registration);
 }
 
 }  // namespace relslam::eval
