@@ -3,6 +3,7 @@
 // conversion): each extracted wall lies near the wall most of its pixels see, with that wall's
 // id as truth, and Relative Plane maps them.
 #include "test_support.hpp"
+#include "wall_distance.hpp"
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/sources/planar_simulation_source.hpp"
@@ -20,11 +21,7 @@ LoadedScenario depth_scenario(const std::string& planar) {
                         "depth_walls.json");
 }
 
-// Distance of p from the line through `wall`.
-double line_distance(const Eigen::Vector2d& p, const PlaneObject& wall) {
-  const Eigen::Vector2d u = (wall.b - wall.a).normalized(), d = p - wall.a;
-  return std::abs(u.x() * d.y() - u.y() * d.x());
-}
+using test::line_distance;
 
 TEST(DepthWalls, KinectNoiseWallsLieOnTheirTrueWallsAndRelativePlaneMapsThem) {
   const LoadedScenario loaded = depth_scenario("");

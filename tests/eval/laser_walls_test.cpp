@@ -2,6 +2,7 @@
 // "extracted", the default): each extracted wall lies on the wall its rays hit, with that wall's
 // id as truth, and Relative Plane maps them.
 #include "test_support.hpp"
+#include "wall_distance.hpp"
 
 #include "relslam/eval/algorithms/registry.hpp"
 #include "relslam/eval/sources/planar_simulation_source.hpp"
@@ -26,11 +27,7 @@ double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, cons
   return (a + t * d - p).norm();
 }
 
-// Distance of p from the line through `wall`.
-double line_distance(const Eigen::Vector2d& p, const PlaneObject& wall) {
-  const Eigen::Vector2d u = (wall.b - wall.a).normalized(), d = p - wall.a;
-  return std::abs(u.x() * d.y() - u.y() * d.x());
-}
+using test::line_distance;
 
 TEST(LaserWalls, NoiseFreeWallsLieOnTheirTrueWalls) {
   const LoadedScenario loaded = laser_scenario("");
