@@ -71,6 +71,21 @@ TEST(PlaneFile, WithoutTruthNoErrorIsScored) {
     EXPECT_EQ(summary.text(0, column), "") << column << ": no truth, no number";
 }
 
+// render replays a run by simulating it again; a run whose planes came from a file has nothing
+// to simulate, so it is refused rather than drawn as the scenario's default world.
+TEST(PlaneFile, RenderRefusesARunReadFromAFile) {
+  test::ScratchDir dir;
+  test::write_file(dir / "planes.csv",
+                   "iteration,index,kp1_x,kp1_z,kp2_x,kp2_z\n0,0,-3,4,3,4\n0,1,3,4,3,-1\n1,0,-3,3.9,3,3.9\n");
+  ASSERT_EQ(run_relslam({"run", "--planes", (dir / "planes.csv").string(), "--out", (dir / "run").string(), "-q"})
+                .exit_code,
+            0);
+  const auto r = run_relslam({"render", (dir / "run").string(), "--out", (dir / "pic.png").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("render replays simulated runs"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "pic.png"));
+}
+
 TEST(PlaneFile, ADamagedFileIsRefusedAtItsLine) {
   test::ScratchDir dir;
   test::write_file(dir / "planes.csv", "iteration,index,kp1_x,kp1_z,kp2_x,kp2_z\n0,0,1,2,3,4\n0,2,1,2,3,4\n");

@@ -3,6 +3,8 @@
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/eval/io/tum_writer.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <optional>
@@ -13,6 +15,9 @@ namespace relslam::eval {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The manifest sections of the sources that read their frames from files.
+constexpr std::array<const char*, 4> kRecordedSources = {"rawlog", "victoria_park", "plane_file", "laser_rawlog"};
 
 // The pose at iteration k in a TUM file (t = iteration), if it has one.
 std::optional<Rigid3> recorded_pose(const fs::path& tum, int k) {
@@ -34,7 +39,11 @@ ReplayManifest read_replay_manifest(const fs::path& run_dir) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(file.string(), 0, "", std::string("not a relslam manifest: ") + e.what());
   }
-  if (!manifest.contains("scenario") || manifest.contains("rawlog") || manifest.contains("victoria_park"))
+  // Runs whose frames were read from files (a rawlog, Victoria Park, a plane file, laser scans):
+  // there is nothing to simulate again, and replaying the scenario would draw another run.
+  const bool recorded = std::any_of(kRecordedSources.begin(), kRecordedSources.end(),
+                                    [&](const char* source) { return manifest.contains(source); });
+  if (!manifest.contains("scenario") || recorded)
     throw InputError(file.string(), 0, "", "render replays simulated runs (relslam run SCENARIO); this one is not: draw it from its files with --overview");
   LoadedScenario loaded = parse_scenario_with_overrides(manifest["scenario"].dump(), file.string(), {});
   return {run_dir, file, std::move(manifest), std::move(loaded)};
