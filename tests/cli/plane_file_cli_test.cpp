@@ -5,6 +5,8 @@
 
 #include "test_support.hpp"
 
+#include "relslam/eval/io/run_overview.hpp"
+
 #include <gtest/gtest.h>
 
 namespace relslam {
@@ -72,18 +74,34 @@ TEST(PlaneFile, WithoutTruthNoErrorIsScored) {
 }
 
 // render replays a run by simulating it again; a run whose planes came from a file has nothing
-// to simulate, so it is refused rather than drawn as the scenario's default world.
-TEST(PlaneFile, RenderRefusesARunReadFromAFile) {
+// to simulate, so the replay refuses it (rather than drawing the scenario's default world), and
+// the overview draws it from its files: in the planar axes, with the truth it was given.
+TEST(PlaneFile, RenderDrawsARunReadFromAFileFromItsFilesOnly) {
   test::ScratchDir dir;
-  test::write_file(dir / "planes.csv",
-                   "iteration,index,kp1_x,kp1_z,kp2_x,kp2_z\n0,0,-3,4,3,4\n0,1,3,4,3,-1\n1,0,-3,3.9,3,3.9\n");
-  ASSERT_EQ(run_relslam({"run", "--planes", (dir / "planes.csv").string(), "--out", (dir / "run").string(), "-q"})
+  const std::string path = test::source_path("scenarios/p-room.json").string();
+  ASSERT_EQ(run_relslam({"run", path, "--out", (dir / "sim").string(), "-q", "--set", "planar.iterations=100"}).exit_code,
+            0);
+  ASSERT_EQ(run_relslam({"run", path, "--set", "planar.iterations=100", "--planes",
+                         (dir / "sim/plane_observations.csv").string(), "--truth-path",
+                         (dir / "sim/ground_truth_poses.csv").string(), "--truth-walls",
+                         (dir / "sim/ground_truth_walls.csv").string(), "--out", (dir / "file").string(), "-q"})
                 .exit_code,
             0);
-  const auto r = run_relslam({"render", (dir / "run").string(), "--out", (dir / "pic.png").string()});
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("render replays simulated runs"), std::string::npos) << r.err;
+  const auto replay = run_relslam({"render", (dir / "file").string(), "--iteration", "50", "--out",
+                                   (dir / "pic.png").string()});
+  EXPECT_EQ(replay.exit_code, 2);
+  EXPECT_NE(replay.err.find("render replays simulated runs"), std::string::npos) << replay.err;
   EXPECT_FALSE(fs::exists(dir / "pic.png"));
+
+  const eval::RunOverview sim = eval::read_run_overview(dir / "sim"), file = eval::read_run_overview(dir / "file");
+  EXPECT_TRUE(file.planar);
+  ASSERT_EQ(file.true_walls.size(), sim.true_walls.size());
+  for (std::size_t i = 0; i < sim.true_walls.size(); ++i)
+    EXPECT_LT((file.true_walls[i].first - sim.true_walls[i].first).norm(), 1e-9) << "wall " << i;
+  ASSERT_EQ(file.true_path.size(), 100u);
+  EXPECT_LT((file.true_path.back() - sim.true_path.back()).norm(), 1e-6);
+  ASSERT_EQ(file.tracks.size(), 1u);
+  EXPECT_EQ(file.tracks[0].path, sim.tracks[0].path);
 }
 
 TEST(PlaneFile, ADamagedFileIsRefusedAtItsLine) {

@@ -3,14 +3,18 @@
 #include "render_drawing.hpp"
 
 #include "relslam/eval/config/input_error.hpp"
+#include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/io/csv_reader.hpp"
 #include "relslam/eval/io/tum_writer.hpp"
 
+#include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <fstream>
+#include <optional>
 
 namespace relslam::eval {
 namespace fs = std::filesystem;
@@ -65,6 +69,48 @@ std::vector<Segment2> read_segments(const fs::path& file, const std::string& a, 
   return segments;
 }
 
+// The path of a planar truth table (columns x, z, as ground_truth_poses.csv).
+std::vector<Eigen::Vector2d> read_planar_path(const fs::path& file) {
+  const CsvContents table = read_csv_table(file);
+  std::vector<Eigen::Vector2d> path;
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    const auto x = field(table, i, "x"), z = field(table, i, "z");
+    if (x && z) path.push_back({*x, *z});
+  }
+  return path;
+}
+
+// The run's manifest, or null when it has none or it is not JSON (the overview then goes by the
+// files it finds).
+nlohmann::json read_manifest(const fs::path& run) {
+  std::ifstream in(run / "manifest.json");
+  if (!in) return nullptr;
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
+// Whether the run fed the plane half: its manifest's scenario kind, asked of half_of; without
+// one, whether it holds the plane half's truth or observation files.
+bool planar_run(const fs::path& run, const nlohmann::json& manifest) {
+  if (manifest.is_object() && manifest.contains("scenario") && manifest["scenario"].is_object() &&
+      manifest["scenario"].contains("kind") && manifest["scenario"]["kind"].is_string()) {
+    const std::string kind = manifest["scenario"]["kind"].get<std::string>();
+    for (ScenarioKind k : kScenarioKinds)
+      if (to_string(k) == kind) return feeds_planes(k);
+  }
+  return fs::exists(run / "ground_truth_walls.csv") || fs::exists(run / "plane_observations.csv");
+}
+
+// A truth file a plane-file run was given (relslam run --planes FILE --truth-path/--truth-walls):
+// the path recorded in the manifest, when it is still there.
+std::optional<fs::path> plane_file_truth(const nlohmann::json& manifest, const char* key) {
+  if (!manifest.is_object() || !manifest.contains("plane_file") || !manifest["plane_file"].is_object()) return {};
+  const nlohmann::json& entry = manifest["plane_file"];
+  if (!entry.contains(key) || !entry[key].is_string() || entry[key].get<std::string>().empty()) return {};
+  const fs::path file = entry[key].get<std::string>();
+  std::error_code ec;
+  return fs::is_regular_file(file, ec) ? std::optional(file) : std::nullopt;
+}
+
 // Every point the picture must hold.
 std::vector<Eigen::Vector2d> extent_points(const RunOverview& o) {
   std::vector<Eigen::Vector2d> all = o.true_path;
@@ -89,13 +135,16 @@ cv::Scalar track_colour(std::size_t i) {
 RunOverview read_run_overview(const fs::path& run) {
   if (!fs::is_directory(run)) throw InputError(run.string(), 0, "", "not a run folder");
   RunOverview o;
-  o.planar = fs::exists(run / "ground_truth_walls.csv") || fs::exists(run / "plane_observations.csv");
+  const nlohmann::json manifest = read_manifest(run);
+  o.planar = planar_run(run, manifest);
   o.title = run.filename().string();
   if (fs::exists(run / "ground_truth_path.tum")) o.true_path = read_tum_path(run / "ground_truth_path.tum", o.planar);
+  else if (const auto path = plane_file_truth(manifest, "truth_path")) o.true_path = read_planar_path(*path);
   if (fs::exists(run / "ground_truth_landmarks.csv"))
     o.true_landmarks = read_points(run / "ground_truth_landmarks.csv", o.planar);
   if (fs::exists(run / "ground_truth_walls.csv"))
     o.true_walls = read_segments(run / "ground_truth_walls.csv", "a", "b");
+  else if (const auto walls = plane_file_truth(manifest, "truth_walls")) o.true_walls = read_segments(*walls, "a", "b");
   std::vector<fs::path> folders;
   for (const auto& entry : fs::directory_iterator(run))
     if (entry.is_directory() && fs::exists(entry.path() / "trajectory.tum")) folders.push_back(entry.path());
