@@ -1,10 +1,12 @@
 // One generated map per family (map seed 1, small frustum, noise-free) through Relative Plane
-// (docs/generated-maps.md). The bounds are what the thesis's algorithm reaches on them today:
-// the pose valid share over the iterations with two non-parallel walls in view, and the walls
-// mapped. They are floors to raise as Relative Plane learns these maps, not goals.
+// (docs/generated-maps.md) under the adaptive preset: the pose valid share over the iterations
+// with two non-parallel walls in view, and the walls mapped, as floors to raise as Relative Plane
+// learns these maps.
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
+
+#include <string>
 
 namespace relslam {
 namespace {
@@ -15,12 +17,12 @@ struct FamilyRun {
   int least_walls;     // walls mapped
 };
 
-// Floors at about half of what the adaptive preset reaches on map seed 1 today (the figures are
-// in docs/generated-maps.md); many of its valid poses there are still wrong, which the
-// wrong_valid column counts.
+// Floors a little below what the adaptive preset reaches on map seed 1 (the figures are in
+// docs/generated-maps.md). Many valid poses on the rooms, the office and the clutter are still
+// wrong (the wrong_valid column counts them); the mirrored corridor has none.
 const FamilyRun kFamilies[] = {
-    {"gen-convex-room.json", 0.08, 3}, {"gen-inner-walls.json", 0.008, 2},       {"gen-corridor.json", 0.5, 15},
-    {"gen-mirrored-corridor.json", 0.35, 10}, {"gen-office.json", 0.25, 25}, {"gen-clutter.json", 0.35, 10},
+    {"gen-convex-room.json", 0.7, 7},         {"gen-inner-walls.json", 0.6, 5}, {"gen-corridor.json", 0.9, 17},
+    {"gen-mirrored-corridor.json", 0.95, 18}, {"gen-office.json", 0.9, 36},     {"gen-clutter.json", 0.25, 12},
 };
 
 TEST(GeneratedMapRun, EveryFamilyRunsNoiseFreeWithinTodaysBounds) {
@@ -45,6 +47,10 @@ TEST(GeneratedMapRun, EveryFamilyRunsNoiseFreeWithinTodaysBounds) {
                 family.scenario, share, constrained, summary.text(0, "walls_mapped").c_str(),
                 summary.text(0, "walls_seen").c_str());
     EXPECT_GE(share, family.least_valid);
+    // The mirrored corridor's pieces, cut by the frustum at the same place on both sides, tie
+    // Rule 15 under the thesis's key points (72 % valid, 14 of 18 walls mapped); the adaptive
+    // preset takes only the ends the sensor saw as the walls' own, and no valid pose is wrong.
+    if (std::string(family.scenario) == "gen-mirrored-corridor.json") EXPECT_EQ(summary.number(0, "wrong_valid"), 0);
     EXPECT_GE(summary.number(0, "walls_mapped"), family.least_walls);
   }
 }

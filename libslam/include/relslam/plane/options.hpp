@@ -159,6 +159,12 @@ struct MotionModelOptions {
   // Rule 23: an end grows the plane only when it comes into view this far beyond the known
   // extent, units. 0 is the thesis (no filter: noise may over-grow a plane, Fig 88) [R: 0.02].
   double grow_threshold = 0.02;
+  // Beyond the thesis, the adaptive preset's (set by RltXPointsS from the preset; no scenario key):
+  // where one end of the plane is the wall's own end in two successive observations (the sensor
+  // did not cut it, PlaneObject::a_cut/b_cut), that end is a fixed point of the world, so the
+  // robot's motion between them follows from it exactly — along the plane too, turning or not —
+  // instead of from Rule 25's forward-only model, which drifts wherever the robot turns.
+  bool real_end_motion = false;
 };
 
 // When Rule 30 re-orders a group's comparison chain (thesis 4.3.7.1; the thesis: "after some time"

@@ -55,6 +55,9 @@ class RltXMMPoint {
   std::optional<PlanarPose> world_T_robot(int iteration) const;
   // The last sample of the track (none before the first compute()).
   const MotionModelSample* last() const { return track_.empty() ? nullptr : &track_.back(); }
+  // Every step of the track took its motion along the plane from a real end in view
+  // (MotionModelOptions::real_end_motion), so none rests on Rule 25's forward-only guess.
+  bool along_observed() const { return along_observed_; }
   // The plane's tracked extent along its tangent, from its map midpoint at the start.
   double s_min() const { return s_min_; }
   double s_max() const { return s_max_; }
@@ -67,6 +70,7 @@ class RltXMMPoint {
   int end_iteration_ = -1;  // -1 while active
   PlanarPose mm_T_plane_;  // the plane's midpoint frame at the start, in the anchor frame
   double start_min_, start_max_;
+  bool along_observed_ = false;
   double s_min_ = 0, s_max_ = 0;
   std::vector<MotionModelSample> track_;
 };
