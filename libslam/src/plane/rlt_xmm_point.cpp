@@ -72,12 +72,12 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
       const double mean_alpha = std::atan2(std::sin(alpha) + std::sin(previous_alpha),
                                            std::cos(alpha) + std::cos(previous_alpha));
       // Rule 25: nearly parallel to the plane the along-plane part is noise; x motion only.
-      if (std::abs(std::cos(mean_alpha)) >= cos_parallel)
-        sample.delta_tangent = sample.delta_normal * std::tan(mean_alpha);
+      const bool along_dropped = std::abs(std::cos(mean_alpha)) < cos_parallel;
+      if (!along_dropped) sample.delta_tangent = sample.delta_normal * std::tan(mean_alpha);
       if (const std::optional<Eigen::Vector2d> moved =
               options.real_end_motion ? real_end_motion(*previous, seen, previous_psi, psi) : std::nullopt)
         sample.delta_tangent = moved->dot(u);
-      else
+      else if (along_dropped)
         along_observed_ = false;
       position += sample.delta_normal * -n + sample.delta_tangent * u;
     }

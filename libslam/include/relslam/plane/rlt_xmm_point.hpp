@@ -55,8 +55,9 @@ class RltXMMPoint {
   std::optional<PlanarPose> world_T_robot(int iteration) const;
   // The last sample of the track (none before the first compute()).
   const MotionModelSample* last() const { return track_.empty() ? nullptr : &track_.back(); }
-  // Every step of the track took its motion along the plane from a real end in view
-  // (MotionModelOptions::real_end_motion), so none rests on Rule 25's forward-only guess.
+  // No step of the track dropped the motion along the plane (Rule 25: heading nearly parallel to
+  // it) without a real end in view to measure it (MotionModelOptions::real_end_motion): driving
+  // along a wall cut at both ends by the frustum, nothing shows how far the robot went.
   bool along_observed() const { return along_observed_; }
   // The plane's tracked extent along its tangent, from its map midpoint at the start.
   double s_min() const { return s_min_; }
