@@ -50,7 +50,9 @@ TEST(GeneratedMapRun, EveryFamilyRunsNoiseFreeWithinTodaysBounds) {
     // The mirrored corridor's pieces, cut by the frustum at the same place on both sides, tie
     // Rule 15 under the thesis's key points (72 % valid, 14 of 18 walls mapped); the adaptive
     // preset takes only the ends the sensor saw as the walls' own, and no valid pose is wrong.
-    if (std::string(family.scenario) == "gen-mirrored-corridor.json") EXPECT_EQ(summary.number(0, "wrong_valid"), 0);
+    if (std::string(family.scenario) == "gen-mirrored-corridor.json") {
+      EXPECT_EQ(summary.number(0, "wrong_valid"), 0);
+    }
     EXPECT_GE(summary.number(0, "walls_mapped"), family.least_walls);
   }
 }
