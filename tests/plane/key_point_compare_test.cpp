@@ -128,12 +128,20 @@ TEST(CompareWithKeyPoints, APieceCutAtBothEndsIsInvalidWithRigidSigma) {
   EXPECT_LT(passed.sigma, 1e-9);
 }
 
+// The adaptive preset with relative_plane.open_cut_ends: the sensor's cut-end flags are used.
+RelativePlaneOptions open_cut_ends() {
+  RelativePlaneOptions o = preset_options(Preset::Adaptive);
+  o.open_cut_ends = true;
+  return o;
+}
+
 // A corridor's two sides, each seen from its real near end (coming towards the robot as it
 // drives on) to the far edge of the frustum, which cuts both at the same place (a mirrored
 // corridor): in the robot frame the two cut ends stay put together and the two real ends move
-// together, so Rule 15 ties the diagonals and the thesis finds no key point. The adaptive preset
-// knows from the sensor which ends are cut (PlaneObject::a_cut, b_cut) and takes the real ones.
-TEST(CompareWithKeyPoints, MirroredCutEndsAreNotKeyPointsInTheAdaptivePreset) {
+// together, so Rule 15 ties the diagonals and the thesis finds no key point. With open_cut_ends
+// the adaptive preset knows from the sensor which ends are cut (PlaneObject::a_cut, b_cut) and
+// takes the real ones; without it (the default) it compares as the thesis does.
+TEST(CompareWithKeyPoints, MirroredCutEndsAreNotKeyPointsWithOpenCutEnds) {
   std::vector<PlaneObject> left, right;
   for (int t = 0; t < 30; ++t) {
     const double near = 2 - 0.1 * t;
@@ -144,7 +152,11 @@ TEST(CompareWithKeyPoints, MirroredCutEndsAreNotKeyPointsInTheAdaptivePreset) {
   ASSERT_TRUE(thesis.valid);
   EXPECT_TRUE(thesis.ambiguous) << "Rule 15's tie: the pair of cut ends looks as static as the real one";
 
-  const CompareResult adaptive = compare_with_key_points(left, right, preset_options(Preset::Adaptive));
+  const CompareResult by_default = compare_with_key_points(left, right, preset_options(Preset::Adaptive));
+  ASSERT_TRUE(by_default.valid);
+  EXPECT_TRUE(by_default.ambiguous) << "open_cut_ends is off by default";
+
+  const CompareResult adaptive = compare_with_key_points(left, right, open_cut_ends());
   ASSERT_TRUE(adaptive.valid);
   EXPECT_FALSE(adaptive.ambiguous);
   EXPECT_EQ(adaptive.key_point1, KeyPoint::Right);
@@ -157,15 +169,16 @@ TEST(CompareWithKeyPoints, MirroredCutEndsAreNotKeyPointsInTheAdaptivePreset) {
   EXPECT_LT((ends - Eigen::Vector2d(0, 3)).norm(), kExact) << ends.transpose();
 }
 
-// A piece cut at both ends throughout places nothing in the adaptive preset: no pair of real ends.
-TEST(CompareWithKeyPoints, APieceCutAtBothEndsPlacesNothingInTheAdaptivePreset) {
+// A piece cut at both ends throughout places nothing with open_cut_ends: no pair of real ends.
+TEST(CompareWithKeyPoints, APieceCutAtBothEndsPlacesNothingWithOpenCutEnds) {
   std::vector<PlaneObject> across, middle;
   for (int t = 0; t < 20; ++t) {
     across.push_back({{4, -5}, {4, 3}, 0, 2.5, t});
     middle.push_back({{-1 + 0.1 * t, -6}, {5 + 0.1 * t, -6}, 0, 2.5, t, true, true});
   }
   EXPECT_TRUE(compare_with_key_points(across, middle, RelativePlaneOptions{}).valid);
-  EXPECT_FALSE(compare_with_key_points(across, middle, preset_options(Preset::Adaptive)).valid);
+  EXPECT_TRUE(compare_with_key_points(across, middle, preset_options(Preset::Adaptive)).valid);
+  EXPECT_FALSE(compare_with_key_points(across, middle, open_cut_ends()).valid);
 }
 
 TEST(CompareWithKeyPoints, InvalidWithoutEnoughCommonIterations) {

@@ -124,7 +124,7 @@ bool GroupManagement::bootstrap(RelativePlaneStep& result) {
     if (state_.planes_[q].readings() < options_.min_readings || !may_join(q, x0)) continue;  // Rule 32's hints
     if (!scratch_.candidates_.empty()) {
       if (RltPlaneInterval::common_size(shared, state_.planes_[q].intervals()) < options_.min_common) continue;
-      // Beyond the thesis (the adaptive preset): Rule 4 anchors the whole map on X0, so X0 takes
+      // Beyond the thesis (open_cut_ends): Rule 4 anchors the whole map on X0, so X0 takes
       // only planes its base can place — a pair of ends seen uncut together (a plane seen cut at
       // both ends, or only ever with cut partners, would leave X0 unplaced for good).
       if (options_.anchor_compare &&

@@ -36,7 +36,7 @@ struct GroupingOptions {
   bool key_points;
   const RuleSwitches& rules;
   const MotionModelOptions& motion_model;
-  // The adaptive preset: X0's planes must compare on ends the sensor saw as the walls' own.
+  // open_cut_ends: X0's planes must compare on ends the sensor saw as the walls' own.
   std::optional<ComparePlanesOptions> anchor_compare;
   DuplicateSearchOptions duplicates;
   static GroupingOptions of(const RelativePlaneOptions& o) {
@@ -52,7 +52,7 @@ struct GroupingOptions {
             o.key_points,
             o.rules,
             o.motion_model,
-            o.preset == Preset::Adaptive ? std::optional<ComparePlanesOptions>(o) : std::nullopt,
+            cut_ends_open(o) ? std::optional<ComparePlanesOptions>(o) : std::nullopt,
             DuplicateSearchOptions::of(o)};
   }
 };

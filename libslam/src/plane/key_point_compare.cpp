@@ -119,7 +119,7 @@ CompareResult compare_piece(const ObservationView& first, const ObservationView&
   std::vector<KeyPointOffsets> offsets;
   KeyPointPairs pairs = key_point_pairs(in1, in2, options.rotate_to_first, &offsets);
   if (options.cut_ends_open) {
-    // The adaptive preset: the sensor says which ends are cut, so the samples a cut end spoils
+    // open_cut_ends: the sensor says which ends are cut, so the samples a cut end spoils
     // are known and left out pair by pair (restrict_to_real_ends) instead of trimmed.
     restrict_to_real_ends(in1, in2, offsets, options.growth_phase.min_samples, pairs);
     if (std::min({pairs.sigma[0][0], pairs.sigma[0][1], pairs.sigma[1][0], pairs.sigma[1][1]}) >= kCutEndSigma)

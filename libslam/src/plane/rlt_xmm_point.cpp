@@ -52,7 +52,7 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
   s_min_ = start_min_;
   s_max_ = start_max_;
   bool grew_min = false, grew_max = false;
-  along_observed_ = options.real_end_motion;
+  along_observed_ = true;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // R(start) = identity [T, Rule 27]
   double previous_distance = 0, previous_alpha = 0;
   const PlaneObject* previous = nullptr;
@@ -77,7 +77,7 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
       if (const std::optional<Eigen::Vector2d> moved =
               options.real_end_motion ? real_end_motion(*previous, seen, previous_psi, psi) : std::nullopt)
         sample.delta_tangent = moved->dot(u);
-      else if (along_dropped)
+      else if (along_dropped && options.real_end_motion)
         along_observed_ = false;
       position += sample.delta_normal * -n + sample.delta_tangent * u;
     }

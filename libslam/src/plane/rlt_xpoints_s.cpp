@@ -38,7 +38,7 @@ double lap(Clock::time_point& start) {
 
 RltXPointsS::RltXPointsS(const RelativePlaneOptions& options, const PlanarPose& world_T_start)
     : options_(options), world_T_start_(world_T_start) {
-  options_.motion_model.real_end_motion = options.preset == Preset::Adaptive;
+  options_.motion_model.real_end_motion = cut_ends_open(options);
   const std::vector<OptionIssue> issues = check(options);
   if (!issues.empty())
     throw std::logic_error("RltXPointsS: options." + issues.front().field + ": " + issues.front().problem);

@@ -91,7 +91,7 @@ using KeyPointOffsets = std::array<Eigen::Vector2d, 4>;
 KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
                               bool rotate_to_first = true, std::vector<KeyPointOffsets>* offsets = nullptr);
 
-// Beyond the thesis (the adaptive preset): the σ of a pair whose ends the sensor cut in every
+// Beyond the thesis (relative_plane.open_cut_ends): the σ of a pair whose ends the sensor cut in every
 // sample (PlaneObject::a_cut, b_cut). Rule 13 picks the pair of ends that stayed put; an end cut
 // by the field of view stays put relative to another cut end whenever both slide with the robot
 // (two parallel walls while it drives straight), so a pair of cut ends can look static and name
