@@ -94,7 +94,7 @@ PlaneSimFrame PlaneSensor::observe(const PlanarWorld& world, const PlanarPose& w
       std::swap(part.a, part.b);
       std::swap(part.a_is_wall_end, part.b_is_wall_end);
     }
-    out.observation.planes.push_back({part.a, part.b, 0.0, wall.height, k});
+    out.observation.planes.push_back({part.a, part.b, 0.0, wall.height, k, !part.a_is_wall_end, !part.b_is_wall_end});
     out.truth.planes.push_back({wall.id, part.a_is_wall_end, part.b_is_wall_end});
   }
   if (o.shuffle) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace relslam::plane {
@@ -125,6 +126,59 @@ TEST(CompareWithKeyPoints, APieceCutAtBothEndsIsInvalidWithRigidSigma) {
   const CompareResult passed = compare_with_key_points(seen(kAcross), seen(passed_wall()), rigid);
   ASSERT_TRUE(passed.valid);
   EXPECT_LT(passed.sigma, 1e-9);
+}
+
+// The adaptive preset with relative_plane.open_cut_ends: the sensor's cut-end flags are used.
+RelativePlaneOptions open_cut_ends() {
+  RelativePlaneOptions o = preset_options(Preset::Adaptive);
+  o.open_cut_ends = true;
+  return o;
+}
+
+// A corridor's two sides, each seen from its real near end (coming towards the robot as it
+// drives on) to the far edge of the frustum, which cuts both at the same place (a mirrored
+// corridor): in the robot frame the two cut ends stay put together and the two real ends move
+// together, so Rule 15 ties the diagonals and the thesis finds no key point. With open_cut_ends
+// the adaptive preset knows from the sensor which ends are cut (PlaneObject::a_cut, b_cut) and
+// takes the real ones; without it (the default) it compares as the thesis does.
+TEST(CompareWithKeyPoints, MirroredCutEndsAreNotKeyPointsWithOpenCutEnds) {
+  std::vector<PlaneObject> left, right;
+  for (int t = 0; t < 30; ++t) {
+    const double near = 2 - 0.1 * t;
+    left.push_back({{7, 1.5}, {near, 1.5}, 0, 2.5, t, true, false});     // a cut by the far edge
+    right.push_back({{near, -1.5}, {7, -1.5}, 0, 2.5, t, false, true});  // b cut by the far edge
+  }
+  const CompareResult thesis = compare_with_key_points(left, right, RelativePlaneOptions{});
+  ASSERT_TRUE(thesis.valid);
+  EXPECT_TRUE(thesis.ambiguous) << "Rule 15's tie: the pair of cut ends looks as static as the real one";
+
+  const CompareResult by_default = compare_with_key_points(left, right, preset_options(Preset::Adaptive));
+  ASSERT_TRUE(by_default.valid);
+  EXPECT_TRUE(by_default.ambiguous) << "open_cut_ends is off by default";
+
+  const CompareResult adaptive = compare_with_key_points(left, right, open_cut_ends());
+  ASSERT_TRUE(adaptive.valid);
+  EXPECT_FALSE(adaptive.ambiguous);
+  EXPECT_EQ(adaptive.key_point1, KeyPoint::Right);
+  EXPECT_EQ(adaptive.key_point2, KeyPoint::Left);
+  EXPECT_LT(adaptive.sigma, kExact);
+  // The real ends face each other across the corridor: 3 apart, the second turned by 180°.
+  const PlanarPose real_ends = adaptive.pair_delta[1][0];
+  const Eigen::Vector2d ends = real_ends.translation + Eigen::Vector2d(-0.5 * adaptive.length1, 0) -
+                               0.5 * adaptive.length2 * Eigen::Vector2d(std::cos(real_ends.heading), std::sin(real_ends.heading));
+  EXPECT_LT((ends - Eigen::Vector2d(0, 3)).norm(), kExact) << ends.transpose();
+}
+
+// A piece cut at both ends throughout places nothing with open_cut_ends: no pair of real ends.
+TEST(CompareWithKeyPoints, APieceCutAtBothEndsPlacesNothingWithOpenCutEnds) {
+  std::vector<PlaneObject> across, middle;
+  for (int t = 0; t < 20; ++t) {
+    across.push_back({{4, -5}, {4, 3}, 0, 2.5, t});
+    middle.push_back({{-1 + 0.1 * t, -6}, {5 + 0.1 * t, -6}, 0, 2.5, t, true, true});
+  }
+  EXPECT_TRUE(compare_with_key_points(across, middle, RelativePlaneOptions{}).valid);
+  EXPECT_TRUE(compare_with_key_points(across, middle, preset_options(Preset::Adaptive)).valid);
+  EXPECT_FALSE(compare_with_key_points(across, middle, open_cut_ends()).valid);
 }
 
 TEST(CompareWithKeyPoints, InvalidWithoutEnoughCommonIterations) {

@@ -124,6 +124,14 @@ bool GroupManagement::bootstrap(RelativePlaneStep& result) {
     if (state_.planes_[q].readings() < options_.min_readings || !may_join(q, x0)) continue;  // Rule 32's hints
     if (!scratch_.candidates_.empty()) {
       if (RltPlaneInterval::common_size(shared, state_.planes_[q].intervals()) < options_.min_common) continue;
+      // Beyond the thesis (open_cut_ends): Rule 4 anchors the whole map on X0, so X0 takes
+      // only planes its base can place — a pair of ends seen uncut together (a plane seen cut at
+      // both ends, or only ever with cut partners, would leave X0 unplaced for good).
+      if (options_.anchor_compare &&
+          !compare_with_key_points(state_.planes_[scratch_.candidates_.front()].view(), state_.planes_[q].view(),
+                                   *options_.anchor_compare)
+               .valid)
+        continue;
       RltPlaneInterval::minimum_interval(shared, state_.planes_[q].intervals(), narrowed);
       std::swap(shared, narrowed);
     } else {

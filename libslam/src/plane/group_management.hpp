@@ -5,6 +5,7 @@
 // the options it reads.
 
 #include "relslam/plane/hints.hpp"
+#include "relslam/plane/key_point_compare.hpp"
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/relative_plane_step.hpp"
@@ -13,6 +14,8 @@
 
 #include "group_charting.hpp"
 
+#include <optional>
+#include <span>
 #include <vector>
 
 namespace relslam::plane {
@@ -33,6 +36,8 @@ struct GroupingOptions {
   bool key_points;
   const RuleSwitches& rules;
   const MotionModelOptions& motion_model;
+  // open_cut_ends: X0's planes must compare on ends the sensor saw as the walls' own.
+  std::optional<ComparePlanesOptions> anchor_compare;
   DuplicateSearchOptions duplicates;
   static GroupingOptions of(const RelativePlaneOptions& o) {
     return {o.min_readings,
@@ -47,6 +52,7 @@ struct GroupingOptions {
             o.key_points,
             o.rules,
             o.motion_model,
+            cut_ends_open(o) ? std::optional<ComparePlanesOptions>(o) : std::nullopt,
             DuplicateSearchOptions::of(o)};
   }
 };

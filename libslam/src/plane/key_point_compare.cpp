@@ -118,9 +118,16 @@ CompareResult compare_piece(const ObservationView& first, const ObservationView&
   std::span<const PlaneObject> in1(both1), in2(both2);
   std::vector<KeyPointOffsets> offsets;
   KeyPointPairs pairs = key_point_pairs(in1, in2, options.rotate_to_first, &offsets);
+  if (options.cut_ends_open) {
+    // open_cut_ends: the sensor says which ends are cut, so the samples a cut end spoils
+    // are known and left out pair by pair (restrict_to_real_ends) instead of trimmed.
+    restrict_to_real_ends(in1, in2, offsets, options.growth_phase.min_samples, pairs);
+    if (std::min({pairs.sigma[0][0], pairs.sigma[0][1], pairs.sigma[1][0], pairs.sigma[1][1]}) >= kCutEndSigma)
+      return result;  // no pair of real ends in view together: nothing places the one from the other
+  }
   KeyPointChoice choice = choose_key_points(pairs, options.key_point_ties, options.rotate_to_first);
   RltInterval interval = piece.interval;
-  if (options.trim_piece_ends && in1.size() > static_cast<std::size_t>(options.growth_phase.min_samples)) {
+  if (options.trim_piece_ends && !options.cut_ends_open && in1.size() > static_cast<std::size_t>(options.growth_phase.min_samples)) {
     // The pair with the lowest σ over its consistent part; when that part is not the whole
     // piece, and its σ is clearly below the whole piece's lowest, the comparison is made again
     // over it.

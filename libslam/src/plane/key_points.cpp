@@ -85,6 +85,30 @@ KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<cons
   return pairs;
 }
 
+void restrict_to_real_ends(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
+                           std::span<const KeyPointOffsets> offsets, int min_samples, KeyPointPairs& pairs) {
+  const auto cut = [](const PlaneObject& p, int end) { return end == 0 ? p.a_cut : p.b_cut; };
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) {
+      Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+      int n = 0;
+      for (std::size_t t = 0; t < offsets.size(); ++t)
+        if (!cut(first[t], a) && !cut(second[t], b)) {
+          sum += offsets[t][2 * a + b];
+          ++n;
+        }
+      if (n < std::max(1, min_samples)) {
+        pairs.sigma[a][b] = kCutEndSigma;
+        continue;
+      }
+      pairs.mean[a][b] = sum / n;
+      double squares = 0;
+      for (std::size_t t = 0; t < offsets.size(); ++t)
+        if (!cut(first[t], a) && !cut(second[t], b)) squares += (offsets[t][2 * a + b] - pairs.mean[a][b]).squaredNorm();
+      pairs.sigma[a][b] = std::sqrt(squares / n);
+    }
+}
+
 double key_point_distance(const KeyPointPairs& pairs, KeyPoint a, KeyPoint b) {
   // assumed_midpoint: m = kp + s·(L/2)·u with s = +1 from the left end, −1 from the right; in
   // the first plane's frame u₁ = x̂ and u₂ is turned by the mean angle.

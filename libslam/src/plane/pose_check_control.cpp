@@ -22,6 +22,8 @@ IntegrityResult motion_model_pose(const RltXPointsState& s, std::span<const Line
   // Only a track that starts from a checked pose: one anchored on a pose the check refused
   // (parallel planes, a sliding piece taken as static) carries that pose's error along.
   if (!s.pose_.valid || s.motion_models_.back().start_iteration() != s.last_checked_iteration_) return out;
+  // Nor one that dropped the motion along its plane unmeasured (Rule 25, RltXMMPoint::along_observed).
+  if (!s.motion_models_.back().along_observed()) return out;
   if (!std::ranges::all_of(pairs, [&](const LinePair& p) { return agrees(p, s.pose_.world_T_robot, options); }))
     return out;
   return {s.pose_.world_T_robot, true, PoseReason::MotionModel, 1};

@@ -2,8 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace relslam::plane {
+namespace {
+
+// MotionModelOptions::real_end_motion: the robot's motion between two observations of the plane,
+// in the motion model's frame, from an end the sensor saw as the wall's own both times: that end
+// E is fixed, p + Rot(ψ)·e = E at both, so p − p' = Rot(ψ')·e' − Rot(ψ)·e. None when each end
+// was cut in one of the two.
+std::optional<Eigen::Vector2d> real_end_motion(const PlaneObject& before, const PlaneObject& now, double psi_before,
+                                               double psi_now) {
+  const PlanarPose r_before{Eigen::Vector2d::Zero(), psi_before}, r_now{Eigen::Vector2d::Zero(), psi_now};
+  if (!before.a_cut && !now.a_cut) return r_before * before.a - r_now * now.a;
+  if (!before.b_cut && !now.b_cut) return r_before * before.b - r_now * now.b;
+  return std::nullopt;
+}
+
+}  // namespace
 
 RltXMMPoint::RltXMMPoint(XPointId xpoint, PlaneId plane, const PlanarPose& world_T_anchor, int start_iteration,
                          const PlaneObject& world_plane)
@@ -36,8 +52,11 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
   s_min_ = start_min_;
   s_max_ = start_max_;
   bool grew_min = false, grew_max = false;
+  along_observed_ = true;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // R(start) = identity [T, Rule 27]
   double previous_distance = 0, previous_alpha = 0;
+  const PlaneObject* previous = nullptr;
+  double previous_psi = 0;
   for (int i = p.lower_bound(start_iteration_); i < p.size(); ++i) {
     const PlaneObject& seen = p[i];
     if (ended() && seen.iteration > end_iteration_) break;
@@ -53,8 +72,13 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
       const double mean_alpha = std::atan2(std::sin(alpha) + std::sin(previous_alpha),
                                            std::cos(alpha) + std::cos(previous_alpha));
       // Rule 25: nearly parallel to the plane the along-plane part is noise; x motion only.
-      if (std::abs(std::cos(mean_alpha)) >= cos_parallel)
-        sample.delta_tangent = sample.delta_normal * std::tan(mean_alpha);
+      const bool along_dropped = std::abs(std::cos(mean_alpha)) < cos_parallel;
+      if (!along_dropped) sample.delta_tangent = sample.delta_normal * std::tan(mean_alpha);
+      if (const std::optional<Eigen::Vector2d> moved =
+              options.real_end_motion ? real_end_motion(*previous, seen, previous_psi, psi) : std::nullopt)
+        sample.delta_tangent = moved->dot(u);
+      else if (along_dropped && options.real_end_motion)
+        along_observed_ = false;
       position += sample.delta_normal * -n + sample.delta_tangent * u;
     }
     sample.mm_T_robot = {position, psi};
@@ -74,6 +98,8 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
     track_.push_back(sample);
     previous_distance = distance;
     previous_alpha = alpha;
+    previous_psi = psi;
+    previous = &seen;
   }
 
   // The membership: the plane at its tracked extent; its key point is the end that did not move.

@@ -39,8 +39,9 @@ double lap(Clock::time_point& start) {
 }  // namespace
 
 RltXPointsS::RltXPointsS(const RelativePlaneOptions& options, const PlanarPose& world_T_start)
-    : options_(checked_options(options, "RltXPointsS")),
-      world_T_start_(world_T_start) {}
+    : options_(checked_options(options, "RltXPointsS")), world_T_start_(world_T_start) {
+  options_.motion_model.real_end_motion = cut_ends_open(options);
+}
 
 RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
   if (started_ && frame.iteration <= iteration_)

@@ -26,6 +26,11 @@ struct PlaneObject {
   double y_lo = 0.0;                             // height range; the walls' height is static [T]
   double y_hi = 2.5;
   int iteration = 0;
+  // The sensor cut this end at the edge of its field of view: it is where the view ends, not
+  // where the wall ends, so it slides as the robot moves (thesis 4.3.4: only a static end is a
+  // key point). False where the sensor does not say (the thesis's sensor reports no such flag).
+  bool a_cut = false;
+  bool b_cut = false;
 
   Eigen::Vector2d tangent() const { return (b - a).normalized(); }
   Eigen::Vector2d normal() const {

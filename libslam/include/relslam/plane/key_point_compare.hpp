@@ -26,6 +26,7 @@ struct ComparePlanesOptions {
   bool rotate_to_first;            // rules.rotate_to_first
   bool trim_piece_ends;            // the piece's ends standing off the series left out
   double rigid_sigma;              // Rule 13 refined: no key point above this σ
+  bool cut_ends_open;              // open_cut_ends: an end the sensor cut is no key point
   ComparePlanesOptions() : ComparePlanesOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
   ComparePlanesOptions(const RelativePlaneOptions& o)                       // NOLINT(google-explicit-constructor)
       : growth_phase(o.growth_phase),
@@ -33,7 +34,8 @@ struct ComparePlanesOptions {
         key_point_ties(o.key_point_ties),
         rotate_to_first(o.rules.rotate_to_first),
         trim_piece_ends(o.trim_piece_ends),
-        rigid_sigma(o.rigid_sigma) {}
+        rigid_sigma(o.rigid_sigma),
+        cut_ends_open(plane::cut_ends_open(o)) {}
 };
 
 // `first` and `second`: each plane's observations, sorted by iteration (one per iteration).

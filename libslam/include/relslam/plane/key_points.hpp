@@ -91,6 +91,20 @@ using KeyPointOffsets = std::array<Eigen::Vector2d, 4>;
 KeyPointPairs key_point_pairs(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
                               bool rotate_to_first = true, std::vector<KeyPointOffsets>* offsets = nullptr);
 
+// Beyond the thesis (relative_plane.open_cut_ends): the σ of a pair whose ends the sensor cut in every
+// sample (PlaneObject::a_cut, b_cut). Rule 13 picks the pair of ends that stayed put; an end cut
+// by the field of view stays put relative to another cut end whenever both slide with the robot
+// (two parallel walls while it drives straight), so a pair of cut ends can look static and name
+// the wrong key points — the map is then built a piece's length off, and every check against it
+// agrees. Only ends the sensor saw as the wall's own can be key points.
+inline constexpr double kCutEndSigma = 1e9;
+
+// Each pair's mean and σ of `pairs` taken again over the samples in which neither of its two
+// ends was cut; a pair with fewer than `min_samples` such samples gets σ = kCutEndSigma.
+// `offsets`: key_point_pairs' series over `first`, `second`.
+void restrict_to_real_ends(std::span<const PlaneObject> first, std::span<const PlaneObject> second,
+                           std::span<const KeyPointOffsets> offsets, int min_samples, KeyPointPairs& pairs);
+
 // What the pair with the lowest σ says (thesis 4.3.4).
 struct KeyPointChoice {
   // The pair whose mean is `delta`: the lowest σ. Its ends are the key points unless the plane

@@ -159,6 +159,12 @@ struct MotionModelOptions {
   // Rule 23: an end grows the plane only when it comes into view this far beyond the known
   // extent, units. 0 is the thesis (no filter: noise may over-grow a plane, Fig 88) [R: 0.02].
   double grow_threshold = 0.02;
+  // Beyond the thesis, set by RltXPointsS from RelativePlaneOptions::open_cut_ends (no scenario
+  // key of its own): where one end of the plane is the wall's own end in two successive observations (the sensor
+  // did not cut it, PlaneObject::a_cut/b_cut), that end is a fixed point of the world, so the
+  // robot's motion between them follows from it exactly — along the plane too, turning or not —
+  // instead of from Rule 25's forward-only model, which drifts wherever the robot turns.
+  bool real_end_motion = false;
 };
 
 // When Rule 30 re-orders a group's comparison chain (thesis 4.3.7.1; the thesis: "after some time"
@@ -231,6 +237,16 @@ struct RelativePlaneOptions {
   Preset preset = Preset::Thesis;
   // The adaptive preset's pose check and relocalisation.
   IntegrityOptions integrity;
+  // Experimental, adaptive preset only [C: off]: the sensor's flags for the ends its field of
+  // view cut (PlaneObject::a_cut, b_cut) are used. A cut end is no key point (a pair of them can
+  // look static and tie Rule 15, as in a mirrored corridor), X0 takes only planes its base
+  // compares on ends seen uncut, the motion model takes the along-plane motion from an uncut end
+  // in view, and its pose is refused after a step whose along-plane motion went unmeasured. This
+  // departs from the thesis's Rules 4 (X0's planes), 13–15 (every end may be a key point) and
+  // 23–25 (the forward-only motion model). Off by default: on the generated maps it makes many
+  // more poses valid but also many more wrong poses valid on rooms, inner walls and offices
+  // (docs/experiments/relative-plane-integrity.md), against "never a wrong pose called valid".
+  bool open_cut_ends = false;
   // Rule 1 registration bounds [R].
   MatchBounds local_match;
   // Rule 11 bounds, looser: the pose may be a little off [R].
@@ -306,6 +322,9 @@ inline RelativePlaneOptions preset_options(Preset preset) {
   o.preset = preset;
   return o;
 }
+
+// open_cut_ends in effect: asked for, under the adaptive preset.
+inline bool cut_ends_open(const RelativePlaneOptions& o) { return o.preset == Preset::Adaptive && o.open_cut_ends; }
 
 constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Group};
 std::string_view to_string(IntervalMode mode);  // "pair", "group"
@@ -475,6 +494,9 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
            "checked against the map, relocalised when lost (beyond the thesis)",
            kPresets);
   f.nested("integrity", o.integrity);
+  f.field("open_cut_ends", o.open_cut_ends,
+          "adaptive preset, experimental: ends the sensor's field of view cut are no key points, X0 and the motion "
+          "model use uncut ends only (beyond Rules 4, 13-15, 23-25; more wrong valid poses on rooms) [C]");
   f.nested("local_match", o.local_match, true);
   f.nested("global_match", o.global_match, false);
   f.field("plane_capacity", o.plane_capacity, "observations kept per RltPlane (thesis 4.4.3.4: 1200)", at_least(1));

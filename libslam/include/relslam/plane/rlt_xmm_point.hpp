@@ -55,6 +55,11 @@ class RltXMMPoint {
   std::optional<PlanarPose> world_T_robot(int iteration) const;
   // The last sample of the track (none before the first compute()).
   const MotionModelSample* last() const { return track_.empty() ? nullptr : &track_.back(); }
+  // No step of the track dropped the motion along the plane (Rule 25: heading nearly parallel to
+  // it) without a real end in view to measure it (MotionModelOptions::real_end_motion): driving
+  // along a wall cut at both ends by the frustum, nothing shows how far the robot went. Always
+  // true without real_end_motion (the thesis's model: the refusal is open_cut_ends's).
+  bool along_observed() const { return along_observed_; }
   // The plane's tracked extent along its tangent, from its map midpoint at the start.
   double s_min() const { return s_min_; }
   double s_max() const { return s_max_; }
@@ -67,6 +72,7 @@ class RltXMMPoint {
   int end_iteration_ = -1;  // -1 while active
   PlanarPose mm_T_plane_;  // the plane's midpoint frame at the start, in the anchor frame
   double start_min_, start_max_;
+  bool along_observed_ = true;
   double s_min_ = 0, s_max_ = 0;
   std::vector<MotionModelSample> track_;
 };
