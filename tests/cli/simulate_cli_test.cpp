@@ -183,6 +183,20 @@ TEST(RawlogCommand, SummarisesAndExportsASimulatedRawlog) {
   EXPECT_EQ(test::read_lines(dir / "o.csv").size(), test::read_lines(dir / "run/observations.csv").size());
 }
 
+// relslam simulate writes depth frames as (action, sensory frame) pairs: the summary looks past
+// the leading action to tell a point-cloud log from a landmark log.
+TEST(RawlogCommand, SummarisesTheDepthLogSimulateWrites) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_relslam({"simulate", test::source_path("scenarios/p-depth-room.json").string(), "--out",
+                               (dir / "run").string(), "--set", "planar.iterations=3"})
+                .exit_code,
+            0);
+  const auto r = test::run_relslam({"rawlog", (dir / "run/depth.rawlog").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("point clouds"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("depth image"), std::string::npos) << r.out;
+}
+
 TEST(RawlogCommand, TruncatedOrForeignFilesExitWithTwo) {
   test::ScratchDir dir;
   ASSERT_EQ(test::run_relslam(simulate_args(dir / "run")).exit_code, 0);

@@ -283,21 +283,41 @@ PointCloudLog read_point_cloud_rawlog(const std::filesystem::path& path) {
   return log;
 }
 
+namespace {
+
+// Whether the record whose header starts `head` is a cloud observation, or a sensory frame whose
+// first observation is one.
+bool cloud_record(std::span<const unsigned char> head) {
+  const std::string cls = record_class_name(head, "");
+  if (is_cloud_class(cls)) return true;
+  if (cls != "CSensoryFrame") return false;
+  // A sensory frame: its header, version byte, [ID and timestamp before version 2], count.
+  const std::size_t name_end = 1 + (head[0] & 0x7F);
+  const unsigned version = head[name_end];
+  const std::size_t first = name_end + 1 + (version < 2 ? 4 : 0) + (version == 0 ? 8 : 0) + 4;
+  if (first >= head.size()) return false;
+  return is_cloud_class(record_class_name(head.subspan(first), ""));
+}
+
+}  // namespace
+
 bool starts_with_point_cloud(const std::filesystem::path& path) {
   try {
-    mrpt::io::CFileGZInputStream in;
-    if (!in.open(path.string())) return false;
-    std::vector<unsigned char> head(256);
-    head.resize(in.Read(head.data(), head.size()));
-    const std::string cls = record_class_name(head, "");
-    if (is_cloud_class(cls)) return true;
-    if (cls != "CSensoryFrame") return false;
-    // A sensory frame: its header, version byte, [ID and timestamp before version 2], count.
-    const std::size_t name_end = 1 + (head[0] & 0x7F);
-    const unsigned version = head.at(name_end);
-    const std::size_t first = name_end + 1 + (version < 2 ? 4 : 0) + (version == 0 ? 8 : 0) + 4;
-    if (first >= head.size()) return false;
-    return is_cloud_class(record_class_name(std::span(head).subspan(first), ""));
+    // A rawlog of (action, sensory frame) pairs starts with an action collection: it is read
+    // through the checked walk (mrpt_record_check.hpp) and the record after it decides.
+    for (int actions = 0; actions <= 1; ++actions) {
+      mrpt::io::CFileGZInputStream in;
+      if (!in.open(path.string())) return false;
+      const ByteReader read = [&](void* buffer, std::size_t n) { return in.Read(buffer, n); };
+      std::vector<unsigned char> head;
+      for (int i = 0; i < actions; ++i)
+        if (!read_checked_record(read, head)) return false;
+      head.assign(256, 0);
+      head.resize(in.Read(head.data(), head.size()));
+      if (head.empty()) return false;
+      if (record_class_name(head, "") != "CActionCollection") return cloud_record(head);
+    }
+    return false;
   } catch (const std::exception&) {
     return false;
   }

@@ -58,9 +58,10 @@ inline constexpr double kMaxFocalLength_px = 1e6;
 // with no cloud.
 PointCloudLog read_point_cloud_rawlog(const std::filesystem::path& path);
 
-// Whether the file's first record is a cloud observation, or a sensory frame whose first
-// observation is one: what `relslam rawlog` asks to choose its summary. False for anything
-// unreadable (the landmark reader then says why).
+// Whether the file's first record (after one leading action collection, as `relslam simulate`
+// writes) is a cloud observation, or a sensory frame whose first observation is one: what
+// `relslam rawlog` asks to choose its summary. False for anything unreadable (the landmark
+// reader then says why).
 bool starts_with_point_cloud(const std::filesystem::path& path);
 
 }  // namespace relslam::eval
