@@ -155,6 +155,24 @@ TEST(EkfOnMrptDemoLog, ThePlanarEkfTakesOdometryWhenTheKeySaysSo) {
   EXPECT_DOUBLE_EQ(sources["ekf2d.std_range"]["value"].get<double>(), 0.01);
 }
 
+// A planar log with odometry in every frame and no scenario: the EKF takes the odometry as
+// Relative Point does (without it ekf2d ended 42 m off on this log with the status ok).
+TEST(EkfOnMrptDemoLog, ThePlanarEkfTakesTheLogsOdometryByDefault) {
+  if (!fs::exists(kDatasets)) GTEST_SKIP() << kNoDatasets;
+  test::ScratchDir dir;
+  const auto r = run_relslam(demo_run("kf-slam_demo", dir / "run", {"algorithms=ekf2d"}));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const test::CsvTable summary = read_csv(dir / "run/summary.csv");
+  EXPECT_EQ(summary.text(0, "algorithm"), "ekf2d");
+  EXPECT_LT(summary.number(0, "final_mean_landmark_error"), 0.02);
+  const nlohmann::json defaults = manifest(dir / "run")["planar_defaults"];
+  EXPECT_EQ(defaults["ekf2d.use_odometry"]["value"], true) << defaults.dump();
+  const auto off = run_relslam(
+      demo_run("kf-slam_demo", dir / "off", {"algorithms=ekf2d", "ekf2d.use_odometry=false"}));
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  EXPECT_EQ(manifest(dir / "off")["planar_defaults"].contains("ekf2d.use_odometry"), false);
+}
+
 // ---- logs written by MRPT's simul-landmarks: centred, offset and pitched sensor ----
 
 bool have_simul_landmarks() { return std::system("command -v simul-landmarks >/dev/null 2>&1") == 0; }

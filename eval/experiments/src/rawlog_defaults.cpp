@@ -57,12 +57,21 @@ LoadedScenario with_rawlog_shape(const LoadedScenario& loaded, const RawlogSourc
     return adapted;
   }
   const auto given = [&](const std::string& key) { return loaded.origins.contains(key); };
-  if (!given("relative_point.use_odometry") && 2 * shape.frames_with_odometry >= shape.frames) {
-    s.relative_point.use_odometry = true;
-    record["relative_point.use_odometry"] = {
-        {"value", true},
-        {"source", "planar log with odometry in " + std::to_string(shape.frames_with_odometry) + " of " +
-                       std::to_string(shape.frames) + " frames: dead reckoning bridges, as at Victoria Park"}};
+  // A planar log that carries odometry in most frames: both estimators take it. Without it the
+  // EKF's constant-position prediction cannot follow turns of tens of degrees per frame (MRPT's
+  // kf-slam_demo: ekf2d ends tens of metres off, every step a re-initialisation).
+  if (2 * shape.frames_with_odometry >= shape.frames) {
+    const std::string why = "planar log with odometry in " + std::to_string(shape.frames_with_odometry) + " of " +
+                            std::to_string(shape.frames) + " frames";
+    if (!given("relative_point.use_odometry")) {
+      s.relative_point.use_odometry = true;
+      record["relative_point.use_odometry"] = {{"value", true},
+                                               {"source", why + ": dead reckoning bridges, as at Victoria Park"}};
+    }
+    if (!given("ekf2d.use_odometry")) {
+      s.ekf2d.use_odometry = true;
+      record["ekf2d.use_odometry"] = {{"value", true}, {"source", why + ": the filter's prediction step"}};
+    }
   }
   if (s.relative_point.preset == point::Preset::Adaptive && shape.point_spacing > 0) {
     const double cap = shape.point_spacing / 2;
