@@ -254,11 +254,14 @@ def headline(runs, rows):
             said.append(f"The thesis calls the two position errors comparable (Fig 147): that <b>{verdict}</b> here "
                         f"({html.escape(ours)}).")
     counts = {v: sum(r[3] == v for r in rows) for v in VERDICT_CLASS}
+    unjudged = [f"{counts[claims.NOT_JUDGED]} are not judged (their runs lack what the verdict needs: see the table)"
+                if counts[claims.NOT_JUDGED] else "",
+                f"{counts[claims.NOT_RUN]} were not run" if counts[claims.NOT_RUN] else ""]
+    unjudged = " and ".join(u for u in unjudged if u)
     said.append(f"Of {len(rows)} thesis claims, {counts[claims.HOLDS]} hold, {counts[claims.PARTLY]} partly hold and "
-                f"{counts[claims.DOES_NOT]} do not; {counts[claims.NOT_JUDGED]} are not judged (times on the thesis's "
-                "2004 hardware, or pictures to compare by eye: read them in the table)" +
-                (f" and {counts[claims.NOT_RUN]} were not run" if counts[claims.NOT_RUN] else "") +
-                ': <a href="#claims">each claim with its verdict</a>.')
+                f"{counts[claims.DOES_NOT]} do not" + (f"; {unjudged}" if unjudged else "") +
+                ': <a href="#claims">each claim with its verdict</a> and what it checked. A time the thesis reports '
+                "counts as a budget (ours at most the thesis's holds); its 2004 processor is no yardstick for more.")
     return f'<p class="headline">{" ".join(said)}</p>\n'
 
 
@@ -302,8 +305,10 @@ def write_claims(path, runs, claim_rows, quick):
               "Verdict: **holds**, **partly** or **does not hold** where the claim can be judged from the numbers "
               f"(counts: within a factor {claims.NUMBER_HOLDS:g} of the thesis's number holds, within "
               f"{claims.NUMBER_PARTLY:g} partly; \"comparable\" errors: within a factor {compare.COMPARABLE:g} holds, "
-              f"{compare.PARTLY:g} partly; maps: every variant as the thesis says holds); *not judged* where the "
-              "claim is a time on other hardware or a picture to compare by eye.", "",
+              f"{compare.PARTLY:g} partly; maps: every variant as the thesis says holds; times: at most the thesis's "
+              "time holds, up to twice it partly; the other claims: every part the row's \"checked\" list names "
+              "holds, some partly, none does not, with the thresholds of scripts/plot/measures/verdicts.py); "
+              "*not judged* where the runs lack what the verdict needs (a file, a variant, a second run size).", "",
               "| quantity | thesis | ours | verdict | source file |", "|---|---|---|---|---|"]
     for q, t, o, v, src in claim_rows:
         mark = f"*{v}*" if v in (claims.NOT_JUDGED, claims.NOT_RUN) else f"**{v}**"

@@ -12,7 +12,7 @@ sys.path.insert(0, os.path.join(sys.argv[1] if len(sys.argv) > 1 else ".", "scri
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from measures import common, compare, em, planes, points  # noqa: E402
+from measures import common, compare, em, planes, points, verdicts  # noqa: E402
 import relslam_plot as rp  # noqa: E402
 
 
@@ -337,6 +337,146 @@ def corner_run():
         observations=frame(iteration=[2, 3, 4, 4], true_wall=[3, 3, 3, 5], kp1_x=[0.0] * 4, kp1_z=[2.0] * 4,
                            kp2_x=[1.0] * 4, kp2_z=[2.0] * 4),
         manifest=manifest(1, 6))
+
+
+H, P, N = verdicts.HOLDS, verdicts.PARTLY, verdicts.DOES_NOT
+
+
+class Verdicts(unittest.TestCase):
+    """Each claim's verdict from hand-picked numbers on both sides of its thresholds."""
+
+    def verdict(self, result):
+        verdict, parts = result
+        self.assertTrue(parts, "a verdict names what it checked")
+        return verdict
+
+    def test_parts_combine_into_holds_partly_does_not(self):
+        self.assertEqual(verdicts.of_parts([("a", True), ("b", True)]), H)
+        self.assertEqual(verdicts.of_parts([("a", True), ("b", False)]), P)
+        self.assertEqual(verdicts.of_parts([("a", False)]), N)
+        self.assertEqual(verdicts.of_parts([]), N)
+        self.assertEqual(verdicts.text((H, [("x 1", True), ("y 2", False)])), "x 1: yes; y 2: no")
+
+    def test_times_are_budgets_and_shares_bounds(self):
+        for ours, want in [(0.5, H), (2.0, H), (3.9, P), (4.1, N), (float("nan"), N)]:
+            self.assertEqual(self.verdict(verdicts.within_time(ours, 2.0)), want, ours)
+        for ours, want in [(1.5, H), (3.0, P), (6.7, N)]:
+            self.assertEqual(self.verdict(verdicts.within_share(ours, 2.0)), want, ours)
+
+    def test_a_ratio_must_lie_on_the_thesis_side_of_one(self):
+        self.assertEqual(self.verdict(verdicts.same_ratio(0.0691, 0.028, 7.8, 2.5)), H)  # 2.47 vs 3.12
+        self.assertEqual(self.verdict(verdicts.same_ratio(10.0, 1.0, 7.8, 2.5)), P)      # 10 vs 3.12
+        self.assertEqual(self.verdict(verdicts.same_ratio(0.0722, 0.0638, 1.3, 4.5)), N)  # 1.13 vs 0.29
+
+    def test_rule3_offset_constant_and_true(self):
+        self.assertEqual(self.verdict(verdicts.rule3_invariance([2.0, 5.0], [0.02, 0.03], [-6.001, 4.0], [-6, 4])), H)
+        self.assertEqual(self.verdict(verdicts.rule3_invariance([2.0, 5.0], [0.5, 0.03], [-6.0, 4.0], [-6, 4])), P)
+        self.assertEqual(self.verdict(verdicts.rule3_invariance([2.0, 5.0], [0.5, 0.5], [-3.0, 4.0], [-6, 4])), N)
+
+    def test_completed_map(self):
+        self.assertEqual(self.verdict(verdicts.completed_map(36, 36, 1.5e-14, 1.0)), H)
+        self.assertEqual(self.verdict(verdicts.completed_map(35, 36, 1.5e-14, 1.0)), P)
+        self.assertEqual(self.verdict(verdicts.completed_map(35, 36, 0.2, 0.5)), N)
+
+    def test_rule21_group_counts(self):
+        self.assertEqual(self.verdict(verdicts.rule21_groups(21, 30, 25)), H)
+        self.assertEqual(self.verdict(verdicts.rule21_groups(10, 12, 12)), P)
+        self.assertEqual(self.verdict(verdicts.rule21_groups(12, 10, 10)), N)
+        self.assertEqual(self.verdict(verdicts.identical(4.4e-15)), H)
+        self.assertEqual(self.verdict(verdicts.identical(1e-3)), N)
+
+    def test_em_bench_failures_and_defaults(self):
+        scores = {"close": {"em2": (0.0, 0.0), "em1": (1.0, 1.0)}, "nearest": {"em2": (1.0, 1.0), "em1": (1.0, 1.0)},
+                  "defaults": {"em2": (1.0, 1.0), "em1": (1.0, 1.0)}}
+        self.assertEqual(self.verdict(verdicts.em_bench(scores, ["close"], ["defaults"])), H)
+        self.assertEqual(self.verdict(verdicts.em_bench(scores, ["close", "nearest"], ["defaults"])), P)
+        self.assertEqual(self.verdict(verdicts.em_bench(scores, ["nearest"], ["close"])), N)
+
+    def test_em2_speed_decides(self):
+        self.assertEqual(self.verdict(verdicts.em2_speed([2.1, 1.8], [0.0, 0.01])), H)
+        self.assertEqual(self.verdict(verdicts.em2_speed([1.2, 1.8], [0.0, 0.01])), P)
+        self.assertEqual(self.verdict(verdicts.em2_speed([1.03, 0.79], [0.0, 0.0])), N)  # similar quality, slower
+
+    def test_moving_average_window(self):
+        free = {"w_ma_3": (0.1, 21), "w_ma_5": (0.2, 21)}
+        self.assertEqual(self.verdict(verdicts.moving_average_window(free, {"w_ma_3": (0.9, 21), "w_ma_5": (0.6, 21)},
+                                                                     "w_ma_5")), H)
+        self.assertEqual(self.verdict(verdicts.moving_average_window(free, {"w_ma_3": (0.6, 21), "w_ma_5": (0.6, 21)},
+                                                                     "w_ma_5")), P)
+        same = {"w_ma_3": (0.2, 21), "w_ma_5": (0.2, 21)}
+        # fewer walls is harm too
+        self.assertEqual(self.verdict(verdicts.moving_average_window(same, {"w_ma_3": (0.5, 12), "w_ma_5": (0.6, 21)},
+                                                                     "w_ma_5")), P)
+        self.assertEqual(self.verdict(verdicts.moving_average_window(same, same, "w_ma_5")), N)
+
+    def test_noise_sweep(self):
+        self.assertEqual(self.verdict(verdicts.noise_sweep(1.0, 4.0, 0.9, 0.95)), H)
+        self.assertEqual(self.verdict(verdicts.noise_sweep(1.0, 4.0, 0.96, 0.95)), P)
+        self.assertEqual(self.verdict(verdicts.noise_sweep(1.0, 1.1, 0.96, 0.95)), N)
+
+    def test_key_point_pair_and_interval_mode(self):
+        self.assertEqual(self.verdict(verdicts.key_point_pair(0.03, [0.35, 0.86, 0.5], [1.0, 1.0])), H)
+        self.assertEqual(self.verdict(verdicts.key_point_pair(0.03, [0.05, 0.86, 0.5], [1.0, 1.0])), P)
+        self.assertEqual(self.verdict(verdicts.interval_mode(0.010, 0.020, 0.05, 0.05)), H)
+        self.assertEqual(self.verdict(verdicts.interval_mode(0.010, 0.020, 0.05, 0.08)), P)
+        # no contrast under random noise: nothing for the three-valued noise to remove
+        self.assertEqual(self.verdict(verdicts.interval_mode(0.0152, 0.0124, 0.0685, 0.0689)), N)
+
+    def test_healing_full_size_and_rule22(self):
+        self.assertEqual(self.verdict(verdicts.wrong_key_points_heal(3, 0, 4)), H)
+        self.assertEqual(self.verdict(verdicts.wrong_key_points_heal(9, 0, 4)), P)
+        self.assertEqual(self.verdict(verdicts.wrong_key_points_heal(9, 2, 4)), N)
+        self.assertEqual(self.verdict(verdicts.rule21_full_size(1, [0, 0])), H)
+        self.assertEqual(self.verdict(verdicts.rule21_full_size(0, [0, 1])), N)
+        self.assertEqual(self.verdict(verdicts.rule22_saving(94.1, 100.0)), H)   # 5.9 %
+        self.assertEqual(self.verdict(verdicts.rule22_saving(99.0, 100.0)), P)   # 1 %: saves, not about 5 %
+        self.assertEqual(self.verdict(verdicts.rule22_saving(101.0, 100.0)), N)
+
+    def test_rules_28_19_37_and_the_save_system(self):
+        self.assertEqual(self.verdict(verdicts.rule28(0, 5)), H)
+        self.assertEqual(self.verdict(verdicts.rule28(1, 5)), P)
+        self.assertEqual(self.verdict(verdicts.map_e_loop_closure((1, 1.09), (3, 1.13), (0, 7.8))), H)
+        self.assertEqual(self.verdict(verdicts.map_e_loop_closure((1, 1.09), (1, 1.10), (0, 7.8))), P)
+        walls = {"save_off": (31, 36), "save_on": (36, 36), "rule35_only": (36, 36)}
+        self.assertEqual(self.verdict(verdicts.save_system(walls)), H)
+        self.assertEqual(self.verdict(verdicts.save_system({**walls, "rule35_only": (30, 36)})), P)
+        self.assertEqual(self.verdict(verdicts.pseudo_merge([448, 290], [0.05, 0.06], [0.5, 0.06], 0.1)), H)
+        self.assertEqual(self.verdict(verdicts.pseudo_merge([448, 290], [0.05, 0.06], [0.05, 0.06], 0.1)), P)
+        # a plane 1 not mapped at all is mis-mapped
+        self.assertEqual(self.verdict(verdicts.pseudo_merge([0], [0.05], [float("nan")], 0.1)), P)
+        self.assertEqual(self.verdict(verdicts.collinear(5, 36, 36, 0.06, 0.1)), H)
+        self.assertEqual(self.verdict(verdicts.collinear(0, 30, 36, 0.06, 0.1)), N)
+
+    def test_flat_time_first_corner_growth_frustum(self):
+        self.assertEqual(self.verdict(verdicts.flat_time((0.146, 0.0847), (0.167, 0.1))), H)
+        self.assertEqual(self.verdict(verdicts.flat_time((0.146, 0.0847), (0.167, 0.242))), P)
+        self.assertEqual(self.verdict(verdicts.first_corner([1.5, 1.6], [1.006], 3, 2, 4)), H)
+        self.assertEqual(self.verdict(verdicts.first_corner([1.5, 1.6], [1.006], 0, 0, 4)), P)
+        self.assertEqual(self.verdict(verdicts.grown_past([1.0, 1.008, 1.01])), H)
+        self.assertEqual(self.verdict(verdicts.grown_past([1.0, 1.2])), P)
+        self.assertEqual(self.verdict(verdicts.grown_past([0.99, 1.0])), P)
+        self.assertEqual(self.verdict(verdicts.frustum(7.15, 2.69, 9.79, 15.1, 15.0)), H)
+        self.assertEqual(self.verdict(verdicts.frustum(7.15, 7.0, 7.2, 12.0, 15.0)), N)
+
+    def test_plane_map_errors_skip_the_deliberate_duplicate(self):
+        planes_csv = pd.DataFrame({"true_wall": [0, 0, 1], "e_ends": [7.5, 0.1, 0.3], "e_ang_deg": [0.0, -0.5, 0.2],
+                                   "e_perp": [0.0, 0.02, -0.05], "n_obs": [150, 600, 400]})
+        off, angle, ends = planes.plane_map_errors(planes_csv)
+        self.assertEqual((off, angle), (0.05, 0.5))
+        self.assertAlmostEqual(ends, 0.2)  # walls 0 (its 600-observation plane) and 1
+        self.assertEqual(self.verdict(verdicts.plane_map(21, 21, 0.99, (0.0, 0.0, 0.05))), H)
+        self.assertEqual(self.verdict(verdicts.plane_map(21, 21, 0.99, (0.0, 0.0, 0.197))), P)
+        self.assertEqual(self.verdict(verdicts.plane_map(12, 21, 0.54, (0.27, 3.2, 0.57))), N)
+        self.assertEqual(self.verdict(verdicts.plane_map(21, 21, 0.5, (0.0, 0.0, 0.05))), P)  # pose mostly lost
+
+    def test_rule29_interval_checks_one_partial_plane(self):
+        self.assertEqual(self.verdict(verdicts.rule29(6, 0, 16, 17)), H)
+        self.assertEqual(self.verdict(verdicts.rule29(6, 1, 17, 17)), P)
+        self.assertEqual(self.verdict(verdicts.interval_checks((8, 10, 1.0, 0), (10, 10, 1.0, 2))), H)
+        self.assertEqual(self.verdict(verdicts.interval_checks((10, 10, 1.09, 0), (10, 10, 1.08, 2))), P)
+        self.assertEqual(self.verdict(verdicts.one_partial_plane(259, 251)), H)
+        self.assertEqual(self.verdict(verdicts.one_partial_plane(100, 60)), P)
+        self.assertEqual(self.verdict(verdicts.one_partial_plane(0, 0)), N)
 
 
 if __name__ == "__main__":

@@ -27,6 +27,7 @@ for name in paper6 paper7 paper8 e27-timing e29-em-compare e23-w-ma e28-noise-sw
   check "figure $name in the report" grep -q "src=\"figures/$name.png\"" "$pages"
 done
 check "claims.md has no row left unrun" bash -c "! grep -q 'not run' '$work/report/claims.md'"
+check "every claim judged (holds, partly or does not hold)" bash -c "! grep -q '| \*not judged\* |' '$work/report/claims.md'"
 check "the summary judges the EKF accuracy claim (Fig 147)" \
   grep -q "Relative vs EKF position error, figure eight (Fig 147).*class=\"\(holds\|partly\|fails\)\"" "$work/report/index.html"
 echo "$passed passed, $failed failed"

@@ -291,6 +291,22 @@ def under_sized(planes):
             if max(r for r, _ in v) < UNDER_SIZED]
 
 
+def plane_map_errors(planes):
+    """How a planes.csv map lies on the true walls: (largest distance of a plane off its wall's line, largest
+    angle off it in degrees, mean distance of the ends over the walls). The ends count only each wall's
+    plane with the most observations: a wall first seen in part is kept apart as a second plane on purpose
+    (thesis Fig 90), and that piece's ends would count a deliberate duplicate as an error."""
+    p = arrays(planes, ["true_wall", "e_ends", "e_ang_deg", "e_perp", "n_obs"])
+    if len(p["true_wall"]) == 0:
+        return float("nan"), float("nan"), float("nan")
+    best = {}
+    for wall, ends, n in zip(p["true_wall"], p["e_ends"], p["n_obs"]):
+        if wall not in best or n > best[wall][1]:
+            best[wall] = (ends, n)
+    return (float(np.max(np.abs(p["e_perp"]))), float(np.max(np.abs(p["e_ang_deg"]))),
+            float(np.mean([e for e, _ in best.values()])))
+
+
 def group_counts(runs):
     """{variant: groups at the end} of the E10 sweep; runs: [(variant, iterations table of its first seed)]."""
     return {name: int(arrays(frame, ["groups"])["groups"][-1]) for name, frame in runs}
