@@ -27,19 +27,17 @@ std::vector<std::string> default_rawlog_settings(const RawlogFiles& files);
 // (key -> value and why, for manifest.json's "planar_defaults"):
 //  - relative_point.use_odometry when most frames carry odometry: the dead reckoning predicts
 //    local matching and bridges frames with fewer than three points, as at Victoria Park.
-//    Without it Relative Point cannot follow a planar robot that turns fast between frames:
-//    kf-slam_demo.rawlog turns 22.5 degrees per frame at its corners, which moves a point at
-//    the 6 m range by 2.4 m while its neighbours are 0.76 m away (median); measured without,
-//    the pose came from unmapped points in 208 of 230 iterations, ATE 24 m; with it 0.009 m.
+//    Without it Relative Point cannot follow a planar robot that turns fast between frames: a
+//    turn of 22.5 degrees per frame (kf-slam_demo.rawlog's corners) moves a point at the 6 m
+//    range further than its neighbours are apart.
 //  - relative_point.global_bound and merge_bound (adaptive preset) no wider than half the
 //    landmarks' spacing in a frame (RawlogShape::point_spacing): re-finding or merging a point
 //    within a wider bound takes its neighbour for it. The noise-scaled bounds never go below
-//    the thesis's 2 units; on kf-slam_demo.rawlog (spacing 0.76 m) 2 m gave ATE 0.26 m, 0.38 m
-//    0.009 m.
+//    the thesis's 2 units, too wide for landmarks under a metre apart.
 //  - ekf2d.association known when every measurement carries a landmark id, as the 6D EKF's
-//    default (the thesis's baseline is given the true ids). With JCBB over kf-slam_demo's 70
-//    landmarks the planar EKF went over its 1 s time budget at about iteration 200 (ATE 0.23 m
-//    until then; with the ids 0.013 m over all 250).
+//    default (the thesis's baseline is given the true ids): JCBB over a log's many landmarks
+//    takes the planar EKF over its time budget.
+// Each default's effect on kf-slam_demo.rawlog is measured in docs/own-data-ekf.md.
 // Throws InputError at "algorithms" for ekf2d or ekf2d_no_odometry on a log that is not
 // planar: MRPT's planar filter would drop every pitch.
 LoadedScenario with_rawlog_shape(const LoadedScenario& loaded, const RawlogSource& source, nlohmann::json& record);
