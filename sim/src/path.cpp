@@ -10,7 +10,7 @@ namespace relslam::sim {
 namespace {
 
 // Robot axes from the direction of travel: +z forward along the tangent, +x left (horizontal),
-// +y completing a right-handed frame; no roll (spec 4.1.4).
+// +y completing a right-handed frame; no roll.
 Eigen::Matrix3d tangent_frame(const Eigen::Vector3d& forward) {
   const Eigen::Vector3d left = Eigen::Vector3d::UnitY().cross(forward).normalized();
   const Eigen::Vector3d up = forward.cross(left);

@@ -1,4 +1,4 @@
-// The issue-13 experiments of the Relative Plane half (E02, E09,
+// The experiments of the Relative Plane half (E02, E09,
 // E12, E15) through the whole harness: E02's pairs.csv and pair_sigma.csv, and what the thesis
 // says Rules 4, 19, 21 and 28 change (thesis 4.3.4-4.3.6), each against its switch.
 #include "test_support.hpp"

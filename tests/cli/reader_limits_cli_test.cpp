@@ -1,5 +1,5 @@
-// Damaged inputs that ran for minutes, took more than a gigabyte or gave NaN with exit 0 (issue
-// 34): each must now stop with exit 2 and a located message, within 20 s and 1 GB. Most tests
+// Damaged inputs that ran for minutes, took more than a gigabyte or gave NaN with exit 0: each
+// must now stop with exit 2 and a located message, within 20 s and 1 GB. Most tests
 // build their input here; the ones named Repro3* run the found inputs of
 // ../shared/reliability/repro3 in place and skip when that folder is absent.
 

@@ -8,7 +8,7 @@
 namespace relslam {
 namespace {
 
-// The goal for S-EKF-F8, one run: the relaxed Relative map at or below the EKF's, in
+// The goal for S-EKF-F8, one run: the relaxed Relative map at or below the EKF's, in
 // final mean landmark error and in ATE (seed 1, measured: 0.212 against 0.222, ATE 0.460
 // against 0.506). Without the relaxation the same run ends far above (measured 0.437, ATE 0.542).
 TEST(RelaxedFigureEight, TheRelativeMapEndsAtOrBelowTheEkfInOneRun) {

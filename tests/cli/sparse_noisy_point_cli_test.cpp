@@ -28,7 +28,7 @@ struct Case {
   // (measured when the preset was built), so a regression of the method, not seed noise, fails it.
   double max_final_mean_error;
   // Duplicates, and static landmarks RltBinning took for dynamic ones, as shares of the map
-  // (the issue asks below 1 %); every landmark seen 100+ times is on the map. Before the adaptive
+  // (the goal: below 1 %); every landmark seen 100+ times is on the map. Before the adaptive
   // preset predicted mapped points from the map (rlt_mapper.cpp, local_candidate) two landmarks
   // 0.7-2 apart swapped at sigma >= 0.2 and stayed swapped: 9 duplicates of 539 at sigma 0.3,
   // their partners off the map or binned as dynamic. Measured now: 1 duplicate (sigma 0.3, of
@@ -208,7 +208,7 @@ TEST(SparseNoisyPoint, RenderPlacesAMovedMapFrameAsTheRunDid) {
 // after 128, 3 landmarks on the map, ATE 4.63 against the EKF's 1.39; now 1490, 24 and 0.83 with
 // the two-anchor groups' rotation prior averaged over their iterations, 1.43 from one iteration's
 // pose) and seed 3 is never held again (before: 164 held iterations, ATE 21.4 against 2.89; now
-// none and 1.88). The bound is the issue's goal on these streams: RP's ATE within 1.5 times the
+// none and 1.88). The bound is the goal on these streams: RP's ATE within 1.5 times the
 // EKF's (known ids, the same observations).
 struct StalledSeed {
   int seed;
@@ -307,7 +307,7 @@ INSTANTIATE_TEST_SUITE_P(IssueSixteen, SparsePointChain, ::testing::Values(3, 4,
 // in height with 3 landmarks on the map (ATE 3.02, EKF 1.00). With the turn rate measured over
 // the last registered rotations (turn_rate_window), registrations turning more than
 // max_turn_deg from the prediction rejected and the provisional chain's rotations weighed with
-// the prediction (provisional_rotation_weight): 7.57, 8.05 and 1.41. The bound is the issue's
+// the prediction (provisional_rotation_weight): 7.57, 8.05 and 1.41. The bound is the
 // goal (1.5 times the EKF's ATE on the same observations) for seed 2 and twice the EKF's for
 // seed 1 (measured 1.61 times: its map is bent before the flips began; with the root rotation
 // fit, root_rotation_window, 0.64). Seed 5 at sigma 0.2 (3 landmarks on the map, the pose on
@@ -358,7 +358,7 @@ INSTANTIATE_TEST_SUITE_P(IssueSixteen, SparsePointTurns,
 // to 1000, which grew into 10-20 units of height error far from the start (ATE 13.1, EKF
 // 8.13); seed 4 at density 10, sigma 0.2: ATE 1.85 against 0.62. With the root group's rotation
 // fitted over its first 30 iterations (root_rotation_window, rotation_fit.hpp) measured 5.75
-// and 0.84. The bound is the issue's goal: RP's ATE within 1.5 times the EKF's on the same
+// and 0.84. The bound is the goal: RP's ATE within 1.5 times the EKF's on the same
 // observations.
 struct RootCase {
   int density;

@@ -232,7 +232,7 @@ TEST(EmExtraction, Em2LeftoversJoinTheirPlane) {
   // (left_fraction of the frame), so SegComp missed the wall or the plane ended short:
   // p-em-office-noise iteration 2225 (Map D, wall 5: 0.7 long, 40 points; seeded near the top
   // of its 2.5 height, 6 growth rounds stopped 0.5–0.7 short of the bottom) and
-  // p-em-room-noise iteration 2874 (Map E, wall 5: 1 long, 65 points) at the spec's 6 rounds;
+  // p-em-room-noise iteration 2874 (Map E, wall 5: 1 long, 65 points) at the first default of 6 rounds;
   // p-em-room iteration 510 (Map E, wall 3: 3.8 in view) at 20 rounds, where the plane settled
   // over its seed's grid query and the last 0.52 of the piece, 28 points, was left.
   // Em2Options::absorb_passes gives those leftovers to the plane that accepts them.

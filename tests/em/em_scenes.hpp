@@ -1,7 +1,7 @@
 #pragma once
 // Test scenes for EM on simulated point frames: small wall layouts, Maps D and E of the thesis
 // (the same walls as scenarios/maps/d_office_loop.json and e_motion_room.json, built by the
-// spec's rule because this test program sits below eval's map reader), and the per-wall scores
+// map files' rule because this test program sits below eval's map reader), and the per-wall scores
 // of an extraction against the sensor's truth (EM quality).
 
 #include "relslam/em/options.hpp"

@@ -19,7 +19,7 @@ TEST(EmOptions, DefaultsAreValidAndFollowSpecSection46ButForTheDeviations) {
   EXPECT_EQ(o.em1.seeds_per_iteration, 4);
   EXPECT_EQ(o.em2.grid_cell, 3.0);
   EXPECT_EQ(o.em2.grid_overlap, 1.5);
-  // Not the spec's 6: enough rounds, e_exp each, to cross a seed's grid query, C + 2·O; the
+  // Not the first default of 6: enough rounds, e_exp each, to cross a seed's grid query, C + 2·O; the
   // leftovers then join their plane (EmExtraction.Em2LeftoversJoinTheirPlane).
   EXPECT_EQ(o.em2.grow_rounds, 20);
   EXPECT_GE(o.em2.grow_rounds * o.bound_expansion, o.em2.grid_cell + 2 * o.em2.grid_overlap - 1e-9);

@@ -365,11 +365,11 @@ TEST(PlaneScenario, MapDSmallFrustumWholeRunIsExactWhereverThePoseIsValid) {
   EXPECT_LT(all.heading, kNoiseFree);
   EXPECT_EQ(std::ranges::count_if(run.mapped_of_wall, [](const auto& w) { return w.second > 0; }), 36);
   // Key points right at every iteration; every plane exact at its largest size seen, and every
-  // wall whose two real ends were ever in view on the map at full length (len_ratio 1 ± 1e-6, the
-  // issue's "every wall at its full length after the loop closes"). The small frustum never shows
+  // wall whose two real ends were ever in view on the map at full length (len_ratio 1 ± 1e-6:
+  // every wall at its full length after the loop closes). The small frustum never shows
   // the far end of walls 20, 25, 32 and 35, not once in the run (at most 3.40 of 4 and 2.40 of 3
   // in view), so no map can know their length: they are mapped at their largest size seen (Rule
-  // 17, spec A47), their key-point end exact. Wall 3's first piece from the start stays on the map
+  // 17), their key-point end exact. Wall 3's first piece from the start stays on the map
   // beside the plane that maps it whole (the duplicate the thesis keeps, E15).
   expect_one_end_exact(run, map);
   EXPECT_EQ(walls_with_an_end_never_seen(run), (std::set<int>{20, 25, 32, 35}));

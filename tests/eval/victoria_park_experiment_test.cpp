@@ -110,7 +110,7 @@ TEST(VictoriaParkExperiment, TheWholeLogRunsEndToEndWhenBridgedByDeadReckoning) 
 
 // Dead reckoning checks and stands in for weak registrations (odometry_max_turn_deg,
 // odometry_max_shift), and the global bound is 2.5 m: scenarios/victoria-park-bridged.json
-// follows GPS over the whole log within the goal of 5 m with the relaxation off and on
+// follows GPS over the whole log within the goal of 5 m with the relaxation off and on
 // (measured 2.36, 2.58 and 1.78 m; the EKF with odometry 1.50 m; before the gate, 83-137 m).
 TEST(VictoriaParkExperiment, TheBridgedWholeLogFollowsGpsWithinFiveMetresWithAndWithoutRelaxation) {
   SKIP_WITHOUT_DATA();

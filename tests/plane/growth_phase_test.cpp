@@ -10,7 +10,7 @@
 namespace relslam::plane {
 namespace {
 
-const GrowthPhaseBounds kBounds;  // spec defaults: w_ma 5, h 0.03, n_min_cmp 3
+const GrowthPhaseBounds kBounds;  // defaults: w_ma 5, h 0.03, n_min_cmp 3
 
 // Grow by `rate` per iteration for `grow` iterations, hold for `plateau`, shrink for `shrink`,
 // plus seeded Gaussian noise of `sigma` per sample.

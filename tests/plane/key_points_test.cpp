@@ -228,7 +228,7 @@ TEST(ChooseKeyPoints, SymmetricParallelPlanesAreAmbiguousWithTheRightOffset) {
   }
 }
 
-// The same hallway with the spec's noise: rotation about the wall's midpoint moves an assumed
+// The same hallway with the small noise of E08: rotation about the wall's midpoint moves an assumed
 // midpoint built from the far end (about 1 from the centre of rotation) less than one built from
 // the near cut end, and the cut end carries its own jitter — the cut diagonal's σ comes out about
 // 1.5× the real one's, beyond r_tie = 0.3, so Rule 15 often does not fire. It never picks the

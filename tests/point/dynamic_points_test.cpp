@@ -18,7 +18,7 @@ sim::SimOptions s_dyn(int movers) {
 
 PointSlamOptions density_25() {
   PointSlamOptions o;
-  o.final_group.prev_min = 8;  // spec A12: PrevGroupMin 20 cannot be met at density 25
+  o.final_group.prev_min = 8;  // PrevGroupMin 20 cannot be met at density 25
   return o;
 }
 

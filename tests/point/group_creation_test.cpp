@@ -97,7 +97,7 @@ TEST(GroupCreation, FinalGroupTakesThePointsOverAndTheRedundantTemporaryGroupIsR
   EXPECT_EQ(final_group.iterations_used(), 61);
   EXPECT_EQ(feed.map.stats.final_created, 1);
   for (PointId id : ids) {
-    EXPECT_EQ(feed.map.points[id].owner, 1) << "final groups take their new members (spec 5.6)";
+    EXPECT_EQ(feed.map.points[id].owner, 1) << "final groups take their new members (thesis 6.4)";
     EXPECT_TRUE(feed.map.points[id].final_grouped);
   }
   expect_at_truth(feed, ids);

@@ -14,7 +14,7 @@ constexpr double kIncline = 20.0;
 Eigen::Vector2d top_view(const CenterlinePoint& p) { return {p.position.x(), p.position.z()}; }
 
 TEST(FigureEight, RadiusFollowsFromTheLoopLength) {
-  // Spec 4.1.1: L = 2r(π + π/3) + 4√3 r = 15.30577 r, so r = 74.808 for L = 1145.
+  // L = 2r(π + π/3) + 4√3 r = 15.30577 r, so r = 74.808 for L = 1145.
   EXPECT_NEAR(FigureEight(kLength, kIncline).radius(), 74.808, 1e-3);
 }
 

@@ -90,7 +90,7 @@ TEST(PlaneSensor, FrustumModeReportsTheClippedPartAndMarksCutEnds) {
 }
 
 TEST(PlaneSensor, OutputFollowsMapOrder) {
-  // Nearer walls listed last still come last (spec A38).
+  // Nearer walls listed last still come last (Fig. 94).
   const PlanarWorld world = world_of({{{6, -1}, {6, 1}}, {{4, -1}, {4, 1}}, {{2, -1}, {2, 1}}});
   const PlaneSimFrame f = look(exact(), world);
   ASSERT_EQ(f.truth.planes.size(), 3u);

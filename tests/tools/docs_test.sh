@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Docs.BuildWithoutWarnings: the documentation site builds with `mkdocs build --strict` (no
 # warning, no broken internal link) into a scratch folder, the generated scenario-keys page lists
-# every key `relslam keys` prints, README.md stays under 200 lines, and neither README.md nor
-# docs/ cites the internal design notes (../shared/specs, "spec §").
+# every key `relslam keys` prints, README.md stays under 200 lines, and neither README.md, docs/,
+# the code, the tests nor the scenario files cite the internal design notes or issue numbers.
 #   docs_test.sh RELSLAM SOURCE_DIR SCRATCH_DIR
 # Exit 77 (skipped) when mkdocs is not installed.
 set -euo pipefail
@@ -15,6 +15,16 @@ if [ "$lines" -ge 200 ]; then
 fi
 if hits=$(grep -rn -e '\.\./shared/specs' -e 'spec §' "$src/README.md" "$src/docs" --include='*.md' --include=README.md); then
   echo "FAIL: README.md or docs/ cites the internal design notes (cite the thesis instead):"; echo "$hits"; fail=1
+fi
+# Nor do the code, the tests or the scenario files: no design-note section ("spec §5.8", "spec A38",
+# "(spec 4.1.2)"), no issue number. The Victoria Park data's default folder under ../shared is a path,
+# not a citation.
+if hits=$(grep -rnE -e '\bspecs?( [a-z_]+\.md)? ?(§|A[0-9]|[0-9]+\.[0-9])' -e "\bspec's\b" -e '\b[Ii]ssues? #?[0-9]+' \
+            -e '\.\./shared/specs' "$src/libslam" "$src/sim" "$src/eval" "$src/tests" "$src/scenarios" "$src/scripts" \
+            "$src/bench" --include='*.cpp' --include='*.hpp' --include='*.py' --include='*.sh' --include='*.json' |
+          grep -v -e 'tests/tools/docs_test.sh' -e 'scripts/docs.sh'); then
+  echo "FAIL: code, tests or scenarios cite the internal design notes or an issue (cite the thesis instead):"
+  echo "$hits"; fail=1
 fi
 
 if ! command -v mkdocs >/dev/null 2>&1; then

@@ -209,7 +209,7 @@ class MapReader {
     const std::string field = element("walls", i);
     object(value, field);
     only_keys(value, field, {"a", "b", "facing", "one_sided", "scripted_windows"});
-    // Position in the file is the wall's id: map order is output order (spec A38).
+    // Position in the file is the wall's id: map order is output order, as the thesis's simulator (Fig. 94).
     sim::Wall wall = sim::Wall::between(static_cast<int>(i), point(member(value, field, "a"), join(field, "a")),
                                         point(member(value, field, "b"), join(field, "b")));
     wall.height = height;

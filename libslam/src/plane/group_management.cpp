@@ -190,7 +190,7 @@ bool GroupManagement::make_new_xpoint(PlaneId plane, RelativePlaneStep& result) 
     const std::vector<XPointId>& next = state_.xpoints_[x].adjacent();
     scratch_.stack_.insert(scratch_.stack_.end(), next.rbegin(), next.rend());
   }
-  return false;  // retried next iteration (spec A22)
+  return false;  // retried next iteration
 }
 
 bool GroupManagement::link_to_new_xpoint(XPointId from, PlaneId plane, std::vector<PlaneId>& linking) {
@@ -222,7 +222,7 @@ bool GroupManagement::link_to_new_xpoint(XPointId from, PlaneId plane, std::vect
     return true;
   }
   // Rule 8: a second plane seen with both; among the equally recent ones the farthest from the
-  // first, for a better-conditioned average (spec A21: the thesis's "distance").
+  // first, for a better-conditioned average (the thesis's "distance").
   for (std::size_t a = 0; a + 1 < scratch_.candidates_.size(); ++a) {
     const RltPlane& first = state_.planes_[scratch_.candidates_[a]];
     RltPlaneInterval::minimum_interval(first.intervals(), q.intervals(), scratch_.scratch_interval_);

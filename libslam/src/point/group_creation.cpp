@@ -28,7 +28,7 @@ CreationReport GroupCreation::create_groups(RltMap& map, int k, const PointSlamO
     if (!level_options(options, level).enabled) continue;
     RltUngroupedList& waiting = map.list(level);
     const int look_ahead = level_options(options, level).look_ahead;
-    // Process every entry that is ready; the list is in start order (spec 5.6, A40).
+    // Process every entry that is ready; the list is in start order (thesis 6.4).
     while (!waiting.empty() && k >= waiting.front().start + look_ahead) {
       const RltUngroupedList::Entry entry = waiting.front();
       waiting.pop_front();

@@ -107,7 +107,7 @@ bool GroupPlanner::keep_static(GroupPlan& plan, PointId c, int c0, int k, const 
   }
   outcome.binning_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   plan = std::move(kept);
-  // Enough static points left (spec A21): c itself, three anchors to register (two with two-point
+  // Enough static points left: c itself, three anchors to register (two with two-point
   // registration), NextGroupMin new.
   return c_static && (plan.root() || anchors >= fewest_anchors) && fresh >= level.next_min;
 }

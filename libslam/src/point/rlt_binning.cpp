@@ -42,7 +42,7 @@ double binning_threshold(std::vector<double> s, const BinningOptions& o) {
   for (std::size_t j = 0; j + 1 < s.size(); ++j)
     if (s[j + 1] - s[j] > o.abs_gap && s[j + 1] - s[j] > o.rel_gap * s[j])
       return s[j] + (o.threshold_margin ? 0.5 * gap_at(s[j]) : 0.0);
-  // No gap: all pairs look alike, so all are taken as correlated (spec A19; with mostly
+  // No gap: all pairs look alike, so all are taken as correlated (with mostly
   // uncorrelated points this is the thesis's "threshold too high" artefact, Figs 111-112).
   return s.back() + (o.threshold_margin ? 0.5 * gap_at(s.back()) : 0.0);
 }

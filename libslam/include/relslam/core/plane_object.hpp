@@ -54,7 +54,7 @@ struct PlaneObject {
   PlaneObject transformed(const PlanarPose& a_T_b) const;
 };
 
-// One iteration's planes, in the sensor's output order (spec A38: map order, deterministic).
+// One iteration's planes, in the sensor's output order (map order, deterministic, as the thesis's simulator: Fig. 94).
 struct PlaneFrame {
   int iteration = 0;
   std::vector<PlaneObject> planes;

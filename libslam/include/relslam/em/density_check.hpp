@@ -18,7 +18,7 @@ namespace relslam::em {
 // −t, each direction until its new strip's density falls below em2.density_fraction × the
 // central square's (an empty strip always stops). A strip's density is taken over the depth
 // its farthest point reaches into it, so the partly filled strip at a wall's end does not cut
-// off the end [C: the spec's full-strip density trimmed up to a step off every wall end, and
+// off the end [C: a full-strip density trimmed up to a step off every wall end, and
 // the dropped points seeded small planes at corners]. Points outside the final rectangle are
 // dropped. With no seed point, or an empty central square, every point is kept.
 std::vector<int> density_check(std::span<const Eigen::Vector3d> points, const EmPlane& plane,

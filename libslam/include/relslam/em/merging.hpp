@@ -11,7 +11,7 @@
 namespace relslam::em {
 
 // Similar plane equations (normals within merge_angle, either sign; each plane within
-// merge_offset_factor · inlier_distance of the other's centroid — a deviation from the spec's
+// merge_offset_factor · inlier_distance of the other's centroid — a deviation from the planned
 // offsets at the origin, see merging.cpp) and overlapping boxes, each widened by
 // bound_expansion.
 bool mergeable(const EmPlane& a, const EmPlane& b, const EmOptions& options);

@@ -2,7 +2,7 @@
 // Every constant of EM plane extraction (thesis 3.5.4), with its
 // default and its source, and beside each struct its describe(): key name, help and checks per
 // field (core/option_fields.hpp). Tags: [T] thesis-stated (often only the concept: the thesis
-// gives no numbers), [R] the spec's recommendation, [C] chosen here. Eigen-free, no I/O.
+// gives no numbers), [R] the design's recommendation, [C] chosen here. Eigen-free, no I/O.
 
 #include "relslam/core/option_fields.hpp"
 #include "relslam/core/option_issue.hpp"
@@ -171,7 +171,7 @@ struct EmOptions {
   double merge_angle_rad = 8.0 * std::numbers::pi / 180.0;
   double merge_offset_factor = 2.0;
   AssignMode assign_mode = AssignMode::All;  // EM1's E-step [T both.3 default All]
-  RectangleFit rectangle = RectangleFit::TangentProjection;  // [R default, spec A9]
+  RectangleFit rectangle = RectangleFit::TangentProjection;  // [R default]
   // RotationSearch: the first pass steps through 180° by this; each later pass searches ±one
   // step of the pass before at a tenth of its step (10°, 1°, 0.1° with 3 passes) [R].
   double search_step_rad = 10.0 * std::numbers::pi / 180.0;

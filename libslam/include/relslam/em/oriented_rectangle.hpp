@@ -26,7 +26,7 @@ struct OrientedRectangle {
 Eigen::Vector2d horizontal_tangent(const Eigen::Vector3d& normal);
 
 // The points' extent along the fitted plane's horizontal tangent and along y, the line through
-// the centroid: the spec's simplification, exact for vertical walls [R].
+// the centroid: a simplification, exact for vertical walls [R].
 OrientedRectangle tangent_rectangle(std::span<const Eigen::Vector3d> points, std::span<const int> indices,
                                     const Eigen::Vector3d& normal, const Eigen::Vector3d& centroid);
 

@@ -40,7 +40,7 @@ ExtractedPlanes to_plane_objects(const EmResult& result, const EmOptions& option
 // Evaluation only — the extractors never call it: the true wall of an
 // extracted plane is the majority wall id of its points (ties: the smaller id; -1 for no
 // labelled point), and an end is a real wall end when one of that wall's true ends (robot frame)
-// lies within `end_tolerance` of it (spec: max(0.5·s_pt, 3σ_pt)).
+// lies within `end_tolerance` of it (max(0.5·s_pt, 3σ_pt)).
 struct TrueWallEnds {
   int wall_id = -1;
   Eigen::Vector2d a = Eigen::Vector2d::Zero();  // robot (x, z)

@@ -29,7 +29,7 @@ enum class Rule21Order : unsigned char {
 };
 
 // The order of a new group's comparison chain (Rule 2: a noise-free map does not depend on it;
-// spec E31 checks that by running both).
+// experiment E31 checks that by running both).
 enum class ChainOrder : unsigned char {
   Creation,  // planes[0], the base, is the RltPlane created first (thesis 4.3.2, A38) [T]
   Reversed,  // the last created first [C, for E31]
@@ -289,7 +289,7 @@ struct RelativePlaneOptions {
   // Iterations a pair is compared over (Figs 74/75) [T: Pair].
   IntervalMode interval_mode = IntervalMode::Pair;
   // Which growth-phase piece a pair is compared over: Rule 18's most iterations, or the
-  // walkthrough's largest total size (spec A13) [T: most_iterations].
+  // walkthrough's largest total size [T: most_iterations].
   IntervalChoice interval_choice = IntervalChoice::MostIterations;
   // Order of each new group's chain; only E31 changes it [T: creation].
   ChainOrder chain_order = ChainOrder::Creation;

@@ -78,7 +78,7 @@ class RltXPoint {
   XPointId id() const { return id_; }
   int created_iteration() const { return created_iteration_; }
   // The comparison chain: planes[i−1] is compared with planes[i]; planes[0] is the base.
-  // First in RltPlane creation order (spec A38: the order the sensor reported them).
+  // First in RltPlane creation order (the order the sensor reported them).
   const std::vector<PlaneId>& planes() const { return chain_; }
   // Groups linked to this one either way (EnumXPConection).
   const std::vector<XPointId>& adjacent() const { return adjacent_; }

@@ -62,7 +62,7 @@ void wait_for_group(RltMap& map, PointId id, GroupLevel level, int start, const 
                     bool restart = false);
 
 // Flags a point dynamic (thesis 6.5.3): off the map and out of every ungrouped list, anchor set
-// and global match (spec A22), and every alive group with it in its basis is retired (a moving
+// and global match, and every alive group with it in its basis is retired (a moving
 // basis point gives the group no consistent frame). It stays locally matchable, so a mover
 // keeps one RltPoint. Returns false if it was flagged already.
 bool mark_dynamic(RltMap& map, PointId id);

@@ -52,7 +52,7 @@ class GroupPlanner {
  private:
   bool previously_mapped(const RltPoint& p, const LevelContext& level, int c0) const;
   // Thesis 6.4.3 step 5: keeps the static members (order kept), reports the dynamic ones;
-  // false when too few static ones remain (spec A21): fewer than fewest_anchors anchors.
+  // false when too few static ones remain: fewer than fewest_anchors anchors.
   bool keep_static(GroupPlan& plan, PointId c, int c0, int k, const GroupLevelOptions& level, int fewest_anchors,
                    const std::vector<RltPoint>& points, const BinningOptions& binning, PlanOutcome& outcome) const;
   std::vector<Eigen::Vector3d> basis_positions(const std::vector<PointId>& members, const std::vector<RltPoint>& points,

@@ -60,7 +60,7 @@ void describe(OptionsOf<GroupLevelOptions> auto& l, auto& f, std::string_view wh
 }
 
 // Temporary level: a short look-ahead so new points are mapped within a few iterations
-// (thesis 6.5.5 "a few iterations"); too short a window to bin [C values, spec A11, I].
+// (thesis 6.5.5 "a few iterations"); too short a window to bin [C values].
 inline GroupLevelOptions temporary_level_defaults() {
   return {.enabled = true,
           .look_ahead = 10,
@@ -87,7 +87,7 @@ inline GroupLevelOptions final_level_defaults() {
 
 // Level 3 (thesis 6.5.5): a constant-free level. When a point has gone out of view,
 // a group is formed over its first visible run from the points seen in it: three mapped ones
-// to register it (level-3 grouped first, then final, then temporary [C: the spec falls back on
+// to register it (level-3 grouped first, then final, then temporary [C: the first design fell back on
 // final only, which Victoria Park's sparse scans rarely form]), then every other one that adds
 // usable observations (iterations in which all members were seen) rather than losing them.
 struct Level3Options {
@@ -139,7 +139,7 @@ struct PointSlamOptions {
   // match_look_back iterations ("a few", thesis 6.2.3) [C].
   int match_look_back = 3;
   // Local matching bound, units: above the largest motion of a static point between frames
-  // (0.52 on the figure eight) plus noise [C, spec A9].
+  // (0.52 on the figure eight) plus noise [C].
   double local_bound = 1.2;
   // Deviation (beyond the thesis): predict where each local candidate is now from the recent
   // frame-to-frame motion (itself fitted to the matches, no pose or odometry involved), fit the
@@ -155,7 +155,7 @@ struct PointSlamOptions {
   // so a few wrong first-pass matches cannot tilt it [C].
   double motion_outlier_cut = 3.0;
   // Global matching bound, units: room for the map error accumulated since a place was last
-  // seen (loop closure) [C, spec A9].
+  // seen (loop closure) [C].
   double global_bound = 2.0;
   // Local OVLPQuadTree cell, units; the thesis's "small quads" variant uses 1.5 [C, A32].
   // Must be at least local_bound (the cell overlap).

@@ -33,7 +33,7 @@ struct MatchResult {
 };
 
 // Keeps scratch space and the recent frame-to-frame motions between iterations.
-// One-to-one within an iteration: candidate pairs are taken closest first (spec A10), ties by
+// One-to-one within an iteration: candidate pairs are taken closest first, ties by
 // observation then id order, so the result never depends on hash or memory order.
 class PointMatcher {
  public:

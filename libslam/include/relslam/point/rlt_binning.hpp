@@ -53,7 +53,7 @@ struct BinningOptions {
 
 // The scenario keys of BinningOptions (relative_point.binning.*): help and checks per field.
 void describe(OptionsOf<BinningOptions> auto& o, auto& f) {
-  f.choice("pairing", o.pairing, "bins meet disjointly per round, or every bin initiates (spec 5.7)",
+  f.choice("pairing", o.pairing, "bins meet disjointly per round, or every bin initiates (thesis 6.5.3)",
            {BinPairing::Disjoint, BinPairing::EveryBin});
   f.field("abs_gap", o.abs_gap, "threshold gap, absolute part, units; adaptive: scaled with the noise", at_least(0.0));
   f.field("rel_gap", o.rel_gap, "threshold gap, relative part; adaptive: scaled with the noise", at_least(0.0));

@@ -6,7 +6,7 @@
 namespace relslam::point {
 
 // Invariant: runs are sorted, disjoint and separated by at least one missing iteration
-// (consecutive iterations always share a run), so counts are exact (spec A44).
+// (consecutive iterations always share a run), so counts are exact.
 class RltInterval {
  public:
   struct Run {

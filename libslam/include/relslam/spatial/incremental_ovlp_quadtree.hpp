@@ -12,7 +12,7 @@
 namespace relslam::spatial {
 
 // The overlapping-cell rule of OVLPQuadTree over x and z, on an unbounded sparse grid (a
-// hash map of cells: the map's extent is not known in advance, spec A33). Stores ids only.
+// hash map of cells: the map's extent is not known in advance). Stores ids only.
 class IncrementalOVLPQuadTree final : public GlobalIndex {
  public:
   IncrementalOVLPQuadTree(double cell_size, double overlap);

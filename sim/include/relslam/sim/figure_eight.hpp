@@ -6,7 +6,7 @@
 namespace relslam::sim {
 
 // Two circles of radius r with centres (±2r, 0) in the top view, joined by their common
-// tangents through the origin (spec 4.1.1, A1: a bounded turn rate and distinct straight and
+// tangents through the origin (a bounded turn rate and distinct straight and
 // turning phases, which matters because the thesis ties errors to direction changes).
 // From the crossing the robot heads down-right (thesis 6.6.1), turns counter-clockwise
 // round the right circle, crosses the origin, turns clockwise round the left circle and

@@ -25,18 +25,18 @@ enum class FarCap {
 std::string_view to_string(FarCap cap);
 std::optional<FarCap> parse_far_cap(std::string_view name);
 
-// A horizontal trapezoid extruded vertically (spec 4.5, A6) in the robot frame
+// A horizontal trapezoid extruded vertically in the robot frame
 // (+x left, +y up, +z forward). Culling is applied to the *noisy* points (thesis 4.2.1): with a
 // symmetric height band this reproduces the thesis's unbiased vertical behaviour (6.6.1).
 struct Frustum {
   double near = 1.0;   // units; closer points are not seen [C]
   double far = 100.0;  // units; forward limit [C], gives ~0.97·density visible points
-  // Half the horizontal field of view; 45° gives the 90° view of the spec [C].
+  // Half the horizontal field of view; 45° gives a 90° view [C].
   double half_angle_rad = std::numbers::pi / 4.0;
   // Vertical half-extent |y| <= half_height; equal to the band's half height so culling
   // is symmetric (thesis 6.6.1) [I].
   double half_height = 5.0;
-  FarCap far_cap = FarCap::Plane;  // [C] the spec's prism
+  FarCap far_cap = FarCap::Plane;  // [C] a prism
 
   // The tests with the trigonometry done once: the simulator runs them millions of times.
   struct Prepared {

@@ -144,7 +144,7 @@ long long iteration_count(const SimOptions& options);
 // Length of one figure-eight loop at this scale, units.
 double scaled_loop_length(const SimOptions& options);
 // Arc length advanced per iteration: one loop in scale·iterations_per_loop iterations,
-// constant speed (spec 4.1.2).
+// constant speed.
 double step_length(const SimOptions& options);
 // Length of the centre line the point band is generated along (thesis 6.6.2): one loop, or the
 // straight run plus line_margin.

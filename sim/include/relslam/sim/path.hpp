@@ -10,7 +10,7 @@
 namespace relslam::sim {
 
 // Invariant: world_T_robot(0) is exactly the identity. Everything built on the path is moved
-// by the inverse of the start pose (spec 4.1.5), so truth, the relative map (anchored to the
+// by the inverse of the start pose, so truth, the relative map (anchored to the
 // first observations, thesis 6.3.3) and the EKF map (its frame is the first robot pose) all
 // share one frame and need no alignment.
 class Path {
@@ -21,7 +21,7 @@ class Path {
   ~Path();
 
   int iterations() const { return iterations_; }
-  // Arc length advanced per iteration: constant speed (spec 4.1.2).
+  // Arc length advanced per iteration: constant speed.
   double step_length() const { return step_; }
   // Arc length at iteration k (wrapped for loops; 0 for a stationary robot).
   double arc_length(int k) const;

@@ -30,7 +30,7 @@ struct PathOperation {
 };
 
 struct PathProgram {
-  PlanarPose start;  // world_T_robot at iteration 0; the algorithm is given it (Rule 4, spec A48)
+  PlanarPose start;  // world_T_robot at iteration 0; the algorithm is given it (Rule 4)
   // Distance per iteration: 1.5 units/s at the thesis's 30 it/s [R].
   double speed = 0.05;
   // Heading change per iteration while turning [R].

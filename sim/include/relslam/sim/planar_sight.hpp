@@ -19,7 +19,7 @@ inline constexpr long long kSightFrameWork = 16;
 
 // The first iteration at which the map's sensor, without noise, reports at least `count`
 // planes; none if the path never sees that many at once. A map whose path never sees two walls
-// together gives the algorithm nothing to relate (Rule 7; spec A26).
+// together gives the algorithm nothing to relate (Rule 7).
 //
 // Cost grows with the map, not the path: walls out of the sensor's reach of an operation's
 // bounding box are set aside for the whole operation, and a sensor frame is made only where

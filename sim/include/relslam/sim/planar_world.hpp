@@ -66,7 +66,7 @@ struct Wall {
 bool segment_crosses_wall(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Wall& wall);
 
 // The map. Its order is the sensor's output order: the thesis's comparison order inside X0
-// followed the order in which the simulator stored planes 1–5 (Fig. 94; spec A38) [T].
+// followed the order in which the simulator stored planes 1–5 (Fig. 94) [T].
 struct PlanarWorld {
   std::vector<Wall> walls;
 };

@@ -45,7 +45,7 @@ struct PlaneSensorOptions {
   // extent [R].
   double min_length = 0.05;
   PlaneNoiseOptions noise;
-  // Map order is the output order (spec A38) [T]; shuffling is an option only [R].
+  // Map order is the output order (Fig. 94) [T]; shuffling is an option only [R].
   bool shuffle = false;
 };
 

@@ -60,7 +60,7 @@ class RandomSequence {
 };
 
 // Fisher–Yates on two parallel lists together (a sensor's output and its truth), from `rng`: the
-// sensors' unordered output (spec A38).
+// sensors' unordered output.
 template <class A, class B>
 void shuffle_together(RandomSequence& rng, std::vector<A>& a, std::vector<B>& b) {
   for (std::size_t i = a.size(); i > 1; --i) {

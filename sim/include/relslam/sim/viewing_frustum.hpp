@@ -21,7 +21,7 @@ enum class FrustumShape {
   // failure" of Fig. 89 and the small error of Fig. 105 [T].
   Planar,
   // Sector {|p| <= far, |atan2(z, x)| <= α, x >= near}: one way to "expand the frustum so the
-  // problem does not occur", the thesis's fix for Fig. 89 (spec A36) [R].
+  // problem does not occur", the thesis's fix for Fig. 89 [R].
   Radial,
 };
 std::string_view to_string(FrustumShape shape);
@@ -42,7 +42,7 @@ struct SegmentClip {
 struct ViewingFrustum {
   FrustumShape shape = FrustumShape::Planar;  // the thesis's trapezoid [T]
   // Half the horizontal field of view; must stay below 90° so the footprint is convex and
-  // lies in front of the robot. Presets give the spec's "small" value [R].
+  // lies in front of the robot. Presets give the "small" value [R].
   double half_angle_rad = 30.0 * std::numbers::pi / 180.0;
   double near = 0.1;  // units; closer parts of a wall are not seen [R]
   double far = 7.0;   // units; the small frustum of the thesis's many-planes runs [R]

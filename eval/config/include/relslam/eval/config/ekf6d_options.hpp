@@ -45,7 +45,7 @@ struct Ekf6dOptions {
   double std_yaw_rad = 0.5 * std::numbers::pi / 180.0;  // read and written in degrees
   double std_pitch_rad = 0.5 * std::numbers::pi / 180.0;
   // Constant-position motion noise (x, y, z, qr, qx, qy, qz): without odometry it must cover a
-  // step's motion, 0.3 units and ~0.3° on the figure eight; half the spec's starting point
+  // step's motion, 0.3 units and ~0.3° on the figure eight; half the first value tried
   // (0.35, 0.005) after tuning [C, tuned].
   std::vector<double> stds_q = {0.175, 0.175, 0.175, 0.0025, 0.0025, 0.0025, 0.0025};
   // Feed each frame's odometry to the filter as MRPT's kf-slam does: the action's pose increment

@@ -3,7 +3,7 @@
 // plane frames (planar.sensor "points"; thesis Chapter 5, 3.5), and
 // the settings of the Open3D RANSAC baseline. The EM constants are libslam's
 // (em/options.hpp), taken at EmOptions::for_point_sigma(planar.noise.point_sigma). Keys under
-// relative_plane.* (extractor, ransac.*). Tags: [T] thesis, [R] spec, [C] chosen here.
+// relative_plane.* (extractor, ransac.*). Tags: [T] thesis, [R] recommended in the design, [C] chosen here.
 
 #include "relslam/core/option_fields.hpp"
 #include "relslam/em/options.hpp"

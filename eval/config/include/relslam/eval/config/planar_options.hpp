@@ -141,7 +141,7 @@ void describe(OptionsOf<PlanarOptions> auto& o, auto& f) {
   f.field("speed_scale", o.speed_scale,
           "path speed and turn rate times this: below 1 the same path in more iterations (E19: 0.25)",
           at_least(0.01), at_most(100.0));
-  f.field("frustum", o.frustum, "viewing frustum: map, small or large (spec 3.3)",
+  f.field("frustum", o.frustum, "viewing frustum: map, small or large (thesis 4.4.2)",
           holds(is_frustum_name(o.frustum), "expected map, small or large"));
   f.field("frustum_shape", o.frustum_shape, "frustum shape: map, planar (thesis trapezoid) or radial (Fig 89)",
           holds(is_frustum_shape_name(o.frustum_shape), "expected map, planar or radial"));

@@ -36,7 +36,7 @@ struct MapComparison {
 
 // Aligns `map` to `reference` starting from the frames as given (both maps start at the same
 // pose), then alternates mutual-nearest-neighbour association within `gate` and a similarity
-// refit (`rounds` times), as the thesis's manual "stretch" of one map over another (spec 9.2).
+// refit (`rounds` times), as the thesis's manual "stretch" of one map over another.
 MapComparison compare_maps(const std::vector<Eigen::Vector2d>& map, const std::vector<Eigen::Vector2d>& reference,
                            double gate, int rounds = 5);
 
