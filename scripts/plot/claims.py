@@ -39,9 +39,12 @@ class Judged(str):
         return self
 
 
+CHECKED = " — checked: "
+
+
 def judge(ours, verdict_parts):
     """Our text with what its verdict checked (measures/verdicts.py: (verdict, parts)), carrying the verdict."""
-    return Judged(f"{ours} — checked: {verdicts.text(verdict_parts)}", verdict_parts[0])
+    return Judged(f"{ours}{CHECKED}{verdicts.text(verdict_parts)}", verdict_parts[0])
 
 
 class Run:
