@@ -1,7 +1,7 @@
 #pragma once
 // The Victoria Park data set (ACFR; the ASCII files of the RFS-SLAM distribution): laser scans
-// of tree trunks, vehicle speed and steering, GPS. Conventions in
-// ../shared/datasets/victoria_park/README.md.
+// of tree trunks, vehicle speed and steering, GPS. Files, columns and where to get them:
+// docs/victoria-park.md.
 
 #include "relslam/eval/config/victoria_park_options.hpp"
 

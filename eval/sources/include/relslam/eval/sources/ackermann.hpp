@@ -1,6 +1,6 @@
 #pragma once
 // Dead reckoning of the Victoria Park vehicle: the standard Ackermann model used with this data
-// set (RFS-SLAM's ProcessModel_Ackerman2D; ../shared/datasets/victoria_park/README.md). The
+// set (RFS-SLAM's ProcessModel_Ackerman2D; docs/victoria-park.md). The
 // state is the laser's position and the vehicle heading, in MRPT's planar axes (x forward, y left).
 
 #include "relslam/eval/io/range_bearing.hpp"
