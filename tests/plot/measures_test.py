@@ -367,6 +367,7 @@ class Verdicts(unittest.TestCase):
         self.assertEqual(self.verdict(verdicts.same_ratio(0.0691, 0.028, 7.8, 2.5)), H)  # 2.47 vs 3.12
         self.assertEqual(self.verdict(verdicts.same_ratio(10.0, 1.0, 7.8, 2.5)), P)      # 10 vs 3.12
         self.assertEqual(self.verdict(verdicts.same_ratio(0.0722, 0.0638, 1.3, 4.5)), N)  # 1.13 vs 0.29
+        self.assertEqual(self.verdict(verdicts.same_ratio(1.0, 0.0, 7.8, 2.5)), N)  # no ratio
 
     def test_rule3_offset_constant_and_true(self):
         self.assertEqual(self.verdict(verdicts.rule3_invariance([2.0, 5.0], [0.02, 0.03], [-6.001, 4.0], [-6, 4])), H)
@@ -431,6 +432,7 @@ class Verdicts(unittest.TestCase):
         self.assertEqual(self.verdict(verdicts.rule22_saving(94.1, 100.0)), H)   # 5.9 %
         self.assertEqual(self.verdict(verdicts.rule22_saving(99.0, 100.0)), P)   # 1 %: saves, not about 5 %
         self.assertEqual(self.verdict(verdicts.rule22_saving(101.0, 100.0)), N)
+        self.assertEqual(self.verdict(verdicts.rule22_saving(1.0, 0.0)), N)
 
     def test_rules_28_19_37_and_the_save_system(self):
         self.assertEqual(self.verdict(verdicts.rule28(0, 5)), H)

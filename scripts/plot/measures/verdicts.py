@@ -58,7 +58,9 @@ def same_ratio(ours_a, ours_b, thesis_a, thesis_b, what="a/b"):
     """Two times the thesis sets against each other (octree vs quadtree): our ratio on the same side of 1
     as the thesis's and within a factor ABOUT of it holds; on the same side but further, partly; on the
     other side, does not hold."""
-    ours, thesis = ours_a / ours_b, thesis_a / thesis_b
+    ours, thesis = (ours_a / ours_b if ours_b else float("nan")), thesis_a / thesis_b
+    if not math.isfinite(ours) or ours <= 0:
+        return DOES_NOT, [(f"{what}: no ratio ({ours_a:.3g} / {ours_b:.3g})", False)]
     same_side = (ours > 1) == (thesis > 1) and ours != 1
     close = same_side and max(ours / thesis, thesis / ours) <= ABOUT
     parts = [(f"{what} {ours:.2f} on the thesis's side of 1 ({thesis:.2f})", same_side),
@@ -200,7 +202,7 @@ def rule21_full_size(off_under_sized, on_under_sized):
 
 def rule22_saving(on_ms, off_ms, thesis_share=0.05):
     """E10 (thesis 4.3.5): Rule 22 saves about 5 % of the time while revisiting (within a factor ABOUT)."""
-    saving = 1 - on_ms / off_ms
+    saving = 1 - on_ms / off_ms if off_ms > 0 else float("nan")
     saves = saving > 0
     about = saves and max(saving / thesis_share, thesis_share / saving) <= ABOUT
     parts = [(f"saves {100 * saving:.1f} %", saves), (f"about the thesis's {100 * thesis_share:g} %", about)]
