@@ -40,7 +40,7 @@ def text(verdict_parts):
 
 def within_time(ours_ms, thesis_ms, what="time"):
     """A time the thesis reports: ours at or under it holds, up to TIME_PARTLY times it partly."""
-    part = f"{what} {ours_ms:.3g} ms at most the thesis's {thesis_ms:g} ms"
+    part = f"{what} {ours_ms:.3g} ms at most the thesis's {thesis_ms:.3g} ms"
     if not math.isfinite(ours_ms):
         return DOES_NOT, [(part, False)]
     verdict = HOLDS if ours_ms <= thesis_ms else PARTLY if ours_ms <= TIME_PARTLY * thesis_ms else DOES_NOT
