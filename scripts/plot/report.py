@@ -265,6 +265,9 @@ def headline(runs, rows):
                 f"{counts[claims.DOES_NOT]} do not" + (f"; {unjudged}" if unjudged else "") +
                 ': <a href="#claims">each claim with its verdict</a> and what it checked. A time the thesis reports '
                 "counts as a budget (ours at most the thesis's holds); its 2004 processor is no yardstick for more.")
+    failed = [html.escape(q) for q, _, _, v, _ in rows if v == claims.DOES_NOT]
+    if failed:
+        said.append(f"<br><b>Do not hold:</b> {'; '.join(failed)}.")
     return f'<p class="headline">{" ".join(said)}</p>\n'
 
 
