@@ -253,6 +253,7 @@ def components(fig, run):
     ax.stackplot(d["iteration"], *[rp.moving_average(d[c], SMOOTH) for c in names],
                  labels=[COMPONENT_NAMES[c] for c in names])
     finish(ax, "iteration", f"{MS} ({SMOOTH}-iteration moving average)")
+    return "mean ms per iteration: " + ", ".join(f"{COMPONENT_NAMES[c]} {np.mean(d[c]):.3g}" for c in names)
 
 
 def vp_gps(ax, run, **style):

@@ -4,6 +4,7 @@ import dataclasses
 import functools
 
 import numpy as np
+from matplotlib.collections import PathCollection
 
 import catalogue
 from measures.common import SHAPES, fit_scale
@@ -70,3 +71,42 @@ class Figure:
         return catalogue.CATALOGUE[self.id][1]
 P = functools.partial
 POS = "position error (units)"
+
+
+DESCRIBED = 6  # at most this many drawn series named in a figure's "what our run shows"
+
+
+def describe_axes(fig):
+    """What a figure shows, read back from what it drew: per labelled line its mean, range and last
+    value over the points drawn, per labelled point set or bar set its size; for the figures whose
+    drawing gives no text of its own (their data came from the run's files, so the numbers are the
+    run's). Unlabelled lines of two points or fewer (reference lines) are left out."""
+    parts = []
+    for ax in fig.axes:
+        ylabel = ax.get_ylabel()
+        for line in ax.get_lines():
+            label = line.get_label()
+            x, y = np.asarray(line.get_xdata(), dtype=float), np.asarray(line.get_ydata(), dtype=float)
+            keep = np.isfinite(x) & np.isfinite(y)
+            x, y = x[keep], y[keep]
+            if len(y) == 0 or (label.startswith("_") and len(y) <= 2):
+                continue
+            name = ylabel if label.startswith("_") else label
+            if " fit" in name:
+                parts.append(name)  # a fitted curve: its constant is in its name
+            elif np.all(np.diff(x) >= 0):  # a series over the x axis (iterations, densities)
+                parts.append(f"{name}: mean {np.mean(y):.3g}, from {np.min(y):.3g} to {np.max(y):.3g}, last "
+                             f"{y[-1]:.3g} ({len(y)} points)")
+            else:  # a path or a map
+                parts.append(f"{name}: {len(y)} points over {np.ptp(x):.3g} × {np.ptp(y):.3g}")
+        for points in ax.collections:
+            label = points.get_label()
+            if not label.startswith("_") and isinstance(points, PathCollection):  # a scatter, not a filled area
+                parts.append(f"{label}: {len(points.get_offsets())} points")
+        for bars in ax.containers:
+            heights = [b.get_height() for b in bars]
+            if heights:
+                parts.append(f"{bars.get_label() if not bars.get_label().startswith('_') else ylabel}: "
+                             + ", ".join(f"{h:.3g}" for h in heights[:8]) + (" …" if len(heights) > 8 else ""))
+    more = f"; and {len(parts) - DESCRIBED} more series" if len(parts) > DESCRIBED else ""
+    return "; ".join(parts[:DESCRIBED]) + more

@@ -26,7 +26,7 @@ import chapter4
 import chapter5
 import chapter6
 import relslam_plot as rp
-from draw import DPI, FIGSIZE, Figure
+from draw import DPI, FIGSIZE, Figure, describe_axes
 from measures.common import ALG
 from load import read_json
 
@@ -98,7 +98,8 @@ def render(figure, runs, out, quick=False):
               else f"Paper Fig. {figure.id[5:]} — " if str(figure.id).startswith("paper") else "Extra — ")
     drawn = title(figure, runs, quick)
     fig.suptitle(prefix + drawn)
-    shows = shows if isinstance(shows, str) else ""  # a drawing helper may return its axes instead
+    # a drawing helper may return its axes instead of its own text: then the drawn series say it
+    shows = shows if isinstance(shows, str) and shows else describe_axes(fig)
     return Result(figure, "ok", rp.save_png(fig, os.path.join(out, figure.name + ".png"), DPI), shows, drawn)
 
 

@@ -339,6 +339,25 @@ def corner_run():
         manifest=manifest(1, 6))
 
 
+class DescribeAxes(unittest.TestCase):
+    """A figure without its own "what our run shows" is described from the series it drew."""
+
+    def test_series_maps_fits_and_reference_lines(self):
+        from matplotlib.figure import Figure
+        import draw
+        fig = Figure()
+        ax = fig.subplots()
+        ax.plot([0, 1, 2, 3], [1.0, 3.0, 2.0, 6.0], label="Relative Point")
+        ax.plot([0, 2, 1], [0.0, 1.0, 4.0], label="path")          # not monotonic in x: a path
+        ax.plot([0, 3], [2.0, 2.0], label="c·n fit, c = 0.5")
+        ax.axhline(0.0)                                             # an unlabelled reference line
+        ax.scatter([0.0, 1.0, 5.0], [0.0, 2.0, 1.0], label="landmarks")
+        ax.set_ylabel("error")
+        self.assertEqual(draw.describe_axes(fig),
+                         "Relative Point: mean 3, from 1 to 6, last 6 (4 points); path: 3 points over 2 × 4; "
+                         "c·n fit, c = 0.5; landmarks: 3 points")
+
+
 H, P, N = verdicts.HOLDS, verdicts.PARTLY, verdicts.DOES_NOT
 
 

@@ -187,6 +187,16 @@ done
 expect "the chapter pages have thesis captions" grep -q "Figure eight landmark error" "$pages"
 expect "the chapter pages have thesis statements" grep -q "What the thesis says" "$pages"
 expect "the chapter pages have the paper's captions" grep -q "The lines from the planes signify which grouping" "$pages"
+
+# Every figure drawn says what our run shows (its own text, or the series it drew).
+without=$(/usr/bin/python3 - "$pages" <<'PY'
+import re, sys
+s = open(sys.argv[1]).read()
+print(" ".join(m.group(1) for m in re.finditer(r'<section id="([^"]+)">(.*?)</section>', s, re.S)
+               if '<img src="figures/' in m.group(2) and 'class="shows"' not in m.group(2)))
+PY
+)
+expect "every drawn figure says what our run shows (not: $without)" [ -z "$without" ]
 expect "the chapter pages say what our planar runs show" grep -q "What our run shows:</b> 4 of 4 seen walls mapped" "$pages"
 expect "the chapter pages say what the E02 pair shows (Fig 68, paper Fig 4)" \
   grep -q "What our run shows:</b> RltPlanes [0-9]* and [0-9]*, iterations" "$pages"

@@ -26,6 +26,16 @@ done
 for name in paper6 paper7 paper8 e27-timing e29-em-compare e23-w-ma e28-noise-sweep; do
   check "figure $name in the report" grep -q "src=\"figures/$name.png\"" "$pages"
 done
+
+# Every figure drawn says what our run shows (its own text, or the series it drew).
+without=$(/usr/bin/python3 - "$pages" <<'PY'
+import re, sys
+s = open(sys.argv[1]).read()
+print(" ".join(m.group(1) for m in re.finditer(r'<section id="([^"]+)">(.*?)</section>', s, re.S)
+               if '<img src="figures/' in m.group(2) and 'class="shows"' not in m.group(2)))
+PY
+)
+check "every drawn figure says what our run shows (not: $without)" [ -z "$without" ]
 check "claims.md has no row left unrun" bash -c "! grep -q 'not run' '$work/report/claims.md'"
 check "every claim judged (holds, partly or does not hold)" bash -c "! grep -q '| \*not judged\* |' '$work/report/claims.md'"
 check "the summary judges the EKF accuracy claim (Fig 147)" \
