@@ -160,6 +160,8 @@ mkdir -p "$runs/renders"
 # Two real renders (relslam render replays the run); the others stay missing on purpose.
 "$relslam" render "$runs/s-f8" --view side --width 800 --height 600 --out "$runs/renders/fig128.png" -q
 expect "relslam render writes fig128" [ -s "$runs/renders/fig128.png" ]
+# what reproduce.sh records beside its renders: the run, algorithm and iteration each one drew
+printf 'figure,run,algorithm,iteration,view\n128,s-f8,relative_point,,side\n' > "$runs/renders/renders.csv"
 expect "the render is 800x600" [ "$("$python" "$src/tests/plot/png_size.py" "$runs/renders/fig128.png")" = "800 600" ]
 "$python" "$plot/report.py" --runs "$runs" --out "$work/report" --quick >"$work/report.log" 2>&1
 expect "report.py exits 0 (see $work/report.log)" [ $? -eq 0 ]
