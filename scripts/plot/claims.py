@@ -317,7 +317,9 @@ def e05(run, prefix, lost_expected=False):
     s = plane_summary(run, folder)
     text = f"{name}: " + verdict(s)
     if lost_expected:
-        return Judged(text, HOLDS if s["final_position_error"] > LOST else DOES_NOT)
+        lost = s["final_position_error"] > LOST
+        return judge(f"{name}: " + map_facts(s), (HOLDS if lost else DOES_NOT, [
+            (f"the robot's position ends lost ({s['final_position_error']:.3g} off, over {LOST:g})", lost)]))
     return text
 
 
