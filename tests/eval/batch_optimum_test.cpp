@@ -2,7 +2,7 @@
 // noise-free data (with the sensor's or the EKF's sensor model), at or below every online
 // estimator on noisy data (least squares with the simulator's noise model; the EKF also against
 // the optimum given its motion model), the same minimum from either start, bit-identical reruns, and the ratio rows of
-// every algorithm over it in summary.csv.
+// every algorithm over it in summary.csv; and the landmarks of a Relative Point run for data without ids.
 #include "test_support.hpp"
 
 #include "relslam/eval/config/scenario_loading.hpp"
@@ -157,6 +157,35 @@ TEST(BatchOptimum, ReachesTheSameMinimumFromTheRelativePointStartAndRerunsBitIde
   // once an iteration lowers the cost by less than 1e-10 of it), a thousandth of the 0.1 noise.
   EXPECT_NEAR(x.final_mean_landmark_error, y.final_mean_landmark_error, 1e-4);
   EXPECT_NEAR(x.trajectory.ate_rmse, y.trajectory.ate_rmse, 1e-4);
+}
+
+// Data without landmark ids (Victoria Park's trees): the landmarks come from a Relative Point
+// run's assignment. On a noise-free figure eight Relative Point's association is right, so the
+// solve ends on the truth as with the known ids; with noise (200 frames, where its association
+// agrees with the ids) on the known ids' minimum, to the solver's stopping rule.
+TEST(BatchOptimum, TakesTheLandmarksFromARelativePointRunOnDataWithoutIds) {
+  test::ScratchDir a, b, c;
+  const std::vector<std::string> relative = {"batch_optimum.association=relative_point",
+                                             "batch_optimum.start=relative_point"};
+  const ExperimentResult clean =
+      simulate_and_run(short_figure_eight(150, 0, 1, "[\"batch_optimum\"]", relative), a.path(), false);
+  const SummaryRow& x = row_of(clean, "batch_optimum");
+  ASSERT_EQ(x.status.text(), "ok");
+  EXPECT_GT(x.landmarks_on_map, 20);
+  EXPECT_LT(x.final_mean_landmark_error, 1e-6);
+  EXPECT_LT(x.trajectory.ate_rmse, 1e-6);
+  // Its ids are Relative Point's (RltPoint ids), not the truth's: landmarks.csv names both.
+  const test::CsvTable rows = test::read_csv(a.path() / "batch_optimum/landmarks.csv");
+  EXPECT_EQ(rows.rows.size(), static_cast<std::size_t>(x.landmarks_on_map));
+
+  const ExperimentResult known = simulate_and_run(short_figure_eight(200, 0.1, 2, "[\"batch_optimum\"]"), b.path(), false);
+  const ExperimentResult noisy = simulate_and_run(
+      short_figure_eight(200, 0.1, 2, "[\"batch_optimum\"]", relative), c.path(), false);
+  const SummaryRow& y = row_of(noisy, "batch_optimum");
+  ASSERT_EQ(y.status.text(), "ok");
+  EXPECT_EQ(y.landmarks_on_map, row_of(known, "batch_optimum").landmarks_on_map);
+  EXPECT_NEAR(y.final_mean_landmark_error, row_of(known, "batch_optimum").final_mean_landmark_error, 1e-4);
+  EXPECT_NEAR(y.trajectory.ate_rmse, row_of(known, "batch_optimum").trajectory.ate_rmse, 1e-4);
 }
 
 }  // namespace

@@ -80,7 +80,7 @@ class BatchOptimum final : public Algorithm {
   BatchOptimum(const BatchOptimumOptions& options, const Ekf6dOptions& ekf,
                const point::PointSlamOptions& relative_point, const RangeBearingSensor& sensor, std::uint64_t seed)
       : options_(options), noise_(noise_of(options, ekf, sensor)), motion_(constant_position(ekf)), seed_(seed) {
-    if (options.start == OptimumStart::RelativePoint)
+    if (options.start == OptimumStart::RelativePoint || options.association == OptimumAssociation::RelativePoint)
       mapper_.emplace(relative_point, relax::solve_relaxation);
   }
 
@@ -88,18 +88,25 @@ class BatchOptimum final : public Algorithm {
 
   void step(const ObservationFrame& observation, const TruthFrame& truth) override {
     const int k = static_cast<int>(problem_.world_T_robot.size());
-    problem_.world_T_robot.push_back(start_pose(observation, truth, k));
+    if (mapper_) {
+      relative_step_ = mapper_->step(observation);
+      relative_gauge_.observe(observation.iteration, mapper_->first_iteration(), truth);
+    }
+    problem_.world_T_robot.push_back(start_pose(truth, k));
     problem_.steps.push_back(step_measurement(observation, k));
     assignment_.assign(observation.points.size(), -1);
     changed_.clear();
-    // Known association: the landmark's id is the truth's (a rawlog's own ids), -1 unknown.
+    // The landmark's id: the truth's (a rawlog's own ids) or Relative Point's, -1 unknown.
+    const std::vector<int>& ids =
+        options_.association == OptimumAssociation::Known ? truth.landmark_ids : relative_step_.assignment;
     for (std::size_t i = 0; i < observation.points.size(); ++i) {
-      const int id = i < truth.landmark_ids.size() ? truth.landmark_ids[i] : -1;
+      const int id = i < ids.size() ? ids[i] : -1;
       if (id < 0) continue;
       auto [at, added] = index_of_.try_emplace(id, static_cast<int>(problem_.landmarks.size()));
       if (added) {
         problem_.landmarks.push_back(problem_.world_T_robot.back() * observation.points[i]);
         observations_of_.push_back(0);
+        id_of_.push_back(id);
         changed_.push_back(id);
       }
       ++observations_of_[at->second];
@@ -110,6 +117,7 @@ class BatchOptimum final : public Algorithm {
 
   void finish() override {
     settle_relative_point_start();
+    follow_relative_point_merges();
     report_ = solve_optimum(problem_, noise_, options_);
     solved_ = true;
     changed_.clear();
@@ -155,13 +163,9 @@ class BatchOptimum final : public Algorithm {
  private:
   // The first pose is the gauge: the truth's (the world frame is the robot's first frame), as
   // every estimator's map frame; the others start perturbed or where Relative Point put them.
-  Rigid3 start_pose(const ObservationFrame& observation, const TruthFrame& truth, int k) {
+  Rigid3 start_pose(const TruthFrame& truth, int k) {
     const Rigid3 gauge = truth.pose_known ? truth.world_T_robot : Rigid3::identity();
-    if (mapper_) {
-      const point::StepResult step = mapper_->step(observation);
-      relative_gauge_.observe(observation.iteration, mapper_->first_iteration(), truth);
-      return k == 0 ? gauge : relative_gauge_.pose(step.world_T_robot);
-    }
+    if (options_.start == OptimumStart::RelativePoint) return k == 0 ? gauge : relative_gauge_.pose(relative_step_.world_T_robot);
     if (k == 0 || !truth.pose_known) return k == 0 ? gauge : problem_.world_T_robot.back();
     return perturbed(truth.world_T_robot, options_, seed_, k);
   }
@@ -179,7 +183,7 @@ class BatchOptimum final : public Algorithm {
   // Relative Point has no pose before its map frame (a sparse start moves it later): those steps
   // start at its first pose, and every landmark again where its first sighting puts it.
   void settle_relative_point_start() {
-    if (!mapper_) return;
+    if (options_.start != OptimumStart::RelativePoint) return;
     const std::size_t first = std::min(relative_gauge_.steps_before(), problem_.world_T_robot.size() - 1);
     for (std::size_t k = 1; k < first; ++k) problem_.world_T_robot[k] = problem_.world_T_robot[first];
     std::vector<bool> placed(problem_.landmarks.size(), false);
@@ -190,15 +194,46 @@ class BatchOptimum final : public Algorithm {
     }
   }
 
+  // With Relative Point's association, its final word on each point: a merged point's
+  // observations go to the point it was merged into (thesis 6.5.2), a point it flagged dynamic
+  // (6.5.3) leaves the problem with its observations.
+  void follow_relative_point_merges() {
+    if (options_.association != OptimumAssociation::RelativePoint) return;
+    const std::vector<point::RltPoint>& points = mapper_->points();
+    const auto kept_id = [&](int id) {
+      while (points[id].merged && points[id].merged_into != point::kNone) id = points[id].merged_into;
+      return points[id].dynamic || points[id].merged ? -1 : id;
+    };
+    std::map<int, int> index_of;
+    OptimumProblem solved{problem_.world_T_robot, {}, {}, problem_.steps};
+    std::vector<int> observations_of;
+    for (const OptimumObservation& o : problem_.observations) {
+      const int id = kept_id(id_of_[o.landmark]);
+      if (id < 0) continue;
+      auto [at, added] = index_of.try_emplace(id, static_cast<int>(solved.landmarks.size()));
+      if (added) {  // where its first sighting puts it
+        solved.landmarks.push_back(problem_.world_T_robot[o.pose] * o.p_robot);
+        observations_of.push_back(0);
+      }
+      ++observations_of[at->second];
+      solved.observations.push_back({o.pose, at->second, o.p_robot});
+    }
+    problem_ = std::move(solved);
+    index_of_ = std::move(index_of);
+    observations_of_ = std::move(observations_of);
+  }
+
   std::string name_ = "batch_optimum";
   BatchOptimumOptions options_;
   ObservationNoise noise_;
   StepMeasurement motion_;  // motion_model ekf6d
   std::uint64_t seed_;
-  std::optional<point::RltMapper> mapper_;  // start relative_point only
+  std::optional<point::RltMapper> mapper_;  // start or association relative_point only
+  point::StepResult relative_step_;          // its latest step
   MapFrameGauge relative_gauge_;
   OptimumProblem problem_;
   std::map<int, int> index_of_;  // landmark id -> index in problem_.landmarks
+  std::vector<int> id_of_;       // index in problem_.landmarks -> landmark id
   std::vector<int> observations_of_;
   std::vector<int> assignment_, changed_;
   OptimumReport report_;

@@ -125,11 +125,13 @@ void add_residuals(ceres::Problem& ceres_problem, OptimumProblem& problem, std::
 
 ObservationNoise observation_noise(const RangeBearingSensor& sensor) {
   ObservationNoise noise;
-  noise.spherical = sensor.std_range > 0 && sensor.std_yaw_rad > 0 && sensor.std_pitch_rad > 0;
+  noise.spherical = sensor.std_range > 0 && sensor.std_yaw_rad > 0;
   if (sensor.std_range > 0) noise.std_range = sensor.std_range;
   if (noise.spherical) {
     noise.std_yaw_rad = sensor.std_yaw_rad;
-    noise.std_pitch_rad = sensor.std_pitch_rad;
+    // A planar sensor (a laser's scan plane: Victoria Park) states no pitch deviation; its points
+    // lie in the plane, held there with the bearing's [C].
+    noise.std_pitch_rad = sensor.std_pitch_rad > 0 ? sensor.std_pitch_rad : sensor.std_yaw_rad;
   }
   return noise;
 }

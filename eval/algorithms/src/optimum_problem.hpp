@@ -46,8 +46,8 @@ struct OptimumReport {
 };
 
 // The noise model the observations are whitened with: range, yaw and pitch (MRPT's spherical
-// measurement, range_bearing.hpp) when the sensor gives all three standard deviations (a
-// rawlog's sensor); otherwise white Gaussian noise per axis of std_range (the simulator's,
+// measurement, range_bearing.hpp) when the sensor gives range and yaw standard deviations (a
+// rawlog's sensor; a planar one's pitch deviation is its yaw's); otherwise white Gaussian noise per axis of std_range (the simulator's,
 // sim::SimOptions::noise_sigma; 1 when it gives none: noise-free data weighs nothing).
 struct ObservationNoise {
   bool spherical = false;

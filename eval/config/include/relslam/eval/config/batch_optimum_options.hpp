@@ -33,8 +33,23 @@ enum class OptimumModel {
 inline constexpr OptimumModel kOptimumModels[] = {OptimumModel::Own, OptimumModel::Ekf6d};
 inline std::string_view to_string(OptimumModel model) { return model == OptimumModel::Own ? "own" : "ekf6d"; }
 
+// Which landmark each observation is: the ids the frames carry (a simulation's truth, a rawlog's
+// own), or the landmarks a Relative Point run over the same frames assigns them to, for data
+// without ids (Victoria Park's trees). Relative Point's merges (thesis 6.5.2) are followed to the
+// point kept, and the observations of points it flags dynamic (6.5.3) are left out.
+enum class OptimumAssociation {
+  Known,          // the frames' ids; observations without one are left out [C]
+  RelativePoint,  // a Relative Point run's assignment (its settings)
+};
+inline constexpr OptimumAssociation kOptimumAssociations[] = {OptimumAssociation::Known,
+                                                              OptimumAssociation::RelativePoint};
+inline std::string_view to_string(OptimumAssociation association) {
+  return association == OptimumAssociation::Known ? "known" : "relative_point";
+}
+
 struct BatchOptimumOptions {
   OptimumStart start = OptimumStart::Truth;
+  OptimumAssociation association = OptimumAssociation::Known;
   // The perturbation of every true pose but the first (the gauge), per axis: large against the
   // sensor noise of the shipped scenarios (0.1 units), so the solve, not the start, sets the
   // result [C].
@@ -59,6 +74,10 @@ struct BatchOptimumOptions {
 void describe(OptionsOf<BatchOptimumOptions> auto& o, auto& f) {
   f.choice("start", o.start, "start of the solve: truth (perturbed, seeded) or relative_point (its run's poses)",
            kOptimumStarts);
+  f.choice("association", o.association,
+           "landmark of each observation: known (the frames' ids) or relative_point (a Relative Point run's "
+           "assignment, for data without ids)",
+           kOptimumAssociations);
   // Bounded above so that a typo cannot start the solve beyond where it may diverge to [C].
   f.field("start_sigma_position", o.start_sigma_position, "start truth: perturbation of each pose per axis, units",
           at_least(0.0), at_most(1e6));
