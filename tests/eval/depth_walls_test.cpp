@@ -1,7 +1,8 @@
 // The simulated depth camera's frames carry the walls EM2 finds in its 640 × 480 images
 // (planar.depth_planes "extracted", the default; thesis 3.5 at sensor density, then 4.5's wall
 // conversion): each extracted wall lies near the wall most of its pixels see, with that wall's
-// id as truth, and Relative Plane maps them.
+// id as truth, once per image, and Relative Plane runs on them (why it gets few poses from
+// them: docs/algorithms/range-sensors.md).
 #include "test_support.hpp"
 #include "wall_distance.hpp"
 
