@@ -88,7 +88,7 @@ void run(const Case& c, eval::CloudExtractor e, int repeat) {
 // A set of simulated depth frames through one extractor: the median ms per frame, the planes,
 // and recall / precision / largest normal error over all frames.
 void run_views(const std::string& name, const sim::PlanarWorld& world, const std::vector<PlanarPose>& poses,
-               const sim::DepthCameraOptions& camera, eval::CloudExtractor e) {
+               const sim::DepthCameraOptions& camera, const eval::CloudPlaneOptions& options, eval::CloudExtractor e) {
   std::vector<double> ms;
   em::test::DepthScore total;
   long long points = 0, summary = 0;
@@ -97,7 +97,7 @@ void run_views(const std::string& name, const sim::PlanarWorld& world, const std
     eval::PointCloudFrame frame;
     frame.points = view.points;
     frame.width = view.width, frame.height = view.height;
-    const eval::CloudPlanes found = eval::extract_cloud_planes(e, frame, eval::CloudPlaneOptions{}, 1);
+    const eval::CloudPlanes found = eval::extract_cloud_planes(e, frame, options, 1);
     ms.push_back(found.ms);
     points += static_cast<long long>(frame.returns()), summary += found.summary_points;
     const em::test::DepthScore s = em::test::score_view(view, found.result.planes, 0.5);
@@ -118,6 +118,7 @@ struct ViewSet {
   sim::PlanarWorld world;
   std::vector<PlanarPose> poses;
   sim::DepthCameraOptions camera;
+  eval::CloudPlaneOptions options;
 };
 
 std::vector<ViewSet> view_sets() {
@@ -131,6 +132,10 @@ std::vector<ViewSet> view_sets() {
   for (int k = 0; k < path.iterations(); k += 60) poses.push_back(path.world_T_robot(k));
   sets.push_back({"sim map E exact", map.world, poses, exact});
   sets.push_back({"sim map E kinect", map.world, poses, kinect});
+  // d_in growing as the camera's 3σ (EmOptions::inlier_per_range2), as the depth scenarios use it.
+  eval::CloudPlaneOptions grows;
+  grows.em.inlier_per_range2 = 3.0 * kinect.noise_per_depth2;
+  sets.push_back({"sim map E kinect d(r)", map.world, poses, kinect, grows});
   return sets;
 }
 
@@ -160,6 +165,6 @@ int main(int argc, char** argv) {
       if (wanted(e)) run(c, e, repeat);
   for (const ViewSet& v : view_sets())
     for (eval::CloudExtractor e : eval::kCloudExtractors)
-      if (wanted(e) && (e != eval::CloudExtractor::SegmentPlane || v.poses.size() <= 6)) run_views(v.name, v.world, v.poses, v.camera, e);
+      if (wanted(e) && (e != eval::CloudExtractor::SegmentPlane || v.poses.size() <= 6)) run_views(v.name, v.world, v.poses, v.camera, v.options, e);
   return 0;
 }

@@ -61,8 +61,16 @@ std::vector<PlaneTruth> wall_truth(const std::vector<scan::ExtractedWall>& walls
 }
 
 // The depth camera's EM [C]: the extract command's defaults for metric depth frames (d_in 5 cm,
-// 3σ of a Kinect at 3.5 m; a 4,800-point summary of the image).
-const CloudPlaneOptions kDepthExtraction{};
+// 3σ of a Kinect at 3.5 m; a 4,800-point summary of the image), with d_in growing as the
+// camera's 3σ beyond that (σ = noise_per_depth2 · z²; the range bounds the depth): a fixed 5 cm
+// split the walls beyond 5 units, where σ reaches 4–9 cm, into pieces tilted up to 80° that
+// Relative Plane took for walls of their own.
+CloudPlaneOptions depth_extraction(const sim::DepthCameraOptions& camera) {
+  CloudPlaneOptions o;
+  o.em.inlier_per_range2 = 3.0 * camera.noise_per_depth2;
+  return o;
+}
+
 // A real end is known to within two summary pixels at 2.5 units (stride 8 at 525 px) [C].
 constexpr double kDepthEndTolerance = 0.1;
 
@@ -75,9 +83,10 @@ void RangeSensorFrames::extract(int k, const sim::DepthFrame& image, sim::PlaneS
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Eigen::Vector3d> points = sim::depth_points(image, options_.depth);
   const em::DenseCloud cloud{points, image.width, image.height};
-  const em::DenseResult found = em::extract_dense(cloud, em::EmVariant::Em2, kDepthExtraction.em,
-                                                 kDepthExtraction.dense, em::em_frame_seed(seed_, k));
-  em::ExtractedPlanes walls = em::to_plane_objects(found.result, kDepthExtraction.em, k);
+  const CloudPlaneOptions extraction = depth_extraction(options_.depth);
+  const em::DenseResult found = em::extract_dense(cloud, em::EmVariant::Em2, extraction.em, extraction.dense,
+                                                 em::em_frame_seed(seed_, k));
+  em::ExtractedPlanes walls = em::to_plane_objects(found.result, extraction.em, k);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   for (PlaneObject& p : walls.frame.planes) {
     p.y_lo += options_.depth.camera_height;

@@ -91,7 +91,7 @@ void assign_image(const DenseCloud& cloud, const CloudSummary& s, const std::vec
       for (int index = y * cloud.width + c0 * s.stride; index < y * cloud.width + end; ++index) {
         const Eigen::Vector3d& p = cloud.points[static_cast<std::size_t>(index)];
         if (!p.allFinite()) continue;
-        const int best = nearest_plane(tests, p, candidates, o.inlier_distance);
+        const int best = nearest_plane(tests, p, candidates, inlier_distance_at(o, p));
         if (best >= 0) members[static_cast<std::size_t>(best)].push_back(index);
       }
     }
@@ -106,7 +106,7 @@ void assign_all(const DenseCloud& cloud, const std::vector<EmPlane>& planes, con
   for (std::size_t i = 0; i < cloud.points.size(); ++i) {
     const Eigen::Vector3d& p = cloud.points[i];
     if (!p.allFinite()) continue;
-    const int best = nearest_plane(tests, p, all, o.inlier_distance);
+    const int best = nearest_plane(tests, p, all, inlier_distance_at(o, p));
     if (best >= 0) members[static_cast<std::size_t>(best)].push_back(static_cast<int>(i));
   }
 }
@@ -120,6 +120,37 @@ constexpr double kMinIncidence = 0.0175;  // sin 1°
 
 bool edge_on(const EmPlane& plane) {
   return std::abs(plane.offset) < kMinIncidence * plane.centroid.norm();
+}
+
+// An organised cloud's plane is a patch of its image: most of its pixels have their right and
+// lower neighbours in the same plane. Pixels of several surfaces that happen to lie in one
+// plane are strips, one or two pixels across: a depth image's floor row and ceiling row at one
+// depth and a far wall's column at that depth lie in one plane facing the camera (seen on a
+// simulated room near the camera's 8-unit limit, where the summary's rows of the floor lie 0.9
+// apart and the floor's growth stops short of them: a 6-unit "wall" at 90° to the wall most of
+// its pixels see). Planes whose share of such interior pixels is below kMinInterior are no
+// surface [C]: a real plane's share is one less its border and missing returns (0.93 for a
+// wall of 36,000 pixels at Kinect noise; the strips 0.04–0.2; a wall at the camera's depth
+// limit, half its returns beyond it, 0.48, is dropped too).
+constexpr double kMinInterior = 0.5;
+
+void drop_strips(std::vector<EmPlane>& planes, const DenseCloud& cloud) {
+  std::vector<int> label(cloud.points.size(), -1);
+  for (std::size_t k = 0; k < planes.size(); ++k)
+    for (int i : planes[k].points) label[static_cast<std::size_t>(i)] = static_cast<int>(k);
+  const auto own = [&](std::size_t i, int k) { return i < label.size() && label[i] == k; };
+  std::vector<EmPlane> kept;
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    std::size_t interior = 0;
+    for (int i : planes[k].points) {
+      const auto at = static_cast<std::size_t>(i);
+      const bool right = (i + 1) % cloud.width != 0 && own(at + 1, static_cast<int>(k));
+      interior += right && own(at + static_cast<std::size_t>(cloud.width), static_cast<int>(k));
+    }
+    const double share = static_cast<double>(interior) / static_cast<double>(planes[k].points.size());
+    if (share >= kMinInterior) kept.push_back(std::move(planes[k]));
+  }
+  planes = std::move(kept);
 }
 
 }  // namespace
@@ -150,8 +181,9 @@ EmResult densify(const DenseCloud& cloud, const CloudSummary& s, const EmResult&
     result.planes.push_back(std::move(plane));
   }
   // The summary's planes may hold two pieces of one surface (EM merges planes whose boxes meet;
-  // at full density they do).
+  // at full density they do). Their pixels interleave until they are merged.
   merge_planes(result.planes, cloud.points, o);
+  if (cloud.organised()) drop_strips(result.planes, cloud);
   tight_refit(result.planes, cloud.points, o);
   set_rectangles(result.planes, cloud.points, o);
   return result;

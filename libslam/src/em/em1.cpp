@@ -24,7 +24,7 @@ std::vector<int> assign(std::vector<EmPlane>& planes, std::span<const Eigen::Vec
     const Eigen::Vector3d& p = points[static_cast<std::size_t>(i)];
     if (o.assign_mode == AssignMode::All) {
       for (EmPlane& plane : planes)
-        if (plane.accepts(p, o.inlier_distance, o.bound_expansion)) {
+        if (plane.accepts(p, o)) {
           plane.points.push_back(i);
           ++usage[static_cast<std::size_t>(i)];
         }
@@ -32,7 +32,7 @@ std::vector<int> assign(std::vector<EmPlane>& planes, std::span<const Eigen::Vec
       EmPlane* nearest = nullptr;
       double best = std::numeric_limits<double>::infinity();
       for (EmPlane& plane : planes)
-        if (plane.accepts(p, o.inlier_distance, o.bound_expansion) && std::abs(plane.distance(p)) < best) {
+        if (plane.accepts(p, o) && std::abs(plane.distance(p)) < best) {
           best = std::abs(plane.distance(p));
           nearest = &plane;
         }

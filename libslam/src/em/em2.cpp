@@ -21,7 +21,7 @@ bool grow(EmPlane& plane, std::span<const Eigen::Vector3d> points, std::span<con
   for (int round = 0; round < o.em2.grow_rounds; ++round) {
     std::vector<int> gathered;
     for (const spatial::IndexedPoint& e : cell)
-      if (plane.accepts(e.p, o.inlier_distance, o.bound_expansion)) gathered.push_back(e.id);
+      if (plane.accepts(e.p, o)) gathered.push_back(e.id);
     std::sort(gathered.begin(), gathered.end());
     EmPlane next = plane;
     next.points = std::move(gathered);

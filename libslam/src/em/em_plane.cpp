@@ -55,7 +55,7 @@ int absorb_unassigned(std::vector<EmPlane>& planes, std::span<const Eigen::Vecto
       std::size_t best = planes.size();
       double nearest = std::numeric_limits<double>::infinity();
       for (std::size_t k = 0; k < planes.size(); ++k) {
-        if (!planes[k].accepts(p, o.inlier_distance, o.bound_expansion)) continue;
+        if (!planes[k].accepts(p, o)) continue;
         const double d = std::abs(planes[k].distance(p));
         if (d < nearest) nearest = d, best = k;
       }

@@ -14,7 +14,8 @@ bool mergeable(const EmPlane& a, const EmPlane& b, const EmOptions& o) {
   // robot that differ by distance × angle (0.5 at 5 units and 6°), so the origin test kept
   // pieces of one wall apart on noisy frames; near the points, where they must agree, they do.
   const double apart = std::max(std::abs(a.distance(b.centroid)), std::abs(b.distance(a.centroid)));
-  if (!(apart <= o.merge_offset_factor * o.inlier_distance)) return false;
+  const double d_in = std::max(inlier_distance_at(o, a.centroid), inlier_distance_at(o, b.centroid));
+  if (!(apart <= o.merge_offset_factor * d_in)) return false;
   const Eigen::Vector3d margin = Eigen::Vector3d::Constant(o.bound_expansion);
   const Eigen::AlignedBox3d wide_a(a.box.min() - margin, a.box.max() + margin);
   const Eigen::AlignedBox3d wide_b(b.box.min() - margin, b.box.max() + margin);

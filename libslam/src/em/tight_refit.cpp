@@ -40,11 +40,17 @@ double median_of(const std::vector<double>& values, Scratch& s) {
   return *middle;
 }
 
+// |residual| of each point, in units of d_in at the point relative to d_in where d_in grows
+// with the range (EmOptions::inlier_per_range2): a far point's larger noise then weighs as a
+// near point's, and the median and gate below stay those of one noise level.
 void residuals_of(const Eigen::Vector3d& normal, double offset, const EmPlane& plane,
-                  std::span<const Eigen::Vector3d> points, std::vector<double>& r) {
+                  std::span<const Eigen::Vector3d> points, const EmOptions& o, std::vector<double>& r) {
   r.resize(plane.points.size());
-  for (std::size_t k = 0; k < r.size(); ++k)
-    r[k] = std::abs(normal.dot(points[static_cast<std::size_t>(plane.points[k])]) + offset);
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    const Eigen::Vector3d& p = points[static_cast<std::size_t>(plane.points[k])];
+    r[k] = std::abs(normal.dot(p) + offset);
+    if (o.inlier_per_range2 > 0.0) r[k] *= o.inlier_distance / inlier_distance_at(o, p);
+  }
 }
 
 // The points of `plane` whose residual is at most `gate`, into `kept`.
@@ -59,11 +65,11 @@ void keep_within(const EmPlane& plane, const std::vector<double>& r, double gate
 // residual from it): the neighbour's points tilt the full fit, so that its own points' residuals
 // grow towards theirs, but they are a minority and fall in the worse half.
 int gate_once(EmPlane& plane, std::span<const Eigen::Vector3d> points, const EmOptions& o, Scratch& s) {
-  residuals_of(plane.normal, plane.offset, plane, points, s.residuals);
+  residuals_of(plane.normal, plane.offset, plane, points, o, s.residuals);
   keep_within(plane, s.residuals, median_of(s.residuals, s), s.kept);
   const std::optional<PlaneFit> core = fit_plane(points, s.kept);
   if (!core) return 0;
-  residuals_of(core->normal, core->offset, plane, points, s.residuals);
+  residuals_of(core->normal, core->offset, plane, points, o, s.residuals);
   const double gate = std::max(o.refit_gate * kMadToSigma * median_of(s.residuals, s),
                                1e-6 * o.inlier_distance);
   keep_within(plane, s.residuals, gate, s.kept);

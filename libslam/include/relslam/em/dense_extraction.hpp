@@ -56,7 +56,8 @@ CloudSummary summarise(const DenseCloud& cloud, const DenseOptions& dense);
 // Planes found on the summary (`coarse`, indices into summary.points; any extractor's) over the
 // full cloud: every point joins the nearest plane that accepts it (options' d_in and e_exp),
 // planes with fewer than min_support points or seen edge-on are dropped, pieces that now meet
-// merge, then the tight refit and the rectangles. Linear in the points for organised clouds,
+// merge, an organised cloud's planes whose pixels form strips rather than a patch of the image
+// are dropped, then the tight refit and the rectangles. Linear in the points for organised clouds,
 // points × planes otherwise.
 EmResult densify(const DenseCloud& cloud, const CloudSummary& summary, const EmResult& coarse,
                  const EmOptions& options);

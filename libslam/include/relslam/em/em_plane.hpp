@@ -10,10 +10,16 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <span>
 #include <vector>
 
 namespace relslam::em {
+
+// d_in for a point at p (the sensor at the origin): max(d_in, inlier_per_range2 · |p|²).
+inline double inlier_distance_at(const EmOptions& o, const Eigen::Vector3d& p) {
+  return std::max(o.inlier_distance, o.inlier_per_range2 * p.squaredNorm());
+}
 
 // One plane model. Invariant once refit() succeeded: normal is the TLS fit of `points`
 // (ascending indices into the frame's points, no repeats), turned towards the sensor, and
@@ -33,6 +39,10 @@ struct EmPlane {
   // The membership test (thesis 3.5): inside the box widened by `expansion` on every side, and
   // within `inlier_distance` of the plane.
   bool accepts(const Eigen::Vector3d& p, double inlier_distance, double expansion) const;
+  // ... with the options' e_exp and d_in at p (inlier_distance_at).
+  bool accepts(const Eigen::Vector3d& p, const EmOptions& o) const {
+    return accepts(p, inlier_distance_at(o, p), o.bound_expansion);
+  }
 };
 
 // Refits plane from its points (M-step) and sets its tight box; false (plane unchanged but for

@@ -149,6 +149,12 @@ struct EmOptions {
   // 60) [T]; thesis 3.5.4 sets max(0.05, 3σ_pt), this default is that at σ_pt = 0.05 [R]; use
   // for_point_sigma() for another noise.
   double inlier_distance = 0.15;
+  // d_in at range: a point at distance r from the sensor belongs to a plane within
+  // max(d_in, inlier_per_range2 · r²), for sensors whose noise grows with the squared range (a
+  // Kinect's depth σ ≈ 1.425e-3 · z², so 3σ = 4.3e-3 · z² exceeds a d_in of 5 cm beyond 3.4 m,
+  // where a fixed d_in splits a far wall into tilted pieces). The residuals of the tight refit
+  // are measured in the same scale. 0: d_in at every range [C].
+  double inlier_per_range2 = 0.0;
   // e_exp: the plane's box is widened by this before the membership test; without it a 3-point
   // seed could never grow [T concept, R value], units.
   double bound_expansion = 0.3;
@@ -195,6 +201,8 @@ struct EmOptions {
 
 void describe(OptionsOf<EmOptions> auto& o, auto& f) {
   f.field("inlier_distance", o.inlier_distance, "d_in: a point belongs to a plane within this, units", above(0.0));
+  f.field("inlier_per_range2", o.inlier_per_range2,
+          "d_in grows to this times the squared range where that is larger (0: off), 1/units", at_least(0.0));
   f.field("bound_expansion", o.bound_expansion, "e_exp: the plane's box widened by this for membership, units",
           at_least(0.0));
   f.field("seed_radius", o.seed_radius, "a seed's two nearest points lie within this, units", above(0.0));

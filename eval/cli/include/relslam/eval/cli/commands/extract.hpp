@@ -19,6 +19,7 @@ struct ExtractArgs {
   std::uint64_t seed = 1;
   int max_frames = 0;  // 0: all
   double inlier_distance = 0.05;
+  double inlier_per_range2 = 0.0;
   int summary_points = 4800;
   bool pictures = true;
   bool quiet = false;
