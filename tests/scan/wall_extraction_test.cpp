@@ -107,6 +107,9 @@ TEST(WallExtraction, AnEndHiddenBehindAnOccluderIsCut) {
   EXPECT_NEAR(w.plane.b.y(), 0.4, 0.05);
   EXPECT_TRUE(w.a_is_wall_end);   // the wall's real end at z = -2
   EXPECT_FALSE(w.b_is_wall_end);  // cut by the box
+  // The plane carries the verdict as the cut-end flags Relative Plane reads (open_cut_ends).
+  EXPECT_FALSE(w.plane.a_cut);
+  EXPECT_TRUE(w.plane.b_cut);
 }
 
 TEST(WallExtraction, SensorOffsetOnTheRobotIsApplied) {

@@ -53,6 +53,18 @@ PlaneFrame PosePrediction::moved(const PlaneFrame& frame) {
   return out;
 }
 
+std::string_view to_string(PoseSource source) {
+  switch (source) {
+    case PoseSource::Algorithm:
+      return "algorithm";
+    case PoseSource::Prediction:
+      return "prediction";
+    case PoseSource::None:
+      break;
+  }
+  return "none";
+}
+
 std::optional<PlanarPose> PosePrediction::robot_pose(const std::optional<PlanarPose>& world_T_moved) {
   // Without the algorithm's pose the prediction stands in for the next frame's.
   const PlanarPose start_T_robot =
@@ -68,8 +80,10 @@ std::optional<PlanarPose> PosePrediction::robot_pose(const std::optional<PlanarP
   }
   previous_ = start_T_robot;
   have_previous_ = true;
-  if (!world_T_moved) return std::nullopt;
-  return *world_T_moved * start_T_predicted_;
+  source_ = world_T_moved ? PoseSource::Algorithm
+                          : (options_.report_prediction ? PoseSource::Prediction : PoseSource::None);
+  if (source_ == PoseSource::None) return std::nullopt;
+  return world_T_moved ? *world_T_moved * start_T_predicted_ : start_ * start_T_predicted_;
 }
 
 }  // namespace relslam::eval

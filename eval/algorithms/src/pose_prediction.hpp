@@ -14,9 +14,18 @@
 
 #include <deque>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace relslam::eval {
+
+// Whose pose a frame reports (iterations.csv's pose_source, with report_prediction).
+enum class PoseSource : unsigned char {
+  None,        // no pose
+  Algorithm,   // the algorithm's
+  Prediction,  // the prediction's, the algorithm having none (report_prediction)
+};
+std::string_view to_string(PoseSource source);
 
 class PosePrediction {
  public:
@@ -33,6 +42,7 @@ class PosePrediction {
   // The algorithm's pose for the moved frame back as the robot's, and remembered for the next
   // prediction; nothing when the algorithm had none.
   std::optional<PlanarPose> robot_pose(const std::optional<PlanarPose>& world_T_moved);
+  PoseSource source() const { return source_; }
 
  private:
   PlanarPose step_guess(const PlaneFrame& frame) const;
@@ -52,6 +62,7 @@ class PosePrediction {
   std::deque<std::vector<PlaneObject>> recent_walls_;
   scan::WallRegistration registration_;
   PlanarPose predicted_step_;
+  PoseSource source_ = PoseSource::None;
 };
 
 }  // namespace relslam::eval

@@ -103,6 +103,11 @@ const Columns<PredictionRow> kPredictionColumns = {
      }},
 };
 
+// With motion_prediction.report_prediction: whose pose the frame reports (algorithm, prediction).
+const Columns<PredictionRow> kSourceColumns = {
+    {"pose_source", [](const PredictionRow& r) { return csv_field(std::string(to_string(r.prediction.source()))); }},
+};
+
 bool adaptive(const RltXPointsS& slam) { return slam.options().preset == plane::Preset::Adaptive; }
 
 // One RltPlane as planes.csv sees it, after the recorder's scored columns.
@@ -130,7 +135,7 @@ class RelativePlane final : public PlaneAlgorithm {
  public:
   RelativePlane(const plane::RelativePlaneOptions& options, const MotionPredictionOptions& prediction,
                 const PlanarPose& world_T_start)
-      : slam_(options, world_T_start) {
+      : slam_(options, world_T_start), report_prediction_(prediction.report_prediction) {
     if (prediction.enabled()) prediction_.emplace(prediction, world_T_start);
   }
 
@@ -173,12 +178,14 @@ class RelativePlane final : public PlaneAlgorithm {
     std::vector<std::string> names = column_names(kIterationColumns);
     if (adaptive(slam_)) std::ranges::copy(column_names(kIntegrityColumns), std::back_inserter(names));
     if (prediction_) std::ranges::copy(column_names(kPredictionColumns), std::back_inserter(names));
+    if (reports_source()) std::ranges::copy(column_names(kSourceColumns), std::back_inserter(names));
     return names;
   }
   void iteration_fields(std::vector<CsvField>& out) const override {
     append_fields(kIterationColumns, IterationRow{last_, slam_}, out);
     if (adaptive(slam_)) append_fields(kIntegrityColumns, IterationRow{last_, slam_}, out);
     if (prediction_) append_fields(kPredictionColumns, PredictionRow{*prediction_}, out);
+    if (reports_source()) append_fields(kSourceColumns, PredictionRow{*prediction_}, out);
   }
   bool scores_wrong_valid() const override { return adaptive(slam_); }
   std::vector<std::string> plane_columns() const override { return column_names(kPlaneColumns); }
@@ -269,6 +276,8 @@ class RelativePlane final : public PlaneAlgorithm {
   }
 
  private:
+  bool reports_source() const { return prediction_ && report_prediction_; }
+
   // Whether one of the chain edges of group x that compare `plane` tied both diagonals (Rule 15).
   bool ambiguous_in(int x, int plane) const {
     const plane::RltXPoint& group = slam_.xpoints().at(static_cast<std::size_t>(x));
@@ -281,6 +290,7 @@ class RelativePlane final : public PlaneAlgorithm {
   std::string name_ = "relative_plane";
   RltXPointsS slam_;
   RelativePlaneStep last_;
+  bool report_prediction_ = false;            // motion_prediction.report_prediction
   std::optional<PosePrediction> prediction_;  // motion_prediction.*: none for the thesis
   std::optional<PlanarPose> pose_;            // the robot's, after the prediction is composed back
   plane::RollBackCounts totals_;  // Rules 31–34 over the run (summary.csv)

@@ -181,6 +181,10 @@ std::vector<ExtractedWall> extract_walls(const LaserScan& scan, const WallExtrac
     }
     w.plane = w.plane.transformed(scan.robot_T_sensor);
     w.plane.iteration = iteration;
+    // The cut-end flags the Relative Plane algorithm reads (relative_plane.open_cut_ends): an end
+    // that is not the wall's is where the view ends and slides as the robot moves.
+    w.plane.a_cut = !w.a_is_wall_end;
+    w.plane.b_cut = !w.b_is_wall_end;
     walls.push_back(w);
   }
   return walls;

@@ -43,6 +43,9 @@ struct MotionPredictionOptions {
   // wall missed in one scan (flicker) is still there, and the step is tied to more than one scan.
   int registration_frames = 2;
   scan::WallRegistrationOptions registration;
+  // Where the algorithm has no pose, the prediction is reported as the robot's (iterations.csv's
+  // pose_source says whose each pose is). Off: such a frame has no pose, as without a prediction.
+  bool report_prediction = false;
   bool enabled() const { return constant_velocity || use_odometry || register_walls; }
 };
 
@@ -55,6 +58,8 @@ void describe(OptionsOf<MotionPredictionOptions> auto& o, auto& f) {
   f.field("registration_frames", o.registration_frames,
           "Relative Plane: register against the walls of this many previous frames", at_least(1));
   f.nested("registration", o.registration);
+  f.field("report_prediction", o.report_prediction,
+          "Relative Plane: report the prediction as the pose where the algorithm has none (pose_source says whose)");
 }
 
 }  // namespace relslam::eval
