@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,29 @@ TEST(BadInput, PointFileHeadersAreCheckedBeforeOpen3dReadsThem) {
                         ":3: element vertex: must be in [1, 16777216]");
   expect_points_refused("b.ply", ply + "2\nproperty float x\nproperty float z\nend_header\n1 2\n3 4\n",
                         ":3: element vertex: needs exactly one scalar property y");
+}
+
+// A compressed PCD whose sizes agree with its header but whose data does not decompress: Open3D
+// printed its warning in colour on stdout, where relslam writes its tables; now nothing of
+// Open3D's reaches stdout, and relslam's own message names the file.
+TEST(BadInput, Open3dsMessagesStayOffStdout) {
+  test::ScratchDir dir;
+  std::string pcd = "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\nPOINTS 1\n";
+  pcd += "DATA binary_compressed\n";
+  const std::uint32_t sizes[2] = {4, 12};  // compressed, uncompressed: one point of three floats
+  pcd.append(reinterpret_cast<const char*>(sizes), sizeof sizes);
+  pcd += "\xff\xff\xff\xff";
+  test::write_file(dir / "e.pcd", pcd);
+  const auto r = test::run_relslam({"extract", "--points", (dir / "e.pcd").string(), "--out", (dir / "x").string(),
+                                    "--extractors", "em2"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("Open3D"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("e.pcd: Open3D cannot read it as a point cloud"), std::string::npos) << r.err;
+  // Open3D's reason, on stderr without its colour codes.
+  EXPECT_NE(r.err.find("relslam: [Open3D WARNING] Read PCD failed: unable to read data."), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
 }
 
 // ---- plane files (relslam run --planes) ---------------------------------------------------------

@@ -156,6 +156,21 @@ TEST(PlanarRawlog, APoseFromUnmappedPointsForMostOfTheRunIsLost) {
   EXPECT_EQ(rows[0].status.text().rfind("lost: pose from ", 0), 0u) << rows[0].status.text();
 }
 
+// The planar EKF on the same log without odometry cannot follow the turns either: its update
+// throws its pose off the path, and the divergence check records it (with odometry, above, ok).
+TEST(PlanarRawlog, AnEkfThatLosesThePathIsLostNotOk) {
+  test::ScratchDir dir;
+  write_demo_world(dir.path(), {.odometry = false});
+  const auto r = run_relslam(run_args(dir / "log.rawlog", dir / "path.txt", dir / "landmarks.txt", dir / "run"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<eval::SummaryRow> rows = eval::read_summary(dir / "run" / "summary.csv");
+  ASSERT_GE(rows.size(), 2u);
+  EXPECT_EQ(rows[1].algorithm, "ekf2d");
+  EXPECT_EQ(rows[1].status.kind, eval::RunStatus::Kind::Lost) << rows[1].status.text();
+  EXPECT_EQ(rows[1].status.text().rfind("lost: diverged at iteration ", 0), 0u) << rows[1].status.text();
+  EXPECT_GT(rows[1].trajectory.ate_rmse, 1.0);  // it is off indeed
+}
+
 TEST(PlanarRawlog, TheTwoDimensionalEkfIsRefusedOnAThreeDimensionalLog) {
   test::ScratchDir dir;
   write_demo_world(dir.path(), {.height_spread = 1.0, .frames = 60});

@@ -75,6 +75,23 @@ TEST(Scenario, IntegralFloatsAreIntegersAndNullClearsIterations) {
   EXPECT_FALSE(s.sim.iterations.has_value());
 }
 
+// The 64-bit seeds take every value up to 2^64 - 1, in a file and through --set; an int key
+// refuses a value past its range instead of reading it wrapped (once "got -1").
+TEST(Scenario, SixtyFourBitSeedsTakeEveryValue) {
+  const Scenario s = parse_scenario(R"({"seed": 18446744073709551615, "planar": {"generate": {"seed": 4294967296}}})",
+                                    "t.json", {{"planar.generate.seed", "18446744073709551615"}})
+                         .scenario;
+  EXPECT_EQ(s.seed, 18446744073709551615u);
+  EXPECT_EQ(s.planar.generate.seed, 18446744073709551615u);
+  EXPECT_EQ(parse_scenario(R"({"planar": {"generate": {"seed": 7.0}}})", "t.json").scenario.planar.generate.seed, 7u);
+  EXPECT_EQ(error_of("{}", {{"planar.generate.seed", "-1"}}),
+            "--set: planar.generate.seed: expected an integer >= 0, got -1");
+  EXPECT_EQ(error_of("{}", {{"planar.generate.seed", "18446744073709551616"}}),
+            "--set: planar.generate.seed: expected an integer >= 0, got 1.8446744073709552e+19");
+  EXPECT_EQ(error_of("{\"sim\": {\"loops\": 18446744073709551615}}"),
+            "scenarios/t.json:1: sim.loops: integer out of range: 18446744073709551615");
+}
+
 TEST(Scenario, DegreeKeysAreStoredInRadians) {
   const Scenario s = parse_scenario(R"({"sim": {"frustum": {"half_angle_deg": 30}}})", "t.json").scenario;
   EXPECT_NEAR(s.sim.frustum.half_angle_rad, std::numbers::pi / 6, 1e-15);

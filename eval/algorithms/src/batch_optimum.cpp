@@ -5,6 +5,7 @@
 // and the map is the solved landmarks.
 #include "batch_optimum.hpp"
 
+#include "map_landmark_columns.hpp"
 #include "optimum_problem.hpp"
 
 #include "relslam/eval/algorithms/map_frame_gauge.hpp"
@@ -24,20 +25,15 @@ struct LandmarkRow {
   const Eigen::Vector3d& position;
   int observations;
   const LandmarkScore& score;
+  const char* level = "optimum";  // the solved map's
 };
 
-const Columns<LandmarkRow> kLandmarkColumns = {
-    {"id", [](const LandmarkRow& r) { return csv_field(r.id); }},
-    {"x", [](const LandmarkRow& r) { return csv_field(r.position.x()); }},
-    {"y", [](const LandmarkRow& r) { return csv_field(r.position.y()); }},
-    {"z", [](const LandmarkRow& r) { return csv_field(r.position.z()); }},
-    {"true_id", [](const LandmarkRow& r) { return csv_field(r.score.true_id); }},
-    {"error", [](const LandmarkRow& r) { return csv_field(r.score.error); }},
-    // Every algorithm's landmarks.csv has a level (plots read any of them): here always the
-    // solved map's.
-    {"level", [](const LandmarkRow&) { return csv_field("optimum"); }},
-    {"observations", [](const LandmarkRow& r) { return csv_field(r.observations); }},
-};
+// The map's columns and the observations behind each landmark.
+const Columns<LandmarkRow> kLandmarkColumns = [] {
+  Columns<LandmarkRow> columns = map_landmark_columns<LandmarkRow>();
+  columns.push_back({"observations", [](const LandmarkRow& r) { return csv_field(r.observations); }});
+  return columns;
+}();
 
 // The summary's own columns: the solve, once per run.
 const Columns<OptimumReport> kSummaryColumns = {

@@ -2,6 +2,7 @@
 // with the vehicle's dead reckoning as odometry or, like the Relative algorithms, without.
 #include "ekf2d.hpp"
 
+#include "innovation_watch.hpp"
 #include "mrpt_filter.hpp"
 #include "relslam/eval/io/mrpt_observation.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
@@ -22,7 +23,7 @@ using mrpt::slam::CRangeBearingKFSLAM2D;
 class Ekf2d final : public MrptFilter {
  public:
   Ekf2d(const Ekf2dOptions& options, const std::string& name, bool use_odometry, const RangeBearingSensor& sensor)
-      : MrptFilter(name, {options.time_budget_ms, options.budget_iterations}),
+      : MrptFilter(name, {options.time_budget_ms, options.budget_iterations}, options.divergence),
         options_(options),
         use_odometry_(use_odometry),
         association_(use_odometry ? options.association : options.association_no_odometry),
@@ -81,6 +82,8 @@ class Ekf2d final : public MrptFilter {
     return robot_from_mrpt(Eigen::Vector3d(mean[0], mean[1], 0.0));
   }
 
+  StepInnovation innovation() const override { return filter_.step(); }
+
   std::vector<int> slots(std::size_t rows, std::size_t before, const std::vector<int>&) const override {
     return unknown_association_slots(filter_.getLastDataAssociation().results.associations, rows, before);
   }
@@ -89,7 +92,7 @@ class Ekf2d final : public MrptFilter {
   bool use_odometry_;
   EkfAssociation association_;
   RangeBearingSensor sensor_;
-  CRangeBearingKFSLAM2D filter_;
+  InnovationWatch<CRangeBearingKFSLAM2D> filter_;
 };
 
 }  // namespace

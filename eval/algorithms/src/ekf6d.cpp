@@ -2,6 +2,7 @@
 // thesis's baseline (6.7), driven so as to avoid MRPT 2.5.8's traps.
 #include "ekf6d.hpp"
 
+#include "innovation_watch.hpp"
 #include "mrpt_filter.hpp"
 #include "relslam/eval/io/mrpt_observation.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
@@ -22,7 +23,7 @@ using mrpt::slam::CRangeBearingKFSLAM;
 
 // The filter with its landmark-id table readable: with known association that table is the
 // authority on which state slot holds which landmark (MRPT keeps it protected).
-class Filter final : public CRangeBearingKFSLAM {
+class Filter final : public InnovationWatch<CRangeBearingKFSLAM> {
  public:
   // State slot of landmark `id`, -1 when the filter has not added it.
   int slot_of(int id) const {
@@ -34,7 +35,9 @@ class Filter final : public CRangeBearingKFSLAM {
 class Ekf6d final : public MrptFilter {
  public:
   Ekf6d(const Ekf6dOptions& options, const RangeBearingSensor& sensor)
-      : MrptFilter("ekf6d", {options.time_budget_ms, options.budget_iterations}), options_(options), sensor_(sensor) {
+      : MrptFilter("ekf6d", {options.time_budget_ms, options.budget_iterations}, options.divergence),
+        options_(options),
+        sensor_(sensor) {
     // Fixed in code and logged with the run.
     filter_.KF_options.method =
         options.method == EkfMethod::Davison ? mrpt::bayes::kfEKFAlaDavison : mrpt::bayes::kfEKFNaive;
@@ -101,6 +104,8 @@ class Ekf6d final : public MrptFilter {
   // Known association: the filter's own id table. Otherwise its data association; rows it left
   // unassociated became new landmarks, appended in row order (CKalmanFilterCapable's "add new
   // landmarks" step).
+  StepInnovation innovation() const override { return filter_.step(); }
+
   std::vector<int> slots(std::size_t rows, std::size_t before, const std::vector<int>& true_ids) const override {
     std::vector<int> out(rows, -1);
     if (options_.association == EkfAssociation::Known) {

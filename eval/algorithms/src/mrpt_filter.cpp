@@ -1,5 +1,7 @@
 #include "mrpt_filter.hpp"
 
+#include "map_landmark_columns.hpp"
+
 #include "relslam/eval/io/mrpt_exception_message.hpp"
 
 #include <stdexcept>
@@ -9,20 +11,13 @@ namespace {
 
 // One map landmark as landmarks.csv sees it.
 struct LandmarkRow {
-  std::size_t slot;
+  std::size_t id;  // the filter's state slot
   const Eigen::Vector3d& position;
   const LandmarkScore& score;
+  const char* level = "ekf";
 };
 
-const Columns<LandmarkRow> kLandmarkColumns = {
-    {"id", [](const LandmarkRow& r) { return csv_field(r.slot); }},
-    {"x", [](const LandmarkRow& r) { return csv_field(r.position.x()); }},
-    {"y", [](const LandmarkRow& r) { return csv_field(r.position.y()); }},
-    {"z", [](const LandmarkRow& r) { return csv_field(r.position.z()); }},
-    {"true_id", [](const LandmarkRow& r) { return csv_field(r.score.true_id); }},
-    {"error", [](const LandmarkRow& r) { return csv_field(r.score.error); }},
-    {"level", [](const LandmarkRow&) { return csv_field("ekf"); }},
-};
+const Columns<LandmarkRow> kLandmarkColumns = map_landmark_columns<LandmarkRow>();
 
 }  // namespace
 
@@ -45,6 +40,7 @@ void MrptFilter::step(const ObservationFrame& observation, const TruthFrame& tru
   } catch (const std::exception& e) {
     throw std::runtime_error(mrpt_exception_message(e.what()));
   }
+  divergence_.add(observation.iteration, innovation());
   // Only noted here: the ids are read in read_out(), outside the timed region, while the
   // recorder still holds this frame's truth.
   true_ids_ = &truth.landmark_ids;

@@ -1,9 +1,10 @@
 #pragma once
 // Internal to the algorithms layer: what MRPT's EKF baselines (6D, 2D) share as algorithms of
 // a run — a map copied out of the filter after each step (an update moves every landmark), the
-// landmarks.csv columns and the time budget.
+// landmarks.csv columns, the time budget and the divergence check.
 
 #include "relslam/eval/algorithms/algorithm.hpp"
+#include "relslam/eval/algorithms/filter_divergence.hpp"
 
 #include <map>
 #include <string>
@@ -23,6 +24,8 @@ class MrptFilter : public Algorithm {
   std::optional<Eigen::Vector3d> position(int id) const final { return map_[id]; }
   std::vector<int> map_ids() const final { return all_ids_; }
   std::optional<TimeBudget> time_budget() const final { return budget_; }
+  // Its innovations outgrew its own covariance (filter_divergence.hpp).
+  std::string lost() const final { return divergence_.reason(); }
 
   std::vector<std::string> iteration_columns() const final { return {}; }
   void iteration_fields(std::vector<CsvField>&) const final {}
@@ -31,7 +34,8 @@ class MrptFilter : public Algorithm {
                      const std::function<void(const std::vector<CsvField>&)>& row) const final;
 
  protected:
-  MrptFilter(std::string name, TimeBudget budget) : name_(std::move(name)), budget_(budget) {}
+  MrptFilter(std::string name, TimeBudget budget, const EkfDivergenceOptions& divergence)
+      : name_(std::move(name)), budget_(budget), divergence_(divergence) {}
 
   // One filter step on this frame; the only timed work. Throws when the filter fails.
   virtual void process(const ObservationFrame& observation, const TruthFrame& truth) = 0;
@@ -41,10 +45,13 @@ class MrptFilter : public Algorithm {
   virtual Eigen::Vector3d landmark(std::size_t index) const = 0;
   // The map slot each observation row went to (-1 unknown); `before` = landmarks before the step.
   virtual std::vector<int> slots(std::size_t rows, std::size_t before, const std::vector<int>& true_ids) const = 0;
+  // After process(): the step's innovations of associated observations (innovation_watch.hpp).
+  virtual StepInnovation innovation() const = 0;
 
  private:
   std::string name_;
   TimeBudget budget_;
+  FilterDivergence divergence_;
   std::size_t rows_ = 0, before_ = 0;
   const std::vector<int>* true_ids_ = nullptr;  // this step's truth ids, from step() to read_out()
   Rigid3 pose_;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -57,10 +58,13 @@ std::string parse_degrees(const json& v, double& out) {
 // same radians as the initialiser 15.0 * π / 180.
 json show_degrees(const double& radians) { return std::round(radians * 180.0 / std::numbers::pi * 1e9) / 1e9; }
 
-// Integral floats (3800.0) are integers; 2.5 is not.
+// Integral floats (3800.0) are integers; 2.5 is not. An unsigned value is read as unsigned
+// (18446744073709551615 is out of range, not -1).
 std::string parse_integer(const json& v, int& out) {
   double d = 0;
-  if (v.is_number_integer() || v.is_number_unsigned())
+  if (v.is_number_unsigned())
+    d = static_cast<double>(v.get<std::uint64_t>());
+  else if (v.is_number_integer())
     d = static_cast<double>(v.get<long long>());
   else if (v.is_number_float() && std::isfinite(v.get<double>()) && v.get<double>() == std::floor(v.get<double>()))
     d = v.get<double>();
@@ -70,6 +74,22 @@ std::string parse_integer(const json& v, int& out) {
     return "integer out of range: " + shown(v);
   out = static_cast<int>(d);
   return "";
+}
+
+// A 64-bit seed: every integer from 0 to 2^64 - 1, and integral floats up to 2^53 (beyond it a
+// float no longer names one integer).
+std::string parse_unsigned(const json& v, std::uint64_t& out) {
+  if (v.is_number_unsigned()) {
+    out = v.get<std::uint64_t>();
+    return "";
+  }
+  constexpr double kExactFloats = 9007199254740992.0;  // 2^53
+  if (v.is_number_float() && v.get<double>() >= 0 && v.get<double>() == std::floor(v.get<double>()) &&
+      v.get<double>() <= kExactFloats) {
+    out = static_cast<std::uint64_t>(v.get<double>());
+    return "";
+  }
+  return expected("an integer >= 0", v);
 }
 
 std::string parse_optional_integer(const json& v, std::optional<int>& out) {
@@ -149,6 +169,7 @@ struct PlainCodec {
 // The codec of each field type describe() can name with f.field(...).
 PlainCodec<double> codec_for(const double&) { return {"number", parse_number}; }
 PlainCodec<int> codec_for(const int&) { return {"integer", parse_integer}; }
+PlainCodec<std::uint64_t> codec_for(const std::uint64_t&) { return {"integer >= 0", parse_unsigned}; }
 PlainCodec<std::optional<int>> codec_for(const std::optional<int>&) {
   return {"integer or null", parse_optional_integer, show_optional_integer};
 }
@@ -273,21 +294,6 @@ void add_keys(std::vector<ScenarioKey>& keys, const std::string& prefix) {
   describe(defaults.*Options, fields);
 }
 
-ScenarioKey seed_key() {
-  return {"seed",
-          "integer >= 0",
-          "seed of every random choice (field, noise, dynamics, shuffle)",
-          false,
-          [](const Scenario& s) { return json(s.seed); },
-          [](Scenario& s, const json& v) -> std::string {
-            if (v.is_number_unsigned() || (v.is_number_integer() && v.get<long long>() >= 0)) {
-              s.seed = v.get<std::uint64_t>();
-              return "";
-            }
-            return expected("an integer >= 0", v);
-          }};
-}
-
 // The names are checked against the algorithm registry, a layer up (check_algorithm_names).
 ScenarioKey algorithms_key() {
   return {"algorithms",
@@ -320,7 +326,8 @@ std::vector<ScenarioKey> build_keys() {
                                     "simulation (point world), the synthetic binning benchmark S-BIN, the Victoria Park data set, "
                                     "or planar (walls, Relative Plane)",
                                     ChoiceCodec<ScenarioKind>{kScenarioKinds}),
-      seed_key(),
+      scenario_key<&Scenario::seed>("seed", "seed of every random choice (field, noise, dynamics, shuffle)",
+                                    codec_for(std::uint64_t())),
   };
   add_keys<&Scenario::sim>(keys, "sim");
   add_keys<&Scenario::planar>(keys, "planar");

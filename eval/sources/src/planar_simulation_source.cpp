@@ -109,7 +109,7 @@ sim::PlanarMap generated_planar_map(const LoadedScenario& loaded) {
   require_planar(loaded);
   const PlanarGenerateSettings& g = loaded.scenario.planar.generate;
   try {
-    return sim::generate_map({g.family, static_cast<std::uint64_t>(g.seed), g.clearance});
+    return sim::generate_map({g.family, g.seed, g.clearance});
   } catch (const OptionError& e) {
     throw loaded.error("planar.generate." + e.field(), e.problem());
   }

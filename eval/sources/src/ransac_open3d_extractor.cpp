@@ -23,11 +23,41 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <span>
+#include <cstdio>
 #include <map>
+#include <mutex>
+#include <regex>
+#include <span>
 
 namespace relslam::eval {
 namespace {
+
+// Open3D prints its messages to stdout in colour, where relslam writes its CSV, JSON and
+// progress. Once per process they go to stderr instead, without the colour codes, as relslam's
+// own messages ("relslam: [Open3D WARNING] Read PCD failed: unable to read data."). Only errors
+// by default; the reader lets warnings through, which say why a file could not be read.
+void route_open3d_messages() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    open3d::utility::Logger::GetInstance().SetPrintFunction([](const std::string& message) {
+      static const std::regex colour("\x1b\\[[0-9;]*m");
+      std::fprintf(stderr, "relslam: %s\n", std::regex_replace(message, colour, "").c_str());
+    });
+    open3d::utility::SetVerbosityLevel(open3d::utility::VerbosityLevel::Error);
+  });
+}
+
+// Open3D's warnings printed while it lives (the level before restored after, also on a throw).
+class Open3dWarnings {
+ public:
+  Open3dWarnings() { level_.Enter(); }
+  ~Open3dWarnings() { level_.Exit(); }
+  Open3dWarnings(const Open3dWarnings&) = delete;
+  Open3dWarnings& operator=(const Open3dWarnings&) = delete;
+
+ private:
+  open3d::utility::VerbosityContextManager level_{open3d::utility::VerbosityLevel::Warning};
+};
 
 // Open3D's OpenMP loops on one thread while it lives (the caller's setting restored after).
 class OneOpenMpThread {
@@ -47,7 +77,7 @@ class RansacOpen3dExtractor final : public PlaneExtractor {
       : em_(settings.em),
         options_(settings.ransac),
         threshold_(options_.distance_threshold > 0 ? options_.distance_threshold : settings.em.inlier_distance) {
-    open3d::utility::SetVerbosityLevel(open3d::utility::VerbosityLevel::Error);
+    route_open3d_messages();
   }
 
   em::ExtractedPlanes extract(const PlanarPointFrame& frame, std::uint64_t seed) override {
@@ -126,7 +156,7 @@ em::EmResult ransac_open3d_planes(std::span<const Eigen::Vector3d> points, const
 em::EmResult segment_plane_planes(std::span<const Eigen::Vector3d> points, const SegmentPlaneOptions& o,
                                   std::uint64_t seed) {
   const OneOpenMpThread one_thread;
-  open3d::utility::SetVerbosityLevel(open3d::utility::VerbosityLevel::Error);
+  route_open3d_messages();
   open3d::utility::random::Seed(static_cast<int>(seed % 2147483647ULL));
   em::EmResult result;
   std::vector<int> left = em::finite_points(points);
@@ -152,11 +182,16 @@ em::EmResult segment_plane_planes(std::span<const Eigen::Vector3d> points, const
 }
 
 PointCloudFrame read_open3d_points(const std::filesystem::path& path) {
+  route_open3d_messages();
   open3d::geometry::PointCloud cloud;
   open3d::io::ReadPointCloudOption options;
   options.print_progress = false;
-  if (!open3d::io::ReadPointCloud(path.string(), cloud, options))
-    throw InputError(path.string(), 0, "", "Open3D cannot read it as a point cloud");
+  bool read = false;
+  {
+    const Open3dWarnings warnings;
+    read = open3d::io::ReadPointCloud(path.string(), cloud, options);
+  }
+  if (!read) throw InputError(path.string(), 0, "", "Open3D cannot read it as a point cloud");
   PointCloudFrame frame;
   frame.source = "point file";
   frame.points.reserve(cloud.points_.size());

@@ -5,6 +5,7 @@
 // describe() gives each field's key, help and checks (relslam/core/option_fields.hpp).
 
 #include "relslam/core/option_fields.hpp"
+#include "relslam/eval/config/ekf_divergence_options.hpp"
 #include "relslam/eval/config/ekf6d_options.hpp"
 
 #include <numbers>
@@ -41,6 +42,8 @@ struct Ekf2dOptions {
   double chi2_threshold = 0.99;  // individual compatibility test of JCBB / NN
   double time_budget_ms = 1000.0;
   int budget_iterations = 20;
+  // A run whose innovations outgrow the filter's own covariance ends lost, not ok [C].
+  EkfDivergenceOptions divergence;
 };
 
 // The scenario keys of Ekf2dOptions (ekf2d.*): help and checks per field.
@@ -65,6 +68,7 @@ void describe(OptionsOf<Ekf2dOptions> auto& o, auto& f) {
   f.field("chi2_threshold", o.chi2_threshold, "planar EKF: data association compatibility", above(0.0), at_most(1.0));
   f.field("time_budget_ms", o.time_budget_ms, "stop the planar EKF past this time per scan", above(0.0));
   f.field("budget_iterations", o.budget_iterations, "...once its mean over this many scans exceeds it", at_least(1));
+  f.nested("divergence", o.divergence);
 }
 
 }  // namespace relslam::eval

@@ -4,6 +4,7 @@
 // checks (relslam/core/option_fields.hpp).
 
 #include "relslam/core/option_fields.hpp"
+#include "relslam/eval/config/ekf_divergence_options.hpp"
 
 #include <array>
 #include <numbers>
@@ -60,6 +61,8 @@ struct Ekf6dOptions {
   // last budget_iterations iterations exceeds the budget, so one slow step does not end a run [C].
   double time_budget_ms = 1000.0;
   int budget_iterations = 20;
+  // A run whose innovations outgrow the filter's own covariance ends lost, not ok [C].
+  EkfDivergenceOptions divergence;
 };
 
 // The scenario keys of Ekf6dOptions (ekf6d.*): help and checks per field.
@@ -83,6 +86,7 @@ void describe(OptionsOf<Ekf6dOptions> auto& o, auto& f) {
   f.field("time_budget_ms", o.time_budget_ms, "stop the EKF past this time per iteration (thesis: 1 s)", above(0.0));
   f.field("budget_iterations", o.budget_iterations, "...once its mean over this many iterations exceeds it",
           at_least(1));
+  f.nested("divergence", o.divergence);
 }
 
 }  // namespace relslam::eval

@@ -10,6 +10,7 @@
 #include "relslam/sim/odometry_noise.hpp"
 #include "relslam/sim/map_generator.hpp"
 
+#include <cstdint>
 #include <numbers>
 #include <string>
 #include <string_view>
@@ -80,7 +81,7 @@ inline std::string_view to_string(LaserPlanes planes) {
 // as generated_map.json, a map file like scenarios/maps/*.json.
 struct PlanarGenerateSettings {
   sim::MapFamily family = sim::MapFamily::None;  // none: read planar.map
-  int seed = 1;                                  // the map's own seed (the scenario's drives the noise)
+  std::uint64_t seed = 1;                        // the map's own seed (the scenario's drives the noise)
   double clearance = sim::MapGeneratorOptions{}.clearance;  // units from the path to every wall [C]
 };
 
