@@ -145,7 +145,7 @@ TEST(ViewingFrustum, DepthIsTheDistanceToTheNearestEdge) {
   const ViewingFrustum small = ViewingFrustum::small();  // 30 degrees half angle, near 0.1, far 7
   EXPECT_NEAR(small.depth({3.5, 0.0}), 3.5 * std::sin(30.0 * std::numbers::pi / 180.0), 1e-12);  // the sides
   EXPECT_NEAR(small.depth({6.5, 0.0}), 0.5, 1e-12);                                                // far
-  EXPECT_NEAR(small.depth({0.3, 0.0}), 0.2, 1e-12);                                                // near
+  EXPECT_NEAR(small.depth({0.15, 0.0}), 0.05, 1e-12);                                               // near
   EXPECT_NEAR(small.depth({2.0, 2.0 * std::tan(30.0 * std::numbers::pi / 180.0)}), 0.0, 1e-12);   // on a side
   EXPECT_NEAR(small.depth({8.0, 0.0}), -1.0, 1e-12);                                               // beyond far
   EXPECT_LT(small.depth({3.0, -3.0}), 0.0);
