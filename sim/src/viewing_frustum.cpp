@@ -1,6 +1,7 @@
 #include "relslam/sim/viewing_frustum.hpp"
 #include "relslam/core/option_fields.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace relslam::sim {
@@ -52,6 +53,13 @@ std::optional<FrustumShape> parse_frustum_shape(std::string_view name) {
 bool ViewingFrustum::contains(const Eigen::Vector2d& p) const {
   if (p.x() < near || std::abs(p.y()) > p.x() * std::tan(half_angle_rad)) return false;
   return shape == FrustumShape::Planar ? p.x() <= far : p.squaredNorm() <= far * far;
+}
+
+double ViewingFrustum::depth(const Eigen::Vector2d& p) const {
+  // The sides z = ±x·tan α of both shapes, as distances along their inward normals.
+  const double side = p.x() * std::sin(half_angle_rad) - std::abs(p.y()) * std::cos(half_angle_rad);
+  const double far_edge = shape == FrustumShape::Planar ? far - p.x() : far - p.norm();
+  return std::min({p.x() - near, far_edge, side});
 }
 
 std::optional<SegmentClip> ViewingFrustum::clip(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {

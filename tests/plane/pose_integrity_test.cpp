@@ -138,5 +138,25 @@ TEST(PoseIntegrity, RelocalisationFindsTheLostRobotOnTheWholeMap) {
   EXPECT_TRUE(relocalize(seen, square, reach, IntegrityOptions{}).has_value());
 }
 
+// A plane in view that Rule 1 still tracks on a map plane keeps it: the symmetric room's two
+// places become one, and a place where the tracked plane does not agree is none.
+TEST(PoseIntegrity, RelocalisationKeepsTheMapPlaneRule1Tracks) {
+  const std::vector<PlaneObject> map = room();
+  const std::vector<PlaneObject> square(map.begin(), map.begin() + 4);
+  const PlanarPose truth = PlanarPose::from(9.5, 8.0, 100 * kDeg);
+  const std::vector<PlaneObject> seen = {seen_from(map[0], truth), seen_from(map[1], truth), seen_from(map[2], truth)};
+  const std::vector<int> tracked = {0, -1, -1};
+  const std::optional<IntegrityResult> found = relocalize(seen, square, std::nullopt, IntegrityOptions{}, tracked);
+  ASSERT_TRUE(found.has_value());
+  EXPECT_EQ(found->planes, 3);
+  expect_pose(found->world_T_robot, truth, 1e-9);
+  // Tracked on the wall across the room: only the place turned by 180 degrees has it there.
+  const std::optional<IntegrityResult> turned = relocalize(seen, square, std::nullopt, IntegrityOptions{}, std::vector<int>{2, -1, -1});
+  ASSERT_TRUE(turned.has_value());
+  EXPECT_GT((turned->world_T_robot.translation - truth.translation).norm(), 1.0);
+  // Tracked on a wall it cannot lie on at any place that fits the others: nothing.
+  EXPECT_FALSE(relocalize(seen, square, std::nullopt, IntegrityOptions{}, std::vector<int>{1, -1, -1}).has_value());
+}
+
 }  // namespace
 }  // namespace relslam::plane

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 namespace relslam::sim {
 namespace {
@@ -136,6 +137,25 @@ TEST(ViewingFrustum, CheckRejectsAnOpenOrInvertedFootprint) {
   EXPECT_EQ(issues[0].problem, "must be > 0 and < 90, got 90");
   EXPECT_EQ(issues[1].field, "far");
   EXPECT_EQ(issues[1].problem, "must be > near (8), got 7");
+}
+
+// depth(): the distance to the footprint's nearest edge, negative outside (what marks an
+// extracted wall's end as cut by the field of view).
+TEST(ViewingFrustum, DepthIsTheDistanceToTheNearestEdge) {
+  const ViewingFrustum small = ViewingFrustum::small();  // 30 degrees half angle, near 0.1, far 7
+  EXPECT_NEAR(small.depth({3.5, 0.0}), 3.5 * std::sin(30.0 * std::numbers::pi / 180.0), 1e-12);  // the sides
+  EXPECT_NEAR(small.depth({6.5, 0.0}), 0.5, 1e-12);                                                // far
+  EXPECT_NEAR(small.depth({0.15, 0.0}), 0.05, 1e-12);                                               // near
+  EXPECT_NEAR(small.depth({2.0, 2.0 * std::tan(30.0 * std::numbers::pi / 180.0)}), 0.0, 1e-12);   // on a side
+  EXPECT_NEAR(small.depth({8.0, 0.0}), -1.0, 1e-12);                                               // beyond far
+  EXPECT_LT(small.depth({3.0, -3.0}), 0.0);
+  // The radial frustum's far edge is the circle.
+  ViewingFrustum radial = small;
+  radial.shape = FrustumShape::Radial;
+  EXPECT_NEAR(radial.depth({6.0, 0.5}), 7.0 - std::hypot(6.0, 0.5), 1e-12);
+  // depth >= 0 exactly where contains() holds.
+  for (double x = -1; x <= 9; x += 0.37)
+    for (double z = -6; z <= 6; z += 0.41) EXPECT_EQ(small.depth({x, z}) >= 0, small.contains({x, z})) << x << " " << z;
 }
 
 }  // namespace

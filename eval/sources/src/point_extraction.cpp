@@ -44,6 +44,10 @@ PointExtraction::PointExtraction(const LoadedScenario& loaded, const std::vector
       walls_(walls),
       // Thesis 4.5: an extracted end is a real wall end within max(0.5 s_pt, 3 σ_pt).
       end_tolerance_(std::max(0.5 * sensor.spacing, 3.0 * sensor.sigma)),
+      // The last point found on a wall the frustum cuts lies within about one grid cell of the
+      // edge (s_pt, jittered) and is moved by the noise (3 σ_pt) [C].
+      frustum_(sensor.frustum),
+      cut_margin_(sensor.spacing * (1.0 + sensor.jitter) + 3.0 * sensor.sigma),
       score_options_(ExtractionScoreOptions::for_em(loaded.scenario.extraction.em)) {
   const ExtractorSettings settings{loaded.scenario.extraction.em, loaded.scenario.extraction.ransac};
   try {
@@ -81,6 +85,10 @@ sim::PlaneSimFrame PointExtraction::extract(const sim::PointSimFrame& frame) {
   sim::PlaneSimFrame out;
   out.observation = std::move(planes.frame);
   out.observation.iteration = points.iteration;
+  for (PlaneObject& p : out.observation.planes) {
+    p.a_cut = frustum_.depth(p.a) < cut_margin_;
+    p.b_cut = frustum_.depth(p.b) < cut_margin_;
+  }
   out.truth.iteration = points.iteration;
   out.truth.world_T_robot = frame.truth.world_T_robot;
   std::vector<em::TrueWallEnds> ends;

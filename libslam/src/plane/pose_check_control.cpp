@@ -31,16 +31,38 @@ IntegrityResult motion_model_pose(const RltXPointsState& s, std::span<const Line
 
 std::optional<IntegrityResult> recovered_pose(const RltXPointsState& s, const RltXPointsScratch& in,
                                               const IntegrityOptions& options) {
-  std::vector<PlaneObject> map;
-  for (const MapPlane& m : s.builder_.map())
-    if (m.mapped) map.push_back(m.plane);
-  // Only within the robot's reach of the last checked pose, and no further than it can go in
-  // continuity_window iterations: along a corridor of equal pieces a wider search finds the
-  // wrong piece as readily as the right one.
+  // Only within the robot's reach of the last checked pose (max_step per iteration since): along
+  // a corridor of equal pieces a wider search finds the wrong piece as readily as the right one.
+  // The reach grows for as long as the pose is lost, so the robot's true place stays inside it
+  // and competes with any place that fits by chance (a reach held at continuity_window
+  // iterations left only wrong places to find after a long loss on the generated offices).
   if (!s.last_checked_pose_.valid) return std::nullopt;
-  const int gap = std::min(s.iteration_ - s.last_checked_iteration_, options.continuity_window);
+  std::vector<PlaneObject> map;
+  std::vector<int> index_of(s.builder_.map().size(), -1);  // PlaneId -> index in `map`
+  for (std::size_t p = 0; p < s.builder_.map().size(); ++p)
+    if (s.builder_.map()[p].mapped) {
+      index_of[p] = static_cast<int>(map.size());
+      map.push_back(s.builder_.map()[p].plane);
+    }
+  // A plane in view that Rule 1 registered to a mapped RltPlane keeps that map plane.
+  std::vector<int> known;
+  for (const PlaneId p : in.assignment_)
+    known.push_back(p != kNone && p < static_cast<PlaneId>(index_of.size()) ? index_of[p] : -1);
+  const int gap = s.iteration_ - s.last_checked_iteration_;
   return relocalize(in.stamped_, map, NearPose{s.last_checked_pose_.world_T_robot, options.max_step * gap + options.offset_bound},
-                    options);
+                    options, known);
+}
+
+// A relocalised pose is valid only when the find before it, at most recover_after iterations
+// earlier, lies within the robot's reach of it [C]: a place that fits the planes in view by
+// chance (a map the robot has not yet seen the right part of) seldom fits again a step later.
+bool confirmed(RltXPointsState& s, const IntegrityResult& found, const IntegrityOptions& options) {
+  const int gap = s.iteration_ - s.recovery_candidate_iteration_;
+  const bool confirms = s.recovery_candidate_.valid && gap <= options.recover_after &&
+                        within_reach(found.world_T_robot, s.recovery_candidate_.world_T_robot, gap, options);
+  s.recovery_candidate_ = {found.world_T_robot, true, found.planes, found.reason};
+  s.recovery_candidate_iteration_ = s.iteration_;
+  return confirms;
 }
 
 }  // namespace
@@ -66,7 +88,8 @@ void check_poset(RltXPointsState& s, const RltXPointsScratch& in, const Integrit
   const bool unfixed = r.reason == PoseReason::NoPlanes || r.reason == PoseReason::OneDirection;
   if (!r.valid && unfixed && s.motion_model_active_) r = motion_model_pose(s, pairs, options);
   if (!r.valid && options.recovery && s.iteration_ - s.last_checked_iteration_ >= options.recover_after)
-    if (const std::optional<IntegrityResult> found = recovered_pose(s, in, options)) r = *found;
+    if (const std::optional<IntegrityResult> found = recovered_pose(s, in, options))
+      if (confirmed(s, *found, options)) r = *found;
   s.checked_pose_ = {r.world_T_robot, r.valid, r.planes, r.reason};
   // The last pose the lines fixed (a motion model's track is not one): continuity, recovery's
   // reach and the motion model's anchor are judged from it.

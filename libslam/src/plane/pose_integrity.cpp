@@ -59,6 +59,28 @@ bool continuous(const PlanarPose& pose, const std::optional<std::pair<PlanarPose
          std::abs(wrap_angle(pose.heading - previous->first.heading)) <= o.max_turn_rad * gap + o.angle_bound_rad;
 }
 
+// The planes in view that `pose` puts on the map, each with the map plane it agrees with best
+// (a registered one with its own, `known`): false when a registered plane does not agree there,
+// as Rule 1's tracking of it is better evidence than a fit of two lines.
+bool support_at(const PlanarPose& pose, std::span<const PlaneObject> seen, std::span<const PlaneObject> map,
+                std::span<const int> known, const IntegrityOptions& o, std::vector<LinePair>& support) {
+  support.clear();
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    if (i < known.size() && known[i] >= 0) {
+      const LinePair pair{seen[i], map[static_cast<std::size_t>(known[i])]};
+      if (residual(pair, pose, o) > 1.0) return false;
+      support.push_back(pair);
+      continue;
+    }
+    double lowest = 1.0;
+    const PlaneObject* match = nullptr;
+    for (const PlaneObject& m : map)
+      if (const double r = residual({seen[i], m}, pose, o); r <= lowest) lowest = r, match = &m;
+    if (match != nullptr) support.push_back({seen[i], *match});
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string_view to_string(PoseReason reason) {
@@ -72,6 +94,10 @@ std::string_view to_string(PoseReason reason) {
     case PoseReason::Jump: return "jump";
   }
   return "?";
+}
+
+bool within_reach(const PlanarPose& pose, const PlanarPose& previous, int iterations, const IntegrityOptions& options) {
+  return continuous(pose, std::pair(previous, iterations), options);
 }
 
 std::optional<PlanarPose> fit_pose_to_lines(std::span<const LinePair> pairs, double min_angle_rad) {
@@ -134,8 +160,10 @@ IntegrityResult check_pose(std::span<const LinePair> pairs, const IntegrityOptio
 }
 
 std::optional<IntegrityResult> relocalize(std::span<const PlaneObject> seen, std::span<const PlaneObject> map,
-                                          const std::optional<NearPose>& near, const IntegrityOptions& options) {
+                                          const std::optional<NearPose>& near, const IntegrityOptions& options,
+                                          std::span<const int> known) {
   const double bound = std::sin(options.min_angle_rad);
+  const auto known_at = [&](std::size_t i) { return i < known.size() ? known[i] : -1; };
   std::vector<IntegrityResult> found;  // distinct poses (further apart than offset_bound)
   std::vector<LinePair> support;
   for (std::size_t i = 0; i < seen.size(); ++i)
@@ -146,19 +174,15 @@ std::optional<IntegrityResult> relocalize(std::span<const PlaneObject> seen, std
         for (std::size_t q = 0; q < map.size(); ++q) {
           if (p == q || std::abs(wrap_angle(map[q].angle() - map[p].angle() - turn)) > 2 * options.angle_bound_rad)
             continue;
+          // A plane in view registered to a map plane (Rule 1) is tried with that one only.
+          if ((known_at(i) >= 0 && known_at(i) != static_cast<int>(p)) ||
+              (known_at(j) >= 0 && known_at(j) != static_cast<int>(q)))
+            continue;
           const LinePair two[2] = {{seen[i], map[p]}, {seen[j], map[q]}};
           const std::optional<PlanarPose> pose = fit_pose_to_lines(two, options.min_angle_rad);
           if (!pose || !agrees(two[0], *pose, options) || !agrees(two[1], *pose, options)) continue;
           if (near && (pose->translation - near->pose.translation).norm() > near->radius) continue;
-          // Each plane in view goes to the map plane it agrees with best.
-          support.clear();
-          for (const PlaneObject& s : seen) {
-            double lowest = 1.0;
-            const PlaneObject* match = nullptr;
-            for (const PlaneObject& m : map)
-              if (const double r = residual({s, m}, *pose, options); r <= lowest) lowest = r, match = &m;
-            if (match != nullptr) support.push_back({s, *match});
-          }
+          if (!support_at(*pose, seen, map, known, options, support)) continue;
           const IntegrityResult checked = check_pose(support, options);
           if (!checked.valid) continue;
           const auto same = std::ranges::find_if(found, [&](const IntegrityResult& f) {

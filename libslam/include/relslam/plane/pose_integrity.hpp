@@ -85,6 +85,10 @@ bool agrees(const LinePair& pair, const PlanarPose& world_T_robot, const Integri
 IntegrityResult check_pose(std::span<const LinePair> pairs, const IntegrityOptions& options,
                            const std::optional<std::pair<PlanarPose, int>>& previous = std::nullopt);
 
+// Whether `pose` follows from `previous`, `iterations` earlier, by a robot's motion (max_step,
+// max_turn_rad per iteration, within the bounds).
+bool within_reach(const PlanarPose& pose, const PlanarPose& previous, int iterations, const IntegrityOptions& options);
+
 // Where the robot can be: within `radius` of `pose` (the last valid pose and how far the robot
 // can have gone since).
 struct NearPose {
@@ -97,8 +101,11 @@ struct NearPose {
 // same angle, within `near` when given. The pose must pass check_pose on the three or more
 // planes it puts on the map, and every other place must fit at least two planes fewer (poses
 // within offset_bound are one): nullopt when none is, or when two places fit about as well (a
-// symmetric room, a corridor of equal pieces) — a guess is never a valid pose.
+// symmetric room, a corridor of equal pieces) — a guess is never a valid pose. `known[i]`, when
+// given and not -1, is the index in `map` of the map plane seen[i] is registered to (Rule 1 tracked
+// it there): seen[i] is paired with that one only, and a place where it does not agree is none.
 std::optional<IntegrityResult> relocalize(std::span<const PlaneObject> seen, std::span<const PlaneObject> map,
-                                          const std::optional<NearPose>& near, const IntegrityOptions& options);
+                                          const std::optional<NearPose>& near, const IntegrityOptions& options,
+                                          std::span<const int> known = {});
 
 }  // namespace relslam::plane

@@ -41,6 +41,9 @@ struct RltXPointsState {
   RltPoset checked_pose_;
   RltPoset last_checked_pose_;      // the last valid one ...
   int last_checked_iteration_ = 0;  // ... and its iteration
+  // Relocalisation's last find while lost, valid only once a later find confirms it.
+  RltPoset recovery_candidate_;
+  int recovery_candidate_iteration_ = 0;
   int last_valid_iteration_ = 0;
   std::vector<RltXMMPoint> motion_models_;
   bool motion_model_active_ = false;  // the last of motion_models_ carries the pose

@@ -53,6 +53,10 @@ struct ViewingFrustum {
   static ViewingFrustum large() { return {FrustumShape::Planar, 35.0 * std::numbers::pi / 180.0, 0.1, 30.0}; }
 
   bool contains(const Eigen::Vector2d& p_robot) const;
+  // How far p_robot lies inside the footprint: its distance to the nearest edge (near line, far
+  // line or circle, a side), negative outside. A sensor that reports only points can tell by it
+  // which ends of a wall it found were cut by its field of view.
+  double depth(const Eigen::Vector2d& p_robot) const;
   // The part of the segment a→b (robot frame) inside the footprint, boundary included, or
   // nothing when the segment misses it. Cyrus–Beck against the straight edges; for Radial the
   // far circle is intersected exactly.

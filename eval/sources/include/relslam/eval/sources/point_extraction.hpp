@@ -41,7 +41,10 @@ class PointExtraction {
   // point_frames.csv's columns: iteration, index, x, y, z (robot frame), true_wall.
   static const std::vector<std::string>& point_columns();
 
-  // The planes of one point frame with their truth (scored, and recorded when recording).
+  // The planes of one point frame with their truth (scored, and recorded when recording). An
+  // end within cut_margin of the frustum's edge is flagged as cut by the field of view
+  // (PlaneObject::a_cut, b_cut), as the plane sensor flags the ends its clip made: something the
+  // sensor knows, not the truth.
   sim::PlaneSimFrame extract(const sim::PointSimFrame& frame);
   double last_ms() const { return last_ms_; }
   const ExtractionFrameScore& last_score() const { return last_score_; }
@@ -56,6 +59,9 @@ class PointExtraction {
   std::unique_ptr<PlaneExtractor> extractor_;
   const std::vector<PlaneObject>& walls_;
   double end_tolerance_;
+  // The sensor's field of view and how close to its edge an extracted end counts as cut by it.
+  sim::ViewingFrustum frustum_;
+  double cut_margin_;
   ExtractionScoreOptions score_options_;
   std::optional<CsvWriter> frames_;
   std::vector<int> point_frames_;  // sorted
