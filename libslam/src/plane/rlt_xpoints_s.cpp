@@ -132,6 +132,7 @@ void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
     RltXPoint& x = xpoints_[mm.xpoint()];
     if (!x.needs_compute()) continue;
     if (!mm.ended()) mm.compute(planes_, options_.motion_model);  // an ended track is frozen
+    x.set_track_trusted(x.track_trusted() && mm.along_observed());
     x.compute(planes_, compute_options);                          // only clears the flag
     ++result.groups_computed;
   }
