@@ -116,7 +116,6 @@ std::optional<PlanarPose> RltMapBuilder::uncut_first_observation_pose(const RltX
 void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
                               const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
                               const BuildMapOptions& options) {
-  const double same_length = options.key_point.same_length;
   // Rebuilt from the links every iteration (thesis 4.4.3.11): a group recomputed this iteration moves
   // every group chained after it.
   map_.assign(planes.size(), MapPlane{});
@@ -138,43 +137,51 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
     } else if (link.first) {
       place_x0(to, planes, world_T_start, options, world_T_to);
     } else if (xpoints[link.from].placed()) {
-      // Rule 8: each linking plane says where `to` is from where `from` put it; averaged.
-      bool refused = false;  // a linking plane whose two pieces do not share an end (below)
-      for (PlaneId p : link.planes) {
-        const RltXPoint& from = xpoints[link_source(xpoints[link.from], p, options)];
-        const RltXPointRef* in_from = planes[p].ref(from.id());
-        const RltXPointRef* in_to = planes[p].ref(to.id());
-        if (!in_from->valid || !in_to->valid) continue;
-        PlanarPose from_T_plane = in_from->pose, to_T_plane = in_to->pose;
-        if (options.key_point.key_points && std::abs(in_from->max_length - in_to->max_length) > same_length) {
-          // Rule 17: the smaller membership re-anchored to the larger size on its own key point;
-          // without one it cannot be resized and the plane does not link (thesis 4.3.4).
-          const bool from_smaller = in_from->max_length < in_to->max_length;
-          const RltXPointRef* smaller = from_smaller ? in_from : in_to;
-          const double larger = std::max(in_from->max_length, in_to->max_length);
-          if (smaller->key_point == KeyPoint::None) continue;
-          // Beyond the thesis (adaptive): the larger must hold the smaller's key-point end. Two
-          // pieces of one wall, each with the other end real, say nothing about where along the
-          // wall one lies from the other (Fig 87's L* is the wall's size only when one is whole).
-          const RltXPointRef* larger_ref = from_smaller ? in_to : in_from;
-          if (options.prefer_grounded &&
-              !holds_end(larger_ref->size_static, larger_ref->key_point, larger_ref->max_length, smaller->key_point,
-                         planes[p].longest_seen(), same_length)) {
-            refused = true;
-            continue;
-          }
-          (from_smaller ? from_T_plane : to_T_plane) =
-              reanchor(smaller->pose, smaller->max_length, larger, smaller->key_point);
-        }
-        world_T_to.add(from.world_pose() * from_T_plane * to_T_plane.inverse());
-      }
-      // ... and then the others do not place the group either: each says where `to` is in full,
-      // the refused one's error included in the comparisons that put them in `to` [C].
-      if (refused) world_T_to = PoseMean{};
+      link_to(link, xpoints, planes, options, world_T_to);
     }
     to.place(world_T_to.mean(), world_T_to.count() > 0);
     if (to.placed()) place_planes(to, planes, grounded_[link.to] != 0, options);
   }
+}
+
+void RltMapBuilder::link_to(const RltXPointLink& link, const std::vector<RltXPoint>& xpoints,
+                            const std::vector<RltPlane>& planes, const BuildMapOptions& options,
+                            PoseMean& world_T_to) const {
+  // Rule 8: each linking plane says where `to` is from where `from` put it; averaged.
+  const RltXPoint& to = xpoints[link.to];
+  const double same_length = options.key_point.same_length;
+  bool refused = false;  // a linking plane whose two pieces do not share an end (below)
+  for (PlaneId p : link.planes) {
+    const RltXPoint& from = xpoints[link_source(xpoints[link.from], p, options)];
+    const RltXPointRef* in_from = planes[p].ref(from.id());
+    const RltXPointRef* in_to = planes[p].ref(to.id());
+    if (!in_from->valid || !in_to->valid) continue;
+    PlanarPose from_T_plane = in_from->pose, to_T_plane = in_to->pose;
+    if (options.key_point.key_points && std::abs(in_from->max_length - in_to->max_length) > same_length) {
+      // Rule 17: the smaller membership re-anchored to the larger size on its own key point;
+      // without one it cannot be resized and the plane does not link (thesis 4.3.4).
+      const bool from_smaller = in_from->max_length < in_to->max_length;
+      const RltXPointRef* smaller = from_smaller ? in_from : in_to;
+      const double larger = std::max(in_from->max_length, in_to->max_length);
+      if (smaller->key_point == KeyPoint::None) continue;
+      // Beyond the thesis (adaptive): the larger must hold the smaller's key-point end. Two
+      // pieces of one wall, each with the other end real, say nothing about where along the
+      // wall one lies from the other (Fig 87's L* is the wall's size only when one is whole).
+      const RltXPointRef* larger_ref = from_smaller ? in_to : in_from;
+      if (options.prefer_grounded && !holds_end(larger_ref->size_static, larger_ref->key_point, larger_ref->max_length,
+                                                smaller->key_point, planes[p].longest_seen(), same_length)) {
+        refused = true;
+        continue;
+      }
+      (from_smaller ? from_T_plane : to_T_plane) = reanchor(smaller->pose, smaller->max_length, larger, smaller->key_point);
+    }
+    world_T_to.add(from.world_pose() * from_T_plane * to_T_plane.inverse());
+  }
+  // ... and then the link places nothing: the other linking planes' estimates come from the
+  // same two groups, whose comparisons joined the refused plane's pieces as if they were one
+  // size. Keeping them (even those the groups saw static: a piece the frustum cuts at both ends
+  // keeps its length too) put wrong poses back on the generated rooms [C].
+  if (refused) world_T_to = PoseMean{};
 }
 
 XPointId RltMapBuilder::link_source(const RltXPoint& from, PlaneId p, const BuildMapOptions& options) const {

@@ -153,6 +153,9 @@ class RltMapBuilder {
   int mapped_count() const { return mapped_count_; }
 
  private:
+  // Rule 8 (with Rule 17): where `link` puts its group, added to world_T_to.
+  void link_to(const RltXPointLink& link, const std::vector<RltXPoint>& xpoints, const std::vector<RltPlane>& planes,
+               const BuildMapOptions& options, PoseMean& world_T_to) const;
   // The group a link from `from` through plane p is placed from (MapPlane::grounded).
   XPointId link_source(const RltXPoint& from, PlaneId p, const BuildMapOptions& options) const;
   void place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, bool grounded,
