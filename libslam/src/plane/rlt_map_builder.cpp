@@ -83,11 +83,11 @@ void RltMapBuilder::place_x0(const RltXPoint& x0, const std::vector<RltPlane>& p
   // sensor did not cut (uncut_first_observation_pose) [C].
   enum class Pass { Uncut, Grown, AsSeen };
   for (Pass pass : {Pass::Uncut, Pass::Grown, Pass::AsSeen}) {
-    if (world_T_x0.count() > 0 || (pass == Pass::Uncut && !options.cut_ends_open)) continue;
+    if (world_T_x0.count() > 0 || (pass == Pass::Uncut) != options.cut_ends_open) continue;
     for (PlaneId p : x0.planes()) {
       const RltXPointRef* ref = planes[p].ref(x0.id());
       if (!ref->valid || planes[p].created_iteration() != earliest) continue;
-      const std::optional<PlanarPose> first = pass == Pass::Uncut   ? uncut_first_observation_pose(x0, planes[p], planes, options)
+      const std::optional<PlanarPose> first = pass == Pass::Uncut   ? uncut_first_observation_pose(x0, planes[p], options)
                                               : pass == Pass::Grown ? first_observation_pose(x0, planes[p], planes, options)
                                                                     : planes[p].first_observation().pose();
       if (!first) continue;
@@ -98,19 +98,19 @@ void RltMapBuilder::place_x0(const RltXPoint& x0, const std::vector<RltPlane>& p
 }
 
 std::optional<PlanarPose> RltMapBuilder::uncut_first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
-                                                                       const std::vector<RltPlane>& planes,
                                                                        const BuildMapOptions& options) const {
-  // open_cut_ends (beyond Rule 4): a first observation the sensor saw whole, or grown to X0's
-  // size from a key point at an end it did not cut, puts X0 exactly. One cut at both ends lies
-  // anywhere along the wall from where X0's comparisons saw it (the robot may have driven along
-  // the wall in between); such planes are used only when X0 has no other.
+  // open_cut_ends (beyond Rule 4): the first reading says where X0 is exactly only through an end
+  // the sensor saw as the wall's, grown to X0's size on that end, and only when X0 has the plane
+  // anchored on the same end or whole. A first reading cut at both ends lies anywhere along the
+  // wall from where X0's comparisons saw it (the robot may have driven along the wall in between).
   const PlaneObject& first = plane.first_observation();
-  if (!first.a_cut && !first.b_cut) return first_observation_pose(x0, plane, planes, options);
-  std::vector<const RltPlane*> others;
-  for (PlaneId p : x0.planes()) others.push_back(&planes[p]);
-  const KeyPoint kp = key_point_at(plane, first.iteration, others, options.key_point);
-  if (!((kp == KeyPoint::Left && !first.a_cut) || (kp == KeyPoint::Right && !first.b_cut))) return std::nullopt;
-  return adjust_size(first, plane.ref(x0.id())->max_length, kp).pose();
+  const RltXPointRef* ref = plane.ref(x0.id());
+  const bool whole = plane.whole_length(true) <= ref->max_length + options.key_point.same_length;
+  for (const KeyPoint end : {KeyPoint::Left, KeyPoint::Right}) {
+    const bool cut = end == KeyPoint::Left ? first.a_cut : first.b_cut;
+    if (!cut && (whole || ref->key_point == end)) return adjust_size(first, ref->max_length, end).pose();
+  }
+  return std::nullopt;
 }
 
 void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
@@ -167,9 +167,12 @@ void RltMapBuilder::link_to(const RltXPointLink& link, const std::vector<RltXPoi
       // Beyond the thesis (adaptive): the larger must hold the smaller's key-point end. Two
       // pieces of one wall, each with the other end real, say nothing about where along the
       // wall one lies from the other (Fig 87's L* is the wall's size only when one is whole).
+      // With open_cut_ends a piece is whole when one uncut reading was as long (whole_length),
+      // unless a motion model's track measured the extent (Rule 23: over many readings).
       const RltXPointRef* larger_ref = from_smaller ? in_to : in_from;
+      const double whole = larger_ref->tracked ? planes[p].longest_seen() : planes[p].whole_length(options.cut_ends_open);
       if (options.prefer_grounded && !holds_end(larger_ref->size_static, larger_ref->key_point, larger_ref->max_length,
-                                                smaller->key_point, planes[p].longest_seen(), same_length)) {
+                                                smaller->key_point, whole, same_length)) {
         refused = true;
         continue;
       }

@@ -399,7 +399,7 @@ void RltXPoint::chain_with_size_correction(std::vector<RltPlane>& planes, const 
       // and the two pieces' distance along the wall is unknown (Fig 87 assumes one size).
       if (options.consistent_ends && !cp.is_static && parent_anchor != KeyPoint::None &&
           kp_parent != KeyPoint::None && kp_parent != parent_anchor &&
-          planes[chain_[k - 1]].longest_seen() > cp.length + options.same_length)
+          planes[chain_[k - 1]].whole_length(options.compare.cut_ends_open) > cp.length + options.same_length)
         child->valid = false;
       parent_anchor = kp_child;
 

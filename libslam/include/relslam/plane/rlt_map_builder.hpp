@@ -164,7 +164,6 @@ class RltMapBuilder {
   void place_x0(const RltXPoint& x0, const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
                 const BuildMapOptions& options, PoseMean& world_T_x0) const;
   std::optional<PlanarPose> uncut_first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
-                                                         const std::vector<RltPlane>& planes,
                                                          const BuildMapOptions& options) const;
   std::optional<PlanarPose> first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
                                                    const std::vector<RltPlane>& planes,
