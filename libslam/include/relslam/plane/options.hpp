@@ -237,16 +237,16 @@ struct RelativePlaneOptions {
   Preset preset = Preset::Thesis;
   // The adaptive preset's pose check and relocalisation.
   IntegrityOptions integrity;
-  // Adaptive preset only [C: off here, on in preset_options(Adaptive), so in scenarios]: the
-  // sensor's flags for the ends its field of view cut (PlaneObject::a_cut, b_cut) are used. A cut end is no key point (a pair of them can
+  // Adaptive preset only [C: off]: the sensor's flags for the ends its field of view cut
+  // (PlaneObject::a_cut, b_cut) are used. A cut end is no key point (a pair of them can
   // look static and tie Rule 15, as in a mirrored corridor), X0 takes only planes its base
   // compares on ends seen uncut, the motion model takes the along-plane motion from an uncut end
   // in view, and its pose is refused after a step whose along-plane motion went unmeasured. This
   // departs from the thesis's Rules 4 (X0's planes), 13–15 (every end may be a key point) and
   // 23–25 (the forward-only motion model). With the adaptive preset's map building (only from
-  // what was observed, MapPlane::grounded) no generated map's run keeps a wrong pose valid with
-  // it, while without it the clutter and the inner walls do (docs/generated-maps.md). Off in the
-  // library's default options, which are the thesis's.
+  // what was observed, MapPlane::grounded) no generated map's run (map seed 1) keeps a wrong pose
+  // valid with it, while without it the clutter and the inner walls do; it stays off because the
+  // dead-end corridor with noise (scenarios/maps/i_corridor_l17.json) does (docs/generated-maps.md).
   bool open_cut_ends = false;
   // Rule 1 registration bounds [R].
   MatchBounds local_match;
@@ -321,7 +321,6 @@ struct RelativePlaneOptions {
 inline RelativePlaneOptions preset_options(Preset preset) {
   RelativePlaneOptions o;
   o.preset = preset;
-  o.open_cut_ends = preset == Preset::Adaptive;
   return o;
 }
 
@@ -497,8 +496,8 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
            kPresets);
   f.nested("integrity", o.integrity);
   f.field("open_cut_ends", o.open_cut_ends,
-          "adaptive preset (on by default there): ends the sensor's field of view cut are no key points, X0 and "
-          "the motion model use uncut ends only (beyond Rules 4, 13-15, 23-25) [C]");
+          "adaptive preset, experimental: ends the sensor's field of view cut are no key points, X0 and the "
+          "motion model use uncut ends only (beyond Rules 4, 13-15, 23-25) [C]");
   f.nested("local_match", o.local_match, true);
   f.nested("global_match", o.global_match, false);
   f.field("plane_capacity", o.plane_capacity, "observations kept per RltPlane (thesis 4.4.3.4: 1200)", at_least(1));
