@@ -83,7 +83,7 @@ void RltMapBuilder::place_x0(const RltXPoint& x0, const std::vector<RltPlane>& p
   // sensor did not cut (uncut_first_observation_pose) [C].
   enum class Pass { Uncut, Grown, AsSeen };
   for (Pass pass : {Pass::Uncut, Pass::Grown, Pass::AsSeen}) {
-    if (world_T_x0.count() > 0 || (pass == Pass::Uncut) != options.cut_ends_open) continue;
+    if (world_T_x0.count() > 0 || (pass == Pass::Uncut) != (options.cut_ends_open && options.prefer_grounded)) continue;
     for (PlaneId p : x0.planes()) {
       const RltXPointRef* ref = planes[p].ref(x0.id());
       if (!ref->valid || planes[p].created_iteration() != earliest) continue;
@@ -217,7 +217,7 @@ void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltP
     entry.source = xpoint.id();
     entry.key_point = ref->key_point;
     entry.size_static = ref->size_static;
-    entry.grounded = grounded;
+    entry.grounded = grounded || !options.prefer_grounded;  // without grounded_map every plane counts
     const PlaneObject& seen = planes[p].latest();
     entry.plane = PlaneObject::from_pose(entry.world_T_plane, entry.length, seen.y_lo, seen.y_lo + ref->height);
   }

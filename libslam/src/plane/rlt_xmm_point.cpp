@@ -77,7 +77,7 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
       if (const std::optional<Eigen::Vector2d> moved =
               options.real_end_motion ? real_end_motion(*previous, seen, previous_psi, psi) : std::nullopt)
         sample.delta_tangent = moved->dot(u);
-      else if (along_dropped)
+      else if (along_dropped && options.track_along)
         along_observed_ = false;
       position += sample.delta_normal * -n + sample.delta_tangent * u;
     }

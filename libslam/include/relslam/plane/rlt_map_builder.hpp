@@ -116,7 +116,7 @@ struct BuildMapOptions {
       : key_point(o),
         anchor_first_observation(o.rules.anchor_first_observation),
         first_reading_resize(o.rules.first_reading_resize),
-        prefer_grounded(o.preset == Preset::Adaptive),
+        prefer_grounded(map_grounded(o)),
         cut_ends_open(plane::cut_ends_open(o)) {}
 };
 

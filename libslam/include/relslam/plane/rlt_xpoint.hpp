@@ -55,7 +55,7 @@ struct ComputeXPointOptions {
         size_correction(o.rules.size_correction),
         save_snapshot(o.rules.save_snapshot),
         save_reserve(o.rules.save_reserve),
-        consistent_ends(o.preset == Preset::Adaptive) {}
+        consistent_ends(map_grounded(o)) {}
 };
 
 // What ReorderPlanes reads of RelativePlaneOptions (Rule 30, thesis 4.3.7.1): when it is due,
