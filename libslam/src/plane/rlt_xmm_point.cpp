@@ -102,7 +102,12 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
     previous = &seen;
   }
 
+  fill_membership(planes, grew_min, grew_max);
+}
+
+void RltXMMPoint::fill_membership(std::vector<RltPlane>& planes, bool grew_min, bool grew_max) const {
   // The membership: the plane at its tracked extent; its key point is the end that did not move.
+  const RltPlane& p = planes[plane_];
   RltXPointRef* ref = planes[plane_].ref(xpoint_);
   ref->valid = true;
   ref->tracked = true;

@@ -66,6 +66,9 @@ class RltXMMPoint {
   double s_max() const { return s_max_; }
 
  private:
+  // The membership of compute's track: the plane at its tracked extent, its key point the end
+  // that did not move (grew_min, grew_max: which ends Rule 23 grew).
+  void fill_membership(std::vector<RltPlane>& planes, bool grew_min, bool grew_max) const;
   XPointId xpoint_;
   PlaneId plane_;
   PlanarPose world_T_anchor_;
