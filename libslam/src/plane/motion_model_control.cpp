@@ -55,6 +55,9 @@ void create_motion_model(RltXPointsState& s, PlaneId plane, const PlanarPose& wo
   s.founders_.push_back(kNone);
   RltXPoint& x = s.xpoints_.emplace_back(id, s.iteration_, std::vector<PlaneId>{plane});
   x.set_anchor(s.last_valid_pose_.world_T_robot);
+  // Adaptive preset: trusted while its anchor is a checked pose (and its track, below, measures
+  // its motion along the plane).
+  x.set_track_trusted(s.last_valid_iteration_ == s.last_checked_iteration_);
   s.links_.push_back({s.current_, id, {plane}, false, s.iteration_});
   if (s.current_ != kNone) {
     s.xpoints_[s.current_].add_adjacent(id);
@@ -66,6 +69,7 @@ void create_motion_model(RltXPointsState& s, PlaneId plane, const PlanarPose& wo
   s.current_ = id;
   // Computed and placed at once, so this iteration already has its pose.
   s.motion_models_.back().compute(s.planes_, options.motion_model);
+  s.xpoints_[id].set_track_trusted(s.xpoints_[id].track_trusted() && s.motion_models_.back().along_observed());
   s.xpoints_[id].compute(s.planes_, options.compute);
   s.builder_.build_map(s.links_, s.xpoints_, s.planes_, world_T_start, options.build_map);
 }

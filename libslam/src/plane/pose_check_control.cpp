@@ -72,7 +72,8 @@ std::vector<LinePair> line_pairs(const RltXPointsState& s, const RltXPointsScrat
   const std::vector<MapPlane>& map = s.builder_.map();
   for (std::size_t i = 0; i < in.stamped_.size(); ++i) {
     const PlaneId p = in.assignment_[i];
-    if (p != kNone && p < static_cast<PlaneId>(map.size()) && map[p].mapped)
+    // Only planes placed without a motion model's guess (MapPlane::grounded) can check a pose.
+    if (p != kNone && p < static_cast<PlaneId>(map.size()) && map[p].mapped && map[p].grounded)
       pairs.push_back({in.stamped_[i], map[p].plane});
   }
   return pairs;

@@ -65,81 +65,151 @@ std::optional<PlanarPose> RltMapBuilder::first_observation_pose(const RltXPoint&
   return adjust_size(first, ref->max_length, kp).pose();
 }
 
+void RltMapBuilder::place_x0(const RltXPoint& x0, const std::vector<RltPlane>& planes,
+                             const PlanarPose& world_T_start, const BuildMapOptions& options,
+                             PoseMean& world_T_x0) const {
+  // Rule 4: X0's planes first seen in the earliest iteration were seen from the start pose,
+  // so world_T_x0 = world_T_start ∘ P(first observation) ∘ (x0_T_plane)⁻¹, averaged over them.
+  int earliest = 0;
+  bool any = false;
+  for (PlaneId p : x0.planes()) {
+    if (!planes[p].ref(x0.id())->valid) continue;
+    const int first = planes[p].created_iteration();
+    if (!any || first < earliest) earliest = first;
+    any = true;
+  }
+  // A first observation that cannot be grown to the plane's size gives no estimate; when none
+  // can, they are used as seen [R]. With open_cut_ends, first those grown from an end the
+  // sensor did not cut (uncut_first_observation_pose) [C].
+  enum class Pass { Uncut, Grown, AsSeen };
+  for (Pass pass : {Pass::Uncut, Pass::Grown, Pass::AsSeen}) {
+    if (world_T_x0.count() > 0 || (pass == Pass::Uncut) != (options.cut_ends_open && options.prefer_grounded)) continue;
+    for (PlaneId p : x0.planes()) {
+      const RltXPointRef* ref = planes[p].ref(x0.id());
+      if (!ref->valid || planes[p].created_iteration() != earliest) continue;
+      const std::optional<PlanarPose> first = pass == Pass::Uncut   ? uncut_first_observation_pose(x0, planes[p], options)
+                                              : pass == Pass::Grown ? first_observation_pose(x0, planes[p], planes, options)
+                                                                    : planes[p].first_observation().pose();
+      if (!first) continue;
+      world_T_x0.add(options.anchor_first_observation ? world_T_start * *first * ref->pose.inverse()
+                                                      : PlanarPose::identity());
+    }
+  }
+}
+
+std::optional<PlanarPose> RltMapBuilder::uncut_first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
+                                                                       const BuildMapOptions& options) const {
+  // open_cut_ends (beyond Rule 4): the first reading says where X0 is exactly only through an end
+  // the sensor saw as the wall's, grown to X0's size on that end, and only when X0 has the plane
+  // anchored on the same end or whole. A first reading cut at both ends lies anywhere along the
+  // wall from where X0's comparisons saw it (the robot may have driven along the wall in between).
+  const PlaneObject& first = plane.first_observation();
+  const RltXPointRef* ref = plane.ref(x0.id());
+  const bool whole = plane.whole_length(true) <= ref->max_length + options.key_point.same_length;
+  for (const KeyPoint end : {KeyPoint::Left, KeyPoint::Right}) {
+    const bool cut = end == KeyPoint::Left ? first.a_cut : first.b_cut;
+    if (!cut && (whole || ref->key_point == end)) return adjust_size(first, ref->max_length, end).pose();
+  }
+  return std::nullopt;
+}
+
 void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
                               const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
                               const BuildMapOptions& options) {
-  const bool anchor = options.anchor_first_observation;
-  const double same_length = options.key_point.same_length;
   // Rebuilt from the links every iteration (thesis 4.4.3.11): a group recomputed this iteration moves
   // every group chained after it.
   map_.assign(planes.size(), MapPlane{});
+  grounded_.assign(xpoints.size(), 0);
   mapped_count_ = 0;
   for (const RltXPointLink& link : links) {
     RltXPoint& to = xpoints[link.to];
     PoseMean world_T_to;
+    // A group linked from a motion model that is not grounded, through a grounded plane, is
+    // placed from that plane's grounded entry (link_source), and is grounded.
+    grounded_[link.to] = to.motion_model() ? to.track_trusted()
+                         : link.first      ? true
+                                           : link.from != kNone && !link.planes.empty() &&
+                                            (grounded_[link.from] ||
+                                             link_source(xpoints[link.from], link.planes.front(), options) != link.from);
     if (to.motion_model()) {
       // Rule 27: a motion-model group stays where the last valid pose put it.
       world_T_to.add(*to.anchor());
     } else if (link.first) {
-      // Rule 4: X0's planes first seen in the earliest iteration were seen from the start pose,
-      // so world_T_x0 = world_T_start ∘ P(first observation) ∘ (x0_T_plane)⁻¹, averaged over them.
-      int earliest = 0;
-      bool any = false;
-      for (PlaneId p : to.planes()) {
-        const RltXPointRef* ref = planes[p].ref(to.id());
-        if (!ref->valid) continue;
-        const int first = planes[p].created_iteration();
-        if (!any || first < earliest) earliest = first;
-        any = true;
-      }
-      // A first observation that cannot be grown to the plane's size gives no estimate; when
-      // none can, they are used as seen [R].
-      for (bool as_seen : {false, true}) {
-        if (as_seen && world_T_to.count() > 0) break;
-        for (PlaneId p : to.planes()) {
-          const RltXPointRef* ref = planes[p].ref(to.id());
-          if (!ref->valid || planes[p].created_iteration() != earliest) continue;
-          const std::optional<PlanarPose> first =
-              as_seen ? planes[p].first_observation().pose() : first_observation_pose(to, planes[p], planes, options);
-          if (!first) continue;
-          world_T_to.add(anchor ? world_T_start * *first * ref->pose.inverse() : PlanarPose::identity());
-        }
-      }
+      place_x0(to, planes, world_T_start, options, world_T_to);
     } else if (xpoints[link.from].placed()) {
-      // Rule 8: each linking plane says where `to` is from where `from` put it; averaged.
-      const RltXPoint& from = xpoints[link.from];
-      for (PlaneId p : link.planes) {
-        const RltXPointRef* in_from = planes[p].ref(from.id());
-        const RltXPointRef* in_to = planes[p].ref(to.id());
-        if (!in_from->valid || !in_to->valid) continue;
-        PlanarPose from_T_plane = in_from->pose, to_T_plane = in_to->pose;
-        if (options.key_point.key_points && std::abs(in_from->max_length - in_to->max_length) > same_length) {
-          // Rule 17: the smaller membership re-anchored to the larger size on its own key point;
-          // without one it cannot be resized and the plane does not link (thesis 4.3.4).
-          const bool from_smaller = in_from->max_length < in_to->max_length;
-          const RltXPointRef* smaller = from_smaller ? in_from : in_to;
-          const double larger = std::max(in_from->max_length, in_to->max_length);
-          if (smaller->key_point == KeyPoint::None) continue;
-          (from_smaller ? from_T_plane : to_T_plane) =
-              reanchor(smaller->pose, smaller->max_length, larger, smaller->key_point);
-        }
-        world_T_to.add(from.world_pose() * from_T_plane * to_T_plane.inverse());
-      }
+      link_to(link, xpoints, planes, options, world_T_to);
     }
     to.place(world_T_to.mean(), world_T_to.count() > 0);
-    if (to.placed()) place_planes(to, planes, same_length, options.key_point.key_points);
+    if (to.placed()) place_planes(to, planes, grounded_[link.to] != 0, options);
   }
 }
 
-void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, double same_length,
-                                 bool key_points) {
+void RltMapBuilder::link_to(const RltXPointLink& link, const std::vector<RltXPoint>& xpoints,
+                            const std::vector<RltPlane>& planes, const BuildMapOptions& options,
+                            PoseMean& world_T_to) const {
+  // Rule 8: each linking plane says where `to` is from where `from` put it; averaged.
+  const RltXPoint& to = xpoints[link.to];
+  const double same_length = options.key_point.same_length;
+  bool refused = false;  // a linking plane whose two pieces do not share an end (below)
+  for (PlaneId p : link.planes) {
+    const RltXPoint& from = xpoints[link_source(xpoints[link.from], p, options)];
+    const RltXPointRef* in_from = planes[p].ref(from.id());
+    const RltXPointRef* in_to = planes[p].ref(to.id());
+    if (!in_from->valid || !in_to->valid) continue;
+    PlanarPose from_T_plane = in_from->pose, to_T_plane = in_to->pose;
+    if (options.key_point.key_points && std::abs(in_from->max_length - in_to->max_length) > same_length) {
+      // Rule 17: the smaller membership re-anchored to the larger size on its own key point;
+      // without one it cannot be resized and the plane does not link (thesis 4.3.4).
+      const bool from_smaller = in_from->max_length < in_to->max_length;
+      const RltXPointRef* smaller = from_smaller ? in_from : in_to;
+      const double larger = std::max(in_from->max_length, in_to->max_length);
+      if (smaller->key_point == KeyPoint::None) continue;
+      // Beyond the thesis (adaptive): the larger must hold the smaller's key-point end. Two
+      // pieces of one wall, each with the other end real, say nothing about where along the
+      // wall one lies from the other (Fig 87's L* is the wall's size only when one is whole).
+      // With open_cut_ends a piece is whole when one uncut reading was as long (whole_length),
+      // unless a motion model's track measured the extent (Rule 23: over many readings).
+      const RltXPointRef* larger_ref = from_smaller ? in_to : in_from;
+      const double whole = larger_ref->tracked ? planes[p].longest_seen() : planes[p].whole_length(options.cut_ends_open);
+      if (options.prefer_grounded && !holds_end(larger_ref->size_static, larger_ref->key_point, larger_ref->max_length,
+                                                smaller->key_point, whole, same_length)) {
+        refused = true;
+        continue;
+      }
+      (from_smaller ? from_T_plane : to_T_plane) = reanchor(smaller->pose, smaller->max_length, larger, smaller->key_point);
+    }
+    world_T_to.add(from.world_pose() * from_T_plane * to_T_plane.inverse());
+  }
+  // ... and then the link places nothing: the other linking planes' estimates come from the
+  // same two groups, whose comparisons joined the refused plane's pieces as if they were one
+  // size. Keeping them (even those the groups saw static: a piece the frustum cuts at both ends
+  // keeps its length too) put wrong poses back on the generated rooms [C].
+  if (refused) world_T_to = PoseMean{};
+}
+
+XPointId RltMapBuilder::link_source(const RltXPoint& from, PlaneId p, const BuildMapOptions& options) const {
+  // Beyond the thesis (prefer_grounded): a motion model links a new group through its one plane
+  // (thesis 4.3.2), which is on the map already — the motion model starts only on a mapped plane
+  // (Rule 26). Where the motion model's group puts that plane is its track's guess; where the
+  // map has it, placed by a grounded group, is not. So the link goes through that group.
+  if (!options.prefer_grounded || !from.motion_model() || grounded_[from.id()]) return from.id();
+  const MapPlane& entry = map_[p];
+  return entry.mapped && entry.grounded && entry.source != kNone ? entry.source : from.id();
+}
+
+void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, bool grounded,
+                                 const BuildMapOptions& options) {
+  const double same_length = options.key_point.same_length;
   for (PlaneId p : xpoint.planes()) {
     const RltXPointRef* ref = planes[p].ref(xpoint.id());
     MapPlane& entry = map_[p];
     // Part 2: a plane that changed size and has no key point has no known anchor (thesis 4.3.4).
-    if (key_points && ref->key_point == KeyPoint::None && !ref->size_static) continue;
-    // The first group to place a plane keeps it unless a later one knows it larger [T].
-    if (!ref->valid || (entry.mapped && ref->max_length <= entry.length + same_length)) continue;
+    if (options.key_point.key_points && ref->key_point == KeyPoint::None && !ref->size_static) continue;
+    if (!ref->valid) continue;
+    // The first group to place a plane keeps it unless a later one knows it larger [T]; with
+    // prefer_grounded a grounded placement comes before any through a motion model [C].
+    const bool rank_decides = options.prefer_grounded && entry.mapped && entry.grounded != grounded;
+    if (rank_decides ? entry.grounded : entry.mapped && ref->max_length <= entry.length + same_length) continue;
     if (!entry.mapped) ++mapped_count_;
     entry.mapped = true;
     entry.world_T_plane = xpoint.world_pose() * ref->pose;
@@ -147,6 +217,7 @@ void RltMapBuilder::place_planes(const RltXPoint& xpoint, const std::vector<RltP
     entry.source = xpoint.id();
     entry.key_point = ref->key_point;
     entry.size_static = ref->size_static;
+    entry.grounded = grounded || !options.prefer_grounded;  // without grounded_map every plane counts
     const PlaneObject& seen = planes[p].latest();
     entry.plane = PlaneObject::from_pose(entry.world_T_plane, entry.length, seen.y_lo, seen.y_lo + ref->height);
   }

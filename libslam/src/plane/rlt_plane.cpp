@@ -19,6 +19,7 @@ void RltPlane::add(const PlaneObject& observation) {
                            std::to_string(observation.iteration) + " after " + std::to_string(last_iteration()));
   intervals_.add(observation.iteration);
   longest_ = std::max(longest_, observation.length());
+  if (!observation.a_cut && !observation.b_cut) longest_uncut_ = std::max(longest_uncut_, observation.length());
   if (size_ < capacity_) {
     storage_.push_back(observation);  // still growing: the oldest stays at index 0
     ++size_;

@@ -77,7 +77,7 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
       if (const std::optional<Eigen::Vector2d> moved =
               options.real_end_motion ? real_end_motion(*previous, seen, previous_psi, psi) : std::nullopt)
         sample.delta_tangent = moved->dot(u);
-      else if (along_dropped && options.real_end_motion)
+      else if (along_dropped && options.track_along)
         along_observed_ = false;
       position += sample.delta_normal * -n + sample.delta_tangent * u;
     }
@@ -102,7 +102,12 @@ void RltXMMPoint::compute(std::vector<RltPlane>& planes, const MotionModelOption
     previous = &seen;
   }
 
+  fill_membership(planes, grew_min, grew_max);
+}
+
+void RltXMMPoint::fill_membership(std::vector<RltPlane>& planes, bool grew_min, bool grew_max) const {
   // The membership: the plane at its tracked extent; its key point is the end that did not move.
+  const RltPlane& p = planes[plane_];
   RltXPointRef* ref = planes[plane_].ref(xpoint_);
   ref->valid = true;
   ref->tracked = true;

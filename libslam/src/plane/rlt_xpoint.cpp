@@ -356,6 +356,7 @@ void RltXPoint::chain_with_size_correction(std::vector<RltPlane>& planes, const 
   parent->valid = n == 1 || canonical.front().valid;
   parent->pose = PlanarPose::identity();
   fill(parent, canonical.front());
+  KeyPoint parent_anchor = KeyPoint::None;  // the end the previous edge put the parent on
   for (std::size_t k = 1; k < n; ++k) {
     const CompareResult& edge = edges_[k - 1];
     RltXPointRef* child = planes[chain_[k]].ref(id_);
@@ -393,6 +394,14 @@ void RltXPoint::chain_with_size_correction(std::vector<RltPlane>& planes, const 
       const bool child_resized = std::abs(cc.length - edge.length2) > options.same_length;
       if ((parent_resized && kp_parent == KeyPoint::None) || (child_resized && kp_child == KeyPoint::None))
         child->valid = false;
+      // Beyond the thesis (consistent_ends): the previous edge put the parent on one end, this
+      // one on the other; unless the plane was seen whole, its canonical size is not the wall's
+      // and the two pieces' distance along the wall is unknown (Fig 87 assumes one size).
+      if (options.consistent_ends && !cp.is_static && parent_anchor != KeyPoint::None &&
+          kp_parent != KeyPoint::None && kp_parent != parent_anchor &&
+          planes[chain_[k - 1]].whole_length(options.compare.cut_ends_open) > cp.length + options.same_length)
+        child->valid = false;
+      parent_anchor = kp_child;
 
       if (child->valid && !options.size_correction) {
         child->pose = parent->pose * delta;  // Rule 28 off: the sizes each edge saw, composed as they are

@@ -41,6 +41,7 @@ double lap(Clock::time_point& start) {
 RltXPointsS::RltXPointsS(const RelativePlaneOptions& options, const PlanarPose& world_T_start)
     : options_(checked_options(options, "RltXPointsS")), world_T_start_(world_T_start) {
   options_.motion_model.real_end_motion = cut_ends_open(options);
+  options_.motion_model.track_along = cut_ends_open(options) || map_grounded(options);
 }
 
 RelativePlaneStep RltXPointsS::step(const PlaneFrame& frame) {
@@ -132,6 +133,7 @@ void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
     RltXPoint& x = xpoints_[mm.xpoint()];
     if (!x.needs_compute()) continue;
     if (!mm.ended()) mm.compute(planes_, options_.motion_model);  // an ended track is frozen
+    x.set_track_trusted(x.track_trusted() && mm.along_observed());
     x.compute(planes_, compute_options);                          // only clears the flag
     ++result.groups_computed;
   }

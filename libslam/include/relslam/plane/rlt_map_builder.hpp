@@ -20,6 +20,17 @@
 
 namespace relslam::plane {
 
+class PoseMean;  // pose_mean.hpp, internal to libslam/plane
+
+// Whether a plane placed at `length` anchored on `own` (None: no key point) has the wall's end k
+// where it has its own end k: it is whole (seen static, or as long as the plane was ever seen,
+// within same_length) or anchored on k itself. Used by MapPlane::holds_end and, in the adaptive
+// preset, by Rule 17's links.
+inline bool holds_end(bool size_static, KeyPoint own, double length, KeyPoint k, double longest_seen,
+                      double same_length) {
+  return size_static || own == KeyPoint::None || own == k || longest_seen <= length + same_length;
+}
+
 // One global-map entry per RltPlane (thesis 4.4.3.11).
 struct MapPlane {
   bool mapped = false;
@@ -31,6 +42,12 @@ struct MapPlane {
   // The placing comparison saw the plane keep its size (RltXPointRef::size_static): both ends
   // are the wall's.
   bool size_static = false;
+  // Beyond the thesis (adaptive preset): the group that placed it is reached from X0 by links
+  // that never pass a motion-model group. A motion model's track takes its heading and its
+  // offset from one plane and guesses the motion along it (Rules 23-25), so a group placed
+  // through it carries that guess onto the map; a pose resting on such a plane agrees with it
+  // because it was made from the same guess (pose_integrity.hpp).
+  bool grounded = false;
 
   // Whether the entry's end k is a real end of the wall, so an observation grown from k (Rule 16)
   // may be put onto the entry. An entry shorter than the plane's longest observation (by more
@@ -39,7 +56,7 @@ struct MapPlane {
   // saw (Map D, large frustum: wall 2 mapped at 3.95 of 4 by the one group it joined, seen whole
   // later, then cut at its other end). Any other entry is taken as whole.
   bool holds_end(KeyPoint k, double longest_seen, double same_length) const {
-    return size_static || key_point == KeyPoint::None || key_point == k || longest_seen <= length + same_length;
+    return plane::holds_end(size_static, key_point, length, k, longest_seen, same_length);
   }
 };
 
@@ -88,11 +105,19 @@ struct BuildMapOptions {
   GetPosetOptions key_point;
   bool anchor_first_observation;  // rules.anchor_first_observation (Rule 4)
   bool first_reading_resize;      // rules.first_reading_resize (Rule 4, thesis 4.4.3.11 step 1)
+  // Adaptive preset: a grounded group's placement of a plane replaces one through a motion model
+  // (MapPlane::grounded); the thesis keeps the first [T].
+  bool prefer_grounded;
+  // open_cut_ends in effect: X0 is put first by the planes whose first observation has an end the
+  // sensor did not cut (RltMapBuilder::place_x0).
+  bool cut_ends_open;
   BuildMapOptions() : BuildMapOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
   BuildMapOptions(const RelativePlaneOptions& o)                  // NOLINT(google-explicit-constructor)
       : key_point(o),
         anchor_first_observation(o.rules.anchor_first_observation),
-        first_reading_resize(o.rules.first_reading_resize) {}
+        first_reading_resize(o.rules.first_reading_resize),
+        prefer_grounded(map_grounded(o)),
+        cut_ends_open(plane::cut_ends_open(o)) {}
 };
 
 class RltMapBuilder {
@@ -128,12 +153,24 @@ class RltMapBuilder {
   int mapped_count() const { return mapped_count_; }
 
  private:
-  void place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, double same_length, bool key_points);
+  // Rule 8 (with Rule 17): where `link` puts its group, added to world_T_to.
+  void link_to(const RltXPointLink& link, const std::vector<RltXPoint>& xpoints, const std::vector<RltPlane>& planes,
+               const BuildMapOptions& options, PoseMean& world_T_to) const;
+  // The group a link from `from` through plane p is placed from (MapPlane::grounded).
+  XPointId link_source(const RltXPoint& from, PlaneId p, const BuildMapOptions& options) const;
+  void place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, bool grounded,
+                    const BuildMapOptions& options);
+  // Rule 4: where X0 is, from its planes' first observations, added to world_T_x0 (none: unplaced).
+  void place_x0(const RltXPoint& x0, const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
+                const BuildMapOptions& options, PoseMean& world_T_x0) const;
+  std::optional<PlanarPose> uncut_first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
+                                                         const BuildMapOptions& options) const;
   std::optional<PlanarPose> first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
                                                    const std::vector<RltPlane>& planes,
                                                    const BuildMapOptions& options) const;
 
   std::vector<MapPlane> map_;
+  std::vector<char> grounded_;  // per group: MapPlane::grounded of the planes it places
   int mapped_count_ = 0;
 };
 

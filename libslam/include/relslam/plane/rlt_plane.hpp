@@ -9,6 +9,7 @@
 #include "relslam/plane/rlt_plane_interval.hpp"
 #include "relslam/plane/rlt_xpoint_ref.hpp"
 
+#include <limits>
 #include <vector>
 
 namespace relslam::plane {
@@ -33,6 +34,14 @@ class RltPlane {
   // The longest observation ever added, overwritten ones included: a map entry shorter than
   // this is known not to be the whole wall (RltMapBuilder::get_poset).
   double longest_seen() const { return longest_; }
+  // The length from which a piece of this plane counts as the whole wall. With open_cut_ends
+  // (`sensor_cuts`) the longest observation with neither end cut by the sensor, and none (infinity)
+  // until there is one; otherwise longest_seen(), which a piece the frustum cuts at both ends
+  // can equal without being the wall.
+  double whole_length(bool sensor_cuts) const {
+    if (!sensor_cuts) return longest_;
+    return longest_uncut_ > 0 ? longest_uncut_ : std::numeric_limits<double>::infinity();
+  }
   // Observations ever added (the thesis's "readings"), overwritten ones included.
   int readings() const { return intervals_.total_size(); }
   // Every iteration the plane was seen in, overwritten ones included (GetInterval).
@@ -72,6 +81,7 @@ class RltPlane {
   PlaneId id_;
   PlaneObject first_;
   double longest_ = 0;
+  double longest_uncut_ = 0;  // whole_length
   std::vector<PlaneObject> storage_;
   int capacity_;
   int head_ = 0;  // physical index of the oldest kept observation

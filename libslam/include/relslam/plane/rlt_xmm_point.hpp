@@ -56,15 +56,19 @@ class RltXMMPoint {
   // The last sample of the track (none before the first compute()).
   const MotionModelSample* last() const { return track_.empty() ? nullptr : &track_.back(); }
   // No step of the track dropped the motion along the plane (Rule 25: heading nearly parallel to
-  // it) without a real end in view to measure it (MotionModelOptions::real_end_motion): driving
-  // along a wall cut at both ends by the frustum, nothing shows how far the robot went. Always
-  // true without real_end_motion (the thesis's model: the refusal is open_cut_ends's).
+  // it) without a real end in view to measure it (MotionModelOptions::real_end_motion, off: no
+  // end measures it): driving along a wall cut at both ends by the frustum, nothing shows how far
+  // the robot went. Read by the adaptive preset only (its pose check and MapPlane::grounded); the
+  // thesis's track is the same either way.
   bool along_observed() const { return along_observed_; }
   // The plane's tracked extent along its tangent, from its map midpoint at the start.
   double s_min() const { return s_min_; }
   double s_max() const { return s_max_; }
 
  private:
+  // The membership of compute's track: the plane at its tracked extent, its key point the end
+  // that did not move (grew_min, grew_max: which ends Rule 23 grew).
+  void fill_membership(std::vector<RltPlane>& planes, bool grew_min, bool grew_max) const;
   XPointId xpoint_;
   PlaneId plane_;
   PlanarPose world_T_anchor_;

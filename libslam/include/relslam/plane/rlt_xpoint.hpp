@@ -42,6 +42,9 @@ struct ComputeXPointOptions {
   bool size_correction;          // Rule 28
   bool save_snapshot;            // Rule 35
   bool save_reserve;             // Rule 36
+  // Adaptive preset: a plane chained between two edges that anchored it on different ends, never
+  // seen whole, breaks the chain there (RltXPoint::chain_with_size_correction) [C].
+  bool consistent_ends;
   ComputeXPointOptions() : ComputeXPointOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
   ComputeXPointOptions(const RelativePlaneOptions& o)                       // NOLINT(google-explicit-constructor)
       : compare(o),
@@ -51,7 +54,8 @@ struct ComputeXPointOptions {
         missing_key_points(o.rules.missing_key_points),
         size_correction(o.rules.size_correction),
         save_snapshot(o.rules.save_snapshot),
-        save_reserve(o.rules.save_reserve) {}
+        save_reserve(o.rules.save_reserve),
+        consistent_ends(map_grounded(o)) {}
 };
 
 // What ReorderPlanes reads of RelativePlaneOptions (Rule 30, thesis 4.3.7.1): when it is due,
@@ -135,6 +139,11 @@ class RltXPoint {
   bool motion_model() const { return anchor_.has_value(); }
   const std::optional<PlanarPose>& anchor() const { return anchor_; }
   void set_anchor(const PlanarPose& world_T_xpoint) { anchor_ = world_T_xpoint; }
+  // Adaptive preset: the motion model's track started from a checked pose and measured every
+  // step's motion along its plane (RltXMMPoint::along_observed), so the groups linked from it are
+  // placed by what was observed (MapPlane::grounded).
+  bool track_trusted() const { return track_trusted_; }
+  void set_track_trusted(bool trusted) { track_trusted_ = trusted; }
 
   // Placed by RltMapBuilder::build_map: world_T_xpoint.
   const PlanarPose& world_pose() const { return world_pose_; }
@@ -155,6 +164,7 @@ class RltXPoint {
   PlanarPose world_pose_;
   bool placed_ = false;
   std::optional<PlanarPose> anchor_;
+  bool track_trusted_ = false;
   void compute_with_key_points(std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                                const RltPlaneInterval* within);
   // compute_with_key_points's three parts (thesis 4.3.6): edge comparison (ComparePlanes with key
