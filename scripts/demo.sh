@@ -4,8 +4,8 @@
 #   scripts/demo.sh [--out DIR]        (default runs/demo)
 # Default experiment: S-EKF-F8 (scenarios/s-ekf-f8.json), one loop of the figure eight at
 # density 25 with the Relative Point algorithm and MRPT's 6D EKF on the same observations,
-# scored against the simulator's truth (the run takes one to two minutes on two cores; the first
-# build longer: it compiles the library, simulator and harness). Builds only the relslam program;
+# scored against the simulator's truth (on an idle two-core machine the run takes under a minute and the first
+# build about six minutes: it compiles the library, simulator and harness). Builds only the relslam program;
 # scripts/test.sh builds everything.
 set -euo pipefail
 cd "$(dirname "$0")/.."
