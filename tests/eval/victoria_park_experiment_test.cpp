@@ -91,8 +91,11 @@ TEST(VictoriaParkExperiment, TheOptimumTakesItsTreesFromRelativePoint) {
                              "batch_optimum.start=relative_point"}),
       *data(), dir.path(), false);
   ASSERT_EQ(r.gps.size(), 2u);
-  for (const SummaryRow& row : r.experiment.rows)
-    if (row.status.text() != "ratio") EXPECT_EQ(row.status.text(), "ok") << row.algorithm;
+  for (const SummaryRow& row : r.experiment.rows) {
+    if (row.status.text() != "ratio") {
+      EXPECT_EQ(row.status.text(), "ok") << row.algorithm;
+    }
+  }
   const test::CsvTable trees = test::read_csv(dir / "batch_optimum/landmarks.csv");
   EXPECT_GE(trees.rows.size(), 10u);
   EXPECT_EQ(r.gps[1].algorithm, "batch_optimum");

@@ -51,7 +51,7 @@ class RangeSensorFrames {
   void extract(int k, const sim::DepthFrame& image, sim::PlaneSimFrame& frame);
   void count(double ms, int walls);
   const sim::PlanarWorld& world_;
-  const PlanarOptions& options_;
+  PlanarOptions options_;  // a copy: the source may outlive the scenario it was built from
   std::uint64_t seed_;
   std::optional<sim::LaserSensor> laser_;
   scan::WallExtractionOptions walls_;
