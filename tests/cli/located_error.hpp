@@ -4,6 +4,7 @@
 // reproducers and of the readers' limits.
 
 #include "child_process.hpp"
+#include "refusal_limits.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -12,17 +13,6 @@
 #include <vector>
 
 namespace relslam::test {
-
-// Under AddressSanitizer the program's shadow memory and the quarantine of freed blocks are
-// resident too (measured 1062 MB for every reproducer), so the sanitizer build checks the other
-// outcomes and only the release build the 1 GB.
-#ifdef RELSLAM_SANITIZED
-inline constexpr double kRefusalPeakRssMb = 4096;
-inline constexpr double kRefusalSeconds = 120;
-#else
-inline constexpr double kRefusalPeakRssMb = 1024;
-inline constexpr double kRefusalSeconds = 20;
-#endif
 
 // Runs the relslam program with `arguments` in a scratch folder: exit 2, `located` in the
 // message, within `seconds` and kRefusalPeakRssMb.

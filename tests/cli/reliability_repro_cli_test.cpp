@@ -94,7 +94,7 @@ TEST_F(ReliabilityRepro, DeepArrayInSetScriptExitsTwo) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("rc=2"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("--set: sim.density: JSON nested deeper than 64 levels"), std::string::npos) << r.err;
-  EXPECT_LT(r.seconds, 5.0);
+  EXPECT_LT(r.seconds, test::kRefusalSeconds);
 }
 
 TEST_F(ReliabilityRepro, DeepArrayInAScenarioFileIsRejectedQuickly) {

@@ -3,6 +3,7 @@
 #include "relslam/eval/config/input_error.hpp"
 #include "relslam/sim/planar_sight.hpp"
 #include "relslam/sim/planar_simulator.hpp"
+#include "refusal_limits.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -315,7 +316,7 @@ TEST(PlanarMapFile, LongPathNeverNearTwoWallsIsRefusedQuickly) {
       "  }\n"
       "}\n";
   EXPECT_NE(error_of(text).find("m.json:6: path: never sees two walls at once"), std::string::npos) << error_of(text);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), test::kRefusalSeconds);
 }
 
 // Two walls beside a long path, within the sensor's reach but outside its field of view: every
@@ -339,7 +340,7 @@ TEST(PlanarMapFile, LongPathBesideWallsItNeverSeesStopsAtTheWorkLimit) {
                    "wall tests: shorten the path"),
             std::string::npos)
       << e;
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), test::kRefusalSeconds);
 }
 
 TEST(PlanarMapFile, BadSensorHintIsRejected) {
