@@ -12,9 +12,11 @@ namespace relslam::test {
 #ifdef RELSLAM_SANITIZED
 inline constexpr double kRefusalPeakRssMb = 4096;
 inline constexpr double kRefusalSeconds = 120;
+inline constexpr double kQuickRefusalSeconds = 60;
 #else
 inline constexpr double kRefusalPeakRssMb = 1024;
 inline constexpr double kRefusalSeconds = 20;
+inline constexpr double kQuickRefusalSeconds = 5;  // a reproducer refused before any real work
 #endif
 
 }  // namespace relslam::test

@@ -28,9 +28,9 @@ class ReliabilityRepro : public ::testing::Test {
   }
 };
 
-// Exit 2 with `located` in the message, within 5 s and 1 GB.
+// Exit 2 with `located` in the message, within kQuickRefusalSeconds (5 s) and 1 GB.
 void expect_located_error(const std::vector<std::string>& arguments, const std::string& located) {
-  test::expect_located_error(arguments, located, 5.0);
+  test::expect_located_error(arguments, located, test::kQuickRefusalSeconds);
 }
 
 std::string repro(const std::string& name) { return (repro_dir() / name).string(); }
@@ -94,7 +94,7 @@ TEST_F(ReliabilityRepro, DeepArrayInSetScriptExitsTwo) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("rc=2"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("--set: sim.density: JSON nested deeper than 64 levels"), std::string::npos) << r.err;
-  EXPECT_LT(r.seconds, test::kRefusalSeconds);
+  EXPECT_LT(r.seconds, test::kQuickRefusalSeconds);
 }
 
 TEST_F(ReliabilityRepro, DeepArrayInAScenarioFileIsRejectedQuickly) {
