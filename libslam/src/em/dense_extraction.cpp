@@ -1,5 +1,6 @@
 #include "relslam/em/dense_extraction.hpp"
 
+#include "relslam/em/coplanar_merging.hpp"
 #include "relslam/em/em1.hpp"
 #include "relslam/em/em2.hpp"
 #include "relslam/em/merging.hpp"
@@ -153,6 +154,50 @@ void drop_strips(std::vector<EmPlane>& planes, const DenseCloud& cloud) {
   planes = std::move(kept);
 }
 
+// The planes `from` with the points `members` gives each (ascending), refit; those with fewer
+// than min_support points, no plane or seen edge-on are dropped.
+std::vector<EmPlane> with_members(const std::vector<EmPlane>& from, std::vector<std::vector<int>>& members,
+                                  std::span<const Eigen::Vector3d> points, const EmOptions& o) {
+  std::vector<EmPlane> planes;
+  for (std::size_t k = 0; k < from.size(); ++k) {
+    EmPlane plane = from[k];
+    plane.points = std::move(members[k]);
+    if (static_cast<int>(plane.points.size()) < o.min_support || !refit(plane, points) || edge_on(plane)) continue;
+    planes.push_back(std::move(plane));
+  }
+  return planes;
+}
+
+// The angle between the lowest and the highest of the plane's points as seen from the sensor
+// (the origin, y up). The points of one or two scan lines of a lidar lie on cones about y
+// and span at most the lines' spacing; near the sensor's height a cone is locally as flat as
+// a plane and EM takes its arc for one (seen on a VLP-16 scan: seven "horizontal planes"
+// between 1.2 below and 0.5 above the sensor, each one or two rings).
+double elevation_span(const EmPlane& plane, std::span<const Eigen::Vector3d> points) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int i : plane.points) {
+    const Eigen::Vector3d& p = points[static_cast<std::size_t>(i)];
+    const double elevation = std::atan2(p.y(), std::hypot(p.x(), p.z()));
+    lo = std::min(lo, elevation), hi = std::max(hi, elevation);
+  }
+  return hi - lo;
+}
+
+// Unorganised clouds: pieces of one surface along scan lines merged by their joint fit
+// (coplanar_merging.hpp), then every point asked again, so that the points between the lines
+// whose pieces EM never made planes join the merged plane.
+void merge_scan_lines(std::vector<EmPlane>& planes, const DenseCloud& cloud, const EmOptions& o,
+                      const DenseOptions& dense) {
+  if (dense.scan_gap_per_range > 0.0 && merge_coplanar(planes, cloud.points, o, dense.scan_gap_per_range) > 0) {
+    std::vector<std::vector<int>> members(planes.size());
+    assign_all(cloud, planes, o, members);
+    planes = with_members(planes, members, cloud.points, o);
+  }
+  std::erase_if(planes, [&](const EmPlane& plane) {
+    return elevation_span(plane, cloud.points) < dense.min_elevation_span_rad;
+  });
+}
+
 }  // namespace
 
 CloudSummary summarise(const DenseCloud& cloud, const DenseOptions& dense) {
@@ -162,7 +207,8 @@ CloudSummary summarise(const DenseCloud& cloud, const DenseOptions& dense) {
                            : summarise_voxels(cloud.points, dense.summary_points, dense.voxel);
 }
 
-EmResult densify(const DenseCloud& cloud, const CloudSummary& s, const EmResult& coarse, const EmOptions& o) {
+EmResult densify(const DenseCloud& cloud, const CloudSummary& s, const EmResult& coarse, const EmOptions& o,
+                 const DenseOptions& dense) {
   std::vector<std::vector<int>> members(coarse.planes.size());
   if (cloud.organised())
     assign_image(cloud, s, owners_of(coarse, s.points.size()), coarse.planes, o, members);
@@ -172,18 +218,17 @@ EmResult densify(const DenseCloud& cloud, const CloudSummary& s, const EmResult&
   EmResult result;
   result.iterations = coarse.iterations;
   result.ignored_points = static_cast<int>(cloud.points.size() - finite_points(cloud.points).size());
-  for (std::size_t k = 0; k < coarse.planes.size(); ++k) {
-    EmPlane plane = coarse.planes[k];
-    plane.points = std::move(members[k]);  // ascending: the passes run in index order
+  std::vector<EmPlane> from = coarse.planes;
+  for (EmPlane& plane : from)
     plane.seed_point = plane.seed_point >= 0 ? s.source[static_cast<std::size_t>(plane.seed_point)] : -1;
-    if (static_cast<int>(plane.points.size()) < o.min_support || !refit(plane, cloud.points)) continue;
-    if (edge_on(plane)) continue;
-    result.planes.push_back(std::move(plane));
-  }
+  result.planes = with_members(from, members, cloud.points, o);  // ascending: the passes run in index order
   // The summary's planes may hold two pieces of one surface (EM merges planes whose boxes meet;
   // at full density they do). Their pixels interleave until they are merged.
   merge_planes(result.planes, cloud.points, o);
-  if (cloud.organised()) drop_strips(result.planes, cloud);
+  if (cloud.organised())
+    drop_strips(result.planes, cloud);
+  else
+    merge_scan_lines(result.planes, cloud, o, dense);
   tight_refit(result.planes, cloud.points, o);
   set_rectangles(result.planes, cloud.points, o);
   return result;
@@ -195,7 +240,7 @@ DenseResult extract_dense(const DenseCloud& cloud, EmVariant variant, const EmOp
   out.summary = summarise(cloud, dense);
   const std::vector<Eigen::Vector3d>& points = out.summary.points;
   const EmResult coarse = variant == EmVariant::Em1 ? run_em1(points, o, seed) : run_em2(points, o, seed);
-  out.result = densify(cloud, out.summary, coarse, o);
+  out.result = densify(cloud, out.summary, coarse, o, dense);
   return out;
 }
 
