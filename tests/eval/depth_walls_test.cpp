@@ -54,6 +54,8 @@ TEST(DepthWalls, KinectNoiseWallsLieOnTheirTrueWallsOnceEach) {
   int frames = 0, unknown = 0, twice = 0;
   long long walls = 0;
   double worst = 0, worst_angle = 0;
+  int tilted = 0, off_line = 0;  // walls more than 30° off, with an end more than 0.4 off the line
+  std::string outliers;
   source.stream([&](const PlaneFrame& frame, const PlaneTruthFrame& truth, const std::vector<CsvField>& measured) {
     ASSERT_EQ(frame.planes.size(), truth.planes.size());
     EXPECT_EQ(std::get<long long>(measured[1]), static_cast<long long>(frame.planes.size()));
@@ -66,9 +68,16 @@ TEST(DepthWalls, KinectNoiseWallsLieOnTheirTrueWallsOnceEach) {
       }
       twice += !seen.insert(id).second;
       const PlaneObject& wall = source.walls()[static_cast<std::size_t>(id)];
+      double end_off = 0;
       for (const Eigen::Vector2d& end : {frame.planes[i].a, frame.planes[i].b})
-        worst = std::max(worst, line_distance(truth.world_T_robot * end, wall));
-      worst_angle = std::max(worst_angle, angle_off_deg(frame.planes[i], truth.world_T_robot, wall));
+        end_off = std::max(end_off, line_distance(truth.world_T_robot * end, wall));
+      const double angle = angle_off_deg(frame.planes[i], truth.world_T_robot, wall);
+      worst = std::max(worst, end_off), worst_angle = std::max(worst_angle, angle);
+      tilted += angle >= 30.0, off_line += end_off >= 0.4;
+      if (angle >= 30.0 || end_off >= 0.4)
+        outliers += "image " + std::to_string(frames) + " wall " + std::to_string(id) + ": " + std::to_string(angle) +
+                    " deg, end " + std::to_string(end_off) + ", length " +
+                    std::to_string((frame.planes[i].b - frame.planes[i].a).norm()) + "\n";
       // Standing on the floor like the plane sensor's walls: the image's heights moved up by the
       // camera's, within the room.
       EXPECT_GE(frame.planes[i].y_lo, -0.1);
@@ -92,7 +101,8 @@ TEST(DepthWalls, KinectNoiseWallsLieOnTheirTrueWallsOnceEach) {
   EXPECT_LT(worst_angle, 30.0);
   EXPECT_LT(worst, 0.4);
   std::cout << frames << " images, " << walls << " walls, " << twice << " seen twice, worst angle " << worst_angle
-            << " deg, worst end " << worst << "\n";
+            << " deg, worst end " << worst << "; " << tilted << " walls 30 deg or more off, " << off_line
+            << " with an end 0.4 or more off the line\n" << outliers;
 }
 
 // Noise-free images: the walls EM2 reports are their true walls, nearly all exactly. Before the

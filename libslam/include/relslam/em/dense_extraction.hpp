@@ -4,10 +4,11 @@
 //
 // EM runs on a summary of the cloud (cloud_summary.hpp), a few thousand points as dense as its
 // seeding, growth and density check need; every point of the full cloud then joins the plane
-// that accepts it and lies nearest (for an organised cloud only the planes of the four summary
-// pixels around it are asked, so the pass is linear in the points), and each plane is fit again
-// on all its points with the tight gate of tight_refit.hpp. Planes seen edge-on (through the
-// sensor, the origin) are dropped, and pieces of one surface that meet at full density merged. The planes are as exact as the full
+// that accepts it and lies nearest (every plane is asked: a few per frame, each rejecting most
+// points by its box), and each plane is fit again on all its points with the tight gate of
+// tight_refit.hpp. Planes seen edge-on (through the sensor, the origin) are dropped, and pieces
+// of one surface that meet at full density merged; on a lidar's scan, pieces along its scan
+// lines that one plane holds merge (coplanar_merging.hpp). The planes are as exact as the full
 // cloud allows while EM's cost is that of the summary.
 
 #include "relslam/em/cloud_summary.hpp"
@@ -73,9 +74,7 @@ CloudSummary summarise(const DenseCloud& cloud, const DenseOptions& dense);
 // planes with fewer than min_support points or seen edge-on are dropped, pieces that now meet
 // merge, an organised cloud's planes whose pixels form strips rather than a patch of the image
 // are dropped, an unorganised cloud's coplanar pieces along scan lines merge
-// (dense.scan_gap_per_range), then the tight refit and the rectangles. Linear in the points
-// for organised clouds,
-// points × planes otherwise.
+// (dense.scan_gap_per_range), then the tight refit and the rectangles. Points × planes.
 EmResult densify(const DenseCloud& cloud, const CloudSummary& summary, const EmResult& coarse,
                  const EmOptions& options, const DenseOptions& dense);
 
