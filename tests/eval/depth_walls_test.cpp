@@ -26,12 +26,13 @@ namespace {
 // Over the whole loop (measured, 1441 images at Kinect noise): 2126 walls, none twice in an
 // image, but 4 more than 30° off their wall, each also with an end more than 0.4 off its line
 // (images 591, 717 and 720 on wall 7, 1298 on wall 5, up to 89°): the goal, every wall within
-// 30°, is not met there yet, and the long build bounds what is measured.
+// 30°, is not met there yet, and the long build bounds what is measured. Noise-free over the
+// loop: 2320 walls, 93 % exact, 27 more than 25° off (up to 89°).
 #ifdef RELSLAM_DEPTH_WALLS_LONG
 const std::string kImages = R"("loops": 1)";
 constexpr int kFrames = 1441;
 constexpr int kTiltedAtMost = 4;
-constexpr int kNoiseFreeTiltedAtMost = 1000;
+constexpr int kNoiseFreeTiltedAtMost = 27;
 #else
 const std::string kImages = R"("iterations": 90)";
 constexpr int kFrames = 90;
