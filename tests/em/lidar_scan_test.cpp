@@ -1,9 +1,9 @@
 // EM at sensor density on a multi-line lidar's scan (an unorganised cloud whose points lie
 // along scan lines: dense along a line, sparse across): a VLP-16-like scan (16 lines 2° apart
 // from −15° to +15°, a return every 0.4° along each) of the ground 1.8 below the sensor and two
-// walls. Every surface must come out as one plane: without the coplanar merge of
-// coplanar_merging.hpp each line's arc of the ground is a plane of its own, and near the
-// sensor's height one line's arc passes for a plane.
+// walls. Every surface must come out as one plane: on the real VLP-16 scan, before the
+// coplanar merge of coplanar_merging.hpp, each line's arc of the ground was a plane of its own,
+// and near the sensor's height one line's arc passed for a plane.
 
 #include "relslam/em/dense_extraction.hpp"
 
