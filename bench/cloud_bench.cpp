@@ -124,14 +124,16 @@ struct ViewSet {
 std::vector<ViewSet> view_sets() {
   sim::DepthCameraOptions exact, kinect;  // kinect: the camera's defaults
   exact.noise_per_depth2 = 0.0, exact.missing = 0.0;
-  std::vector<ViewSet> sets = {{"sim pillar room exact", em::test::pillar_room(), em::test::pillar_room_poses(), exact},
-                               {"sim pillar room kinect", em::test::pillar_room(), em::test::pillar_room_poses(), kinect}};
+  const eval::CloudPlaneOptions defaults;
+  std::vector<ViewSet> sets = {
+      {"sim pillar room exact", em::test::pillar_room(), em::test::pillar_room_poses(), exact, defaults},
+      {"sim pillar room kinect", em::test::pillar_room(), em::test::pillar_room_poses(), kinect, defaults}};
   const sim::PlanarMap map = eval::read_planar_map(RELSLAM_SOURCE_DIR "/scenarios/maps/e_motion_room.json");
   const sim::PlanarPath path(map.path);
   std::vector<PlanarPose> poses;
   for (int k = 0; k < path.iterations(); k += 60) poses.push_back(path.world_T_robot(k));
-  sets.push_back({"sim map E exact", map.world, poses, exact});
-  sets.push_back({"sim map E kinect", map.world, poses, kinect});
+  sets.push_back({"sim map E exact", map.world, poses, exact, defaults});
+  sets.push_back({"sim map E kinect", map.world, poses, kinect, defaults});
   // d_in growing as the camera's 3σ (EmOptions::inlier_per_range2), as the depth scenarios use it.
   eval::CloudPlaneOptions grows;
   grows.em.inlier_per_range2 = 3.0 * kinect.noise_per_depth2;

@@ -1,9 +1,9 @@
 // The real Kinect frame of Debian's mrpt-common (tests_rgbd.rawlog, 640 × 480): every surface
 // Open3D's SegmentPlane finds, once its parallel slices of one surface are merged, against EM2's
-// planes at sensor density. The goal is each surface found once; measured (and bounded here):
-// each is held by one EM2 plane (68–98 %) but for a slab
-// across two surfaces that meet at a shallow angle (40 % by one, 23 % by another), and the
-// back wall holds most of two EM2 planes. Skips where mrpt-common or Open3D is absent.
+// planes at sensor density. The goal, each surface found once: no surface holds most of two
+// EM2 planes (the back wall did, before every pixel asked every plane, dense_extraction.cpp),
+// and each is held by one EM2 plane but for a slab across two surfaces that meet at a shallow
+// angle (docs/point-clouds.md has the shares). Skips where mrpt-common or Open3D is absent.
 
 #include "relslam/eval/sources/cloud_planes.hpp"
 
@@ -96,7 +96,7 @@ TEST(KinectFrame, EverySurfaceSegmentPlaneFindsIsHeldByAnEm2Plane) {
     log += "surface " + std::to_string(s) + ": " + std::to_string(size[s]) + " points, the best EM2 plane holds " +
            std::to_string(best) + ", EM2 planes mostly in it " + std::to_string(inside) + "\n";
     EXPECT_GE(3 * best, size[s]) << "surface of SegmentPlane plane " << s;  // measured: >= 40 %
-    EXPECT_LE(inside, 2) << "surface of SegmentPlane plane " << s;         // measured: 2 on the back wall
+    EXPECT_LE(inside, 1) << "surface of SegmentPlane plane " << s;
   }
   EXPECT_LT(em2.ms, 1000.0);
   EXPECT_LE(em2.result.planes.size(), 10u);

@@ -48,7 +48,7 @@ em::EmResult run(CloudExtractor e, const em::DenseCloud& cloud, const CloudPlane
       break;
     case CloudExtractor::SegmentPlane: break;
   }
-  return em::densify(cloud, summary, coarse, o.em);
+  return em::densify(cloud, summary, coarse, o.em, o.dense);
 }
 
 double coordinate(const CsvContents& csv, std::size_t row, int column, const char* name) {

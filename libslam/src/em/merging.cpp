@@ -23,13 +23,18 @@ bool mergeable(const EmPlane& a, const EmPlane& b, const EmOptions& o) {
 }
 
 int merge_planes(std::vector<EmPlane>& planes, std::span<const Eigen::Vector3d> points, const EmOptions& o) {
+  return merge_planes_where(planes, points, [&](const EmPlane& a, const EmPlane& b) { return mergeable(a, b, o); });
+}
+
+int merge_planes_where(std::vector<EmPlane>& planes, std::span<const Eigen::Vector3d> points,
+                       const std::function<bool(const EmPlane&, const EmPlane&)>& same_surface) {
   int merges = 0;
   for (std::size_t i = 0; i < planes.size(); ++i) {
     bool grew = true;
     while (grew) {  // a grown plane may now reach planes it did not before
       grew = false;
       for (std::size_t j = i + 1; j < planes.size(); ++j) {
-        if (!mergeable(planes[i], planes[j], o)) continue;
+        if (!same_surface(planes[i], planes[j])) continue;
         EmPlane& into = planes[i];
         std::vector<int> joined;
         std::set_union(into.points.begin(), into.points.end(), planes[j].points.begin(), planes[j].points.end(),

@@ -14,7 +14,8 @@ std::optional<EmPlane> seed_plane(std::span<const Eigen::Vector3d> points, int s
   // The two nearest by (squared distance, index).
   using Near = std::pair<double, int>;
   constexpr Near kNone{std::numeric_limits<double>::infinity(), -1};
-  const double radius2 = options.seed_radius * options.seed_radius;
+  const double radius = std::max(options.seed_radius, options.seed_radius_per_range * p.norm());
+  const double radius2 = radius * radius;
   // The nearest by (squared distance, index) among the candidates `usable` admits.
   auto nearest = [&](auto usable) {
     Near best = kNone;

@@ -36,7 +36,9 @@ void add_extract(CLI::App& app, ExtractArgs& args) {
       "               view from above for other clouds)\n"
       "Example:\n"
       "  relslam extract --rawlog /usr/share/mrpt/datasets/tests_rgbd.rawlog --out runs/kinect\n"
-      "  relslam extract --points scan.csv --out runs/scan --extractors em2 --inlier-distance 0.1");
+      "  relslam extract --points scan.csv --out runs/scan --extractors em2 --inlier-distance 0.1\n"
+      "  relslam extract --rawlog /usr/share/mrpt/datasets/test_velodyne_VLP16.rawlog --out runs/vlp16 \\\n"
+      "      --inlier-distance 0.1 --summary-points 20000 --seed-radius-per-range 0.2");
   auto* source = cmd->add_option_group("source", "the clouds");
   source->add_option("--rawlog", args.rawlog, "MRPT rawlog of point clouds");
   source->add_option("--points", args.points, "a point file: .csv (x,y,z), .ply or .pcd");
@@ -53,6 +55,10 @@ void add_extract(CLI::App& app, ExtractArgs& args) {
   cmd->add_option("--inlier-per-range2", args.inlier_per_range2,
                   "d_in grows to this times the squared range where that is larger, 1/m (a Kinect: 0.0043, "
                   "3 x its depth noise 1.425e-3 z^2; 0: off)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--seed-radius-per-range", args.seed_radius_per_range,
+                  "EM's seed radius grows to this times the seed's range where that is larger (a lidar's "
+                  "scan lines: 0.2 reaches the next line on the ground; 0: off)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--summary-points", args.summary_points, "EM runs on at most this many points of a cloud")
       ->check(CLI::Range(3, 1 << 24));
@@ -136,6 +142,7 @@ int run_extract(const ExtractArgs& args) {
   o.em = em::EmOptions::for_point_sigma(args.inlier_distance / 3.0);
   o.em.inlier_distance = args.inlier_distance;
   o.em.inlier_per_range2 = args.inlier_per_range2;
+  o.em.seed_radius_per_range = args.seed_radius_per_range;
   o.dense.summary_points = args.summary_points;
   o.segment_plane.distance = std::min(o.segment_plane.distance, args.inlier_distance);
   prepare_run_folder(args.out, args.force);

@@ -4,10 +4,11 @@
 //
 // EM runs on a summary of the cloud (cloud_summary.hpp), a few thousand points as dense as its
 // seeding, growth and density check need; every point of the full cloud then joins the plane
-// that accepts it and lies nearest (for an organised cloud only the planes of the four summary
-// pixels around it are asked, so the pass is linear in the points), and each plane is fit again
-// on all its points with the tight gate of tight_refit.hpp. Planes seen edge-on (through the
-// sensor, the origin) are dropped, and pieces of one surface that meet at full density merged. The planes are as exact as the full
+// that accepts it and lies nearest (every plane is asked: a few per frame, each rejecting most
+// points by its box), and each plane is fit again on all its points with the tight gate of
+// tight_refit.hpp. Planes seen edge-on (through the sensor, the origin) are dropped, and pieces
+// of one surface that meet at full density merged; on a lidar's scan, pieces along its scan
+// lines that one plane holds merge (coplanar_merging.hpp). The planes are as exact as the full
 // cloud allows while EM's cost is that of the summary.
 
 #include "relslam/em/cloud_summary.hpp"
@@ -15,6 +16,7 @@
 #include "relslam/em/options.hpp"
 
 #include <cstdint>
+#include <numbers>
 #include <span>
 
 namespace relslam::em {
@@ -26,11 +28,25 @@ struct DenseOptions {
   int summary_points = 4800;
   // Unorganised clouds: the voxel edge tried first (doubled until the summary fits), units [C].
   double voxel = 0.02;
+  // Unorganised clouds: pieces of planes whose joint fit holds them both merge when their
+  // boxes lie at most e_exp + scan_gap_per_range · range apart, r the smaller mean range of
+  // their points (coplanar_merging.hpp) [C]. A lidar's scan lines lie 2° apart on a VLP-16: 1.1 on
+  // the ground at 8 from a sensor 2.2 above it, 6 at 20; and the ground on either side of the
+  // sensor's blind circle (8.2 across at 15° below) lies up to about its range apart. 0: off.
+  double scan_gap_per_range = 1.2;
+  // Unorganised clouds: planes whose points span a smaller elevation angle from the sensor are
+  // one or two scan lines, no surface (a VLP-16's lines lie 2° apart) [C]. 0: off.
+  double min_elevation_span_rad = 3.0 * std::numbers::pi / 180.0;
 };
 
 void describe(OptionsOf<DenseOptions> auto& o, auto& f) {
   f.field("summary_points", o.summary_points, "EM runs on at most this many points of the cloud", at_least(3));
   f.field("voxel", o.voxel, "unorganised clouds: first voxel edge tried for the summary, units", above(0.0));
+  f.field("scan_gap_per_range", o.scan_gap_per_range,
+          "unorganised clouds: coplanar pieces this far apart per unit of range merge (0: off)", at_least(0.0));
+  f.degrees("min_elevation_span_deg", o.min_elevation_span_rad,
+            "unorganised clouds: planes spanning a smaller elevation angle are scan lines, degrees", at_least(0.0),
+            at_most(90.0));
 }
 
 enum class EmVariant : unsigned char { Em1, Em2 };
@@ -57,10 +73,10 @@ CloudSummary summarise(const DenseCloud& cloud, const DenseOptions& dense);
 // full cloud: every point joins the nearest plane that accepts it (options' d_in and e_exp),
 // planes with fewer than min_support points or seen edge-on are dropped, pieces that now meet
 // merge, an organised cloud's planes whose pixels form strips rather than a patch of the image
-// are dropped, then the tight refit and the rectangles. Linear in the points for organised clouds,
-// points × planes otherwise.
+// are dropped, an unorganised cloud's coplanar pieces along scan lines merge
+// (dense.scan_gap_per_range), then the tight refit and the rectangles. Points × planes.
 EmResult densify(const DenseCloud& cloud, const CloudSummary& summary, const EmResult& coarse,
-                 const EmOptions& options);
+                 const EmOptions& options, const DenseOptions& dense);
 
 // The planes of the cloud by EM1 or EM2 (run_em1 / run_em2 on the summary, seeded by `seed`).
 // Requires check(options) to be empty and dense options within their describe() bounds.

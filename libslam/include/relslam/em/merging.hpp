@@ -5,6 +5,7 @@
 #include "relslam/em/em_plane.hpp"
 #include "relslam/em/options.hpp"
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -20,5 +21,9 @@ bool mergeable(const EmPlane& a, const EmPlane& b, const EmOptions& options);
 // of the points, refit), so the result depends only on the planes' order. The merged plane is
 // the older one: it keeps the larger age and its seed point. Returns the number of merges.
 int merge_planes(std::vector<EmPlane>& planes, std::span<const Eigen::Vector3d> points, const EmOptions& options);
+
+// The same with another test of whether two planes model one surface.
+int merge_planes_where(std::vector<EmPlane>& planes, std::span<const Eigen::Vector3d> points,
+                       const std::function<bool(const EmPlane&, const EmPlane&)>& same_surface);
 
 }  // namespace relslam::em

@@ -160,6 +160,12 @@ struct EmOptions {
   double bound_expansion = 0.3;
   // r_seed: the seed's two nearest unassigned points must lie within this, units [T concept, R].
   double seed_radius = 0.5;
+  // r_seed at range: a seed at distance r from the sensor takes its points within
+  // max(r_seed, seed_radius_per_range · r), for sensors whose points thin out with the range
+  // across their scan lines (a lidar's lines lie 2° apart on a VLP-16: 1.1 on the ground 8
+  // out, where no line holds three points that are not collinear within 0.5) [C]. 0: r_seed at
+  // every range.
+  double seed_radius_per_range = 0.0;
   // A seed whose three points are nearly collinear, |a × b| / (|a||b|) below this, fails [R].
   double min_seed_sine = 0.1;
   // Seeding attempts per EM1 iteration, and failed seeds in a row that end EM2 [T concept, R].
@@ -206,6 +212,8 @@ void describe(OptionsOf<EmOptions> auto& o, auto& f) {
   f.field("bound_expansion", o.bound_expansion, "e_exp: the plane's box widened by this for membership, units",
           at_least(0.0));
   f.field("seed_radius", o.seed_radius, "a seed's two nearest points lie within this, units", above(0.0));
+  f.field("seed_radius_per_range", o.seed_radius_per_range,
+          "the seed radius grows to this times the seed's range where that is larger (0: off)", at_least(0.0));
   f.field("min_seed_sine", o.min_seed_sine, "seeds less bent than this (sine) are collinear", at_least(0.0),
           at_most(1.0));
   f.field("seed_attempts", o.seed_attempts, "seeding attempts per EM1 iteration / failures in a row ending EM2",

@@ -20,6 +20,7 @@ struct ExtractArgs {
   int max_frames = 0;  // 0: all
   double inlier_distance = 0.05;
   double inlier_per_range2 = 0.0;
+  double seed_radius_per_range = 0.0;
   int summary_points = 4800;
   bool pictures = true;
   bool quiet = false;
