@@ -125,12 +125,17 @@ ceres::CostFunction* observation_cost(const OptimumObservation& o, const Observa
 }
 
 // The observations' loss; nullptr is least squares. Ceres's scale a is the residual norm where
-// the loss bends, so loss_scale sigmas of the whitened residual.
+// the loss bends, so loss_scale sigmas of the whitened residual. auto: robust only when the
+// association is another estimator's, whose wrong matches are outliers.
 ceres::LossFunction* observation_loss(const BatchOptimumOptions& options) {
-  switch (options.loss) {
+  OptimumLoss loss = options.loss;
+  if (loss == OptimumLoss::Auto)
+    loss = options.association == OptimumAssociation::RelativePoint ? OptimumLoss::Cauchy : OptimumLoss::None;
+  switch (loss) {
     case OptimumLoss::Huber: return new ceres::HuberLoss(options.loss_scale);
     case OptimumLoss::Cauchy: return new ceres::CauchyLoss(options.loss_scale);
-    case OptimumLoss::None: break;
+    case OptimumLoss::None:
+    case OptimumLoss::Auto: break;
   }
   return nullptr;
 }
