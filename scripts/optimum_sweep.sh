@@ -5,10 +5,11 @@
 #
 #   scripts/optimum_sweep.sh OUT [RELSLAM] [JOBS]
 #
-# Each scenario is five relslam sweeps over the same seeds, so the slow EKF and the optimum run
+# Each scenario is six relslam sweeps over the same seeds, so the slow EKF and the optimum run
 # once per seed: base/ (Relative Point thesis, the optimum), adaptive/ and relaxed/ (Relative
 # Point alone), motion/ (the optimum with the EKF's constant-position motion model, the EKF's
-# floor), ekf/ (the EKF alone); the table checks that all saw the same frames. S-F8-2L runs with S-EKF-F8's EKF
+# floor), ekfmodel/ (the optimum with the EKF's motion and sensor model), ekf/ (the EKF alone);
+# the table checks that all saw the same frames. S-F8-2L runs with S-EKF-F8's EKF
 # settings (prev_min 8 as there). A sweep with a failed or stopped run still goes on (exit 1).
 set -uo pipefail
 out=${1:?usage: scripts/optimum_sweep.sh OUT [RELSLAM] [JOBS]}
@@ -38,6 +39,8 @@ for spec in "${specs[@]}"; do
   sweep "$scenario" "$name" "$seeds" relaxed "${ekf[@]}" "${relaxed[@]}" --set 'algorithms=["relative_point"]'
   sweep "$scenario" "$name" "$seeds" motion "${ekf[@]}" --set batch_optimum.motion_model=ekf6d \
     --set 'algorithms=["batch_optimum"]'
+  sweep "$scenario" "$name" "$seeds" ekfmodel "${ekf[@]}" --set batch_optimum.motion_model=ekf6d \
+    --set batch_optimum.noise_model=ekf6d --set 'algorithms=["batch_optimum"]'
 done
 for spec in "${specs[@]}"; do
   read -r scenario name seeds <<<"$spec"

@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Tables of every estimator against the batch optimum from scripts/optimum_sweep.sh's folders.
 
-For each scenario folder OUT/<scenario>/ the sweep left five relslam sweeps over the same seeds
+For each scenario folder OUT/<scenario>/ the sweep left six relslam sweeps over the same seeds
 (the same frames: their input digests are checked): base/ (Relative Point with the scenario's
 preset, the batch optimum), adaptive/ and relaxed/ (Relative Point alone), motion/ (the optimum
-with the EKF's motion model), ekf/ (MRPT's 6D EKF). Only finished runs enter the statistics: an
+with the EKF's motion model), ekfmodel/ (the optimum with the EKF's motion and sensor model: the
+least-squares solution of exactly the EKF's model), ekf/ (MRPT's 6D EKF). Only finished runs enter the statistics: an
 interrupted, stopped, failed or missing run is named in "not ok (left out)", never averaged. This
 prints per estimator the final mean landmark error and the ATE with their ratios to the optimum
 (mean and 95 % Student-t interval over the seeds), the mean time per iteration, the optimum's
@@ -29,7 +30,8 @@ T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8:
 ESTIMATORS = [("base", "relative_point", "Relative (scenario preset)"), ("adaptive", "relative_point", "Relative adaptive"),
               ("relaxed", "relative_point", "Relative relaxed"), ("ekf", "ekf6d", "EKF (MRPT 6D)"),
               ("base", "batch_optimum", "batch optimum"),
-              ("motion", "batch_optimum", "batch optimum + EKF's motion model")]
+              ("motion", "batch_optimum", "batch optimum + EKF's motion model"),
+              ("ekfmodel", "batch_optimum", "batch optimum with the EKF's whole model")]
 
 
 def interval(values):
@@ -82,8 +84,15 @@ def number(row, key):
         return float("nan")
 
 
+def over_floor(row, floor):
+    """row's final mean landmark error over a floor's, '–' when that floor did not finish."""
+    if not floor or floor["status"] != "ok":
+        return "–"
+    return f"{number(row, 'final_mean_landmark_error') / number(floor, 'final_mean_landmark_error'):.3g}"
+
+
 def scenario_table(folder):
-    parts = {name: runs(folder / name) for name in ("base", "adaptive", "relaxed", "ekf", "motion")}
+    parts = {name: runs(folder / name) for name in ("base", "adaptive", "relaxed", "ekf", "motion", "ekfmodel")}
     seeds = sorted(parts["base"])
     if not seeds:
         print(f"\n### {folder.name}: no finished base run yet\n")
@@ -125,8 +134,9 @@ def scenario_table(folder):
     print(f"\nbatch optimum solve time per run: {interval(solve)} s "
           f"(max {max(solve):.3g} s; its ms/iteration above is storing the frames only)\n")
     print("| seed | relaxed / EKF landmark error | relaxed / EKF ATE | relaxed / optimum landmark error "
-          "| relaxed / optimum aligned | EKF / optimum + motion model | EKF / optimum aligned | EKF status |")
-    print("|---|---|---|---|---|---|---|---|")
+          "| relaxed / optimum aligned | EKF / optimum + motion model | EKF / optimum with its whole model "
+          "| EKF / optimum aligned | EKF status |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for s in seeds:
         if s not in parts["relaxed"]:
             continue
@@ -135,12 +145,10 @@ def scenario_table(folder):
         if ekf and ekf["status"] != "ok":
             ekf = None  # an unfinished EKF is no comparison
         e = number(relaxed, "final_mean_landmark_error")
-        motion = parts["motion"].get(s, {}).get("batch_optimum")
-        ekf_floor = "– | –"
+        ekf_floor = "– | – | –"
         if ekf:
-            over_motion = (f"{number(ekf, 'final_mean_landmark_error') / number(motion, 'final_mean_landmark_error'):.3g}"
-                           if motion and motion["status"] == "ok" else "–")
-            ekf_floor = f"{over_motion} | {aligned_error(ekf['folder'], 'ekf6d') / optimum_aligned[s]:.3g}"
+            over = [over_floor(ekf, parts[p].get(s, {}).get("batch_optimum")) for p in ("motion", "ekfmodel")]
+            ekf_floor = f"{' | '.join(over)} | {aligned_error(ekf['folder'], 'ekf6d') / optimum_aligned[s]:.3g}"
         over_ekf = (f"{e / number(ekf, 'final_mean_landmark_error'):.3g} | "
                     f"{number(relaxed, 'ate_rmse') / number(ekf, 'ate_rmse'):.3g}") if ekf else "– | –"
         print(f"| {s} | {over_ekf} | {e / number(optimum[s], 'final_mean_landmark_error'):.3g} | "

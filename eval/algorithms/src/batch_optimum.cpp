@@ -78,6 +78,8 @@ class BatchOptimum final : public Algorithm {
       : options_(options), noise_(noise_of(options, ekf, sensor)), motion_(constant_position(ekf)), seed_(seed) {
     if (options.start == OptimumStart::RelativePoint || options.association == OptimumAssociation::RelativePoint)
       mapper_.emplace(relative_point, relax::solve_relaxation);
+    if (options.motion_model == OptimumMotion::ConstantVelocity)
+      problem_.constant_velocity = ConstantVelocity{options.velocity_std_xyz, options.velocity_std_angle_rad};
   }
 
   const std::string& name() const override { return name_; }
@@ -167,12 +169,12 @@ class BatchOptimum final : public Algorithm {
   }
 
   // Between the previous frame and this one: its odometry when used, else the EKF's motion model
-  // when asked for, else nothing.
+  // when asked for, else nothing (the constant-velocity prior spans three frames: in problem_).
   std::optional<StepMeasurement> step_measurement(const ObservationFrame& observation, int k) const {
     if (k == 0) return std::nullopt;
     if (options_.use_odometry && observation.odometry)
       return StepMeasurement{*observation.odometry, options_.odometry_std_xyz, options_.odometry_std_angle_rad};
-    if (options_.motion_model == OptimumModel::Ekf6d) return motion_;
+    if (options_.motion_model == OptimumMotion::Ekf6d) return motion_;
     return std::nullopt;
   }
 
@@ -201,7 +203,7 @@ class BatchOptimum final : public Algorithm {
       return points[id].dynamic || points[id].merged ? -1 : id;
     };
     std::map<int, int> index_of;
-    OptimumProblem solved{problem_.world_T_robot, {}, {}, problem_.steps};
+    OptimumProblem solved{problem_.world_T_robot, {}, {}, problem_.steps, problem_.constant_velocity};
     std::vector<int> observations_of;
     for (const OptimumObservation& o : problem_.observations) {
       const int id = kept_id(id_of_[o.landmark]);

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <chrono>
+#include <memory>
 
 namespace relslam::eval {
 namespace {
@@ -79,6 +80,27 @@ struct OdometryResidual {
   }
 };
 
+// Two consecutive steps' motions (previous_T_current of poses a->b and b->c) against each other:
+// translation per axis and the rotation's angle-axis (small angles), as OdometryResidual with the
+// earlier step as the measurement.
+struct ConstantVelocityResidual {
+  double inverse_sigma_xyz, inverse_sigma_angle;
+
+  template <typename T>
+  bool operator()(const T* q_a, const T* t_a, const T* q_b, const T* t_b, const T* q_c, const T* t_c,
+                  T* residual) const {
+    const Eigen::Map<const Eigen::Quaternion<T>> rotation_a(q_a), rotation_b(q_b), rotation_c(q_c);
+    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> translation_a(t_a), translation_b(t_b), translation_c(t_c);
+    const Eigen::Quaternion<T> q_ab = rotation_a.conjugate() * rotation_b, q_bc = rotation_b.conjugate() * rotation_c;
+    const Eigen::Matrix<T, 3, 1> t_ab = rotation_a.conjugate() * (translation_b - translation_a);
+    const Eigen::Matrix<T, 3, 1> t_bc = rotation_b.conjugate() * (translation_c - translation_b);
+    Eigen::Map<Eigen::Matrix<T, 6, 1>> r(residual);
+    r.template head<3>() = T(inverse_sigma_xyz) * (t_bc - t_ab);
+    r.template tail<3>() = T(2.0 * inverse_sigma_angle) * (q_ab.conjugate() * q_bc).vec();
+    return true;
+  }
+};
+
 // Solver accuracy: far below any sensor noise, so noise-free data is solved to rounding; a
 // noisy problem stops once an iteration lowers the cost by less than kFunctionTolerance [C].
 constexpr double kTolerance = 1e-14;
@@ -102,13 +124,30 @@ ceres::CostFunction* observation_cost(const OptimumObservation& o, const Observa
       new CartesianResidual{o.p_robot, 1.0 / noise.std_range});
 }
 
-// The residual blocks of every observation and step measurement.
+// The observations' loss; nullptr is least squares. Ceres's scale a is the residual norm where
+// the loss bends, so loss_scale sigmas of the whitened residual. auto: robust only when the
+// association is another estimator's, whose wrong matches are outliers.
+ceres::LossFunction* observation_loss(const BatchOptimumOptions& options) {
+  OptimumLoss loss = options.loss;
+  if (loss == OptimumLoss::Auto)
+    loss = options.association == OptimumAssociation::RelativePoint ? OptimumLoss::Cauchy : OptimumLoss::None;
+  switch (loss) {
+    case OptimumLoss::Huber: return new ceres::HuberLoss(options.loss_scale);
+    case OptimumLoss::Cauchy: return new ceres::CauchyLoss(options.loss_scale);
+    case OptimumLoss::None:
+    case OptimumLoss::Auto: break;
+  }
+  return nullptr;
+}
+
+// The residual blocks of every observation (one loss shared by all), step measurement and, with
+// the constant-velocity prior, every three consecutive poses without a measured step.
 void add_residuals(ceres::Problem& ceres_problem, OptimumProblem& problem, std::vector<PoseBlock>& poses,
-                   const ObservationNoise& noise) {
+                   const ObservationNoise& noise, ceres::LossFunction* loss) {
   for (const OptimumObservation& o : problem.observations) {
     PoseBlock& pose = poses[o.pose];
     double* landmark = problem.landmarks[o.landmark].data();
-    ceres_problem.AddResidualBlock(observation_cost(o, noise), nullptr, pose.q.data(), pose.t.data(), landmark);
+    ceres_problem.AddResidualBlock(observation_cost(o, noise), loss, pose.q.data(), pose.t.data(), landmark);
   }
   for (std::size_t k = 1; k < problem.steps.size() && k < poses.size(); ++k) {
     if (!problem.steps[k]) continue;
@@ -118,6 +157,15 @@ void add_residuals(ceres::Problem& ceres_problem, OptimumProblem& problem, std::
                              1.0 / m.std_xyz, 1.0 / m.std_angle_rad});
     ceres_problem.AddResidualBlock(cost, nullptr, poses[k - 1].q.data(), poses[k - 1].t.data(), poses[k].q.data(),
                                    poses[k].t.data());
+  }
+  if (!problem.constant_velocity) return;
+  const ConstantVelocity& v = *problem.constant_velocity;
+  for (std::size_t k = 2; k < problem.steps.size() && k < poses.size(); ++k) {
+    if (problem.steps[k] || problem.steps[k - 1]) continue;  // a measured step is not smoothed
+    auto* cost = new ceres::AutoDiffCostFunction<ConstantVelocityResidual, 6, 4, 3, 4, 3, 4, 3>(
+        new ConstantVelocityResidual{1.0 / v.std_xyz, 1.0 / v.std_angle_rad});
+    ceres_problem.AddResidualBlock(cost, nullptr, poses[k - 2].q.data(), poses[k - 2].t.data(), poses[k - 1].q.data(),
+                                   poses[k - 1].t.data(), poses[k].q.data(), poses[k].t.data());
   }
 }
 
@@ -142,8 +190,11 @@ OptimumReport solve_optimum(OptimumProblem& problem, const ObservationNoise& noi
   OptimumReport report;
   if (problem.world_T_robot.empty()) return report;
   std::vector<PoseBlock> poses = pose_blocks(problem.world_T_robot);
-  ceres::Problem ceres_problem;
-  add_residuals(ceres_problem, problem, poses, noise);
+  const std::unique_ptr<ceres::LossFunction> loss(observation_loss(options));
+  ceres::Problem::Options problem_options;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;  // one loss, many blocks
+  ceres::Problem ceres_problem(problem_options);
+  add_residuals(ceres_problem, problem, poses, noise, loss.get());
   for (std::size_t k = 0; k < poses.size(); ++k) {
     if (!ceres_problem.HasParameterBlock(poses[k].q.data())) continue;  // a frame without observations
     ceres_problem.SetManifold(poses[k].q.data(), new ceres::EigenQuaternionManifold);

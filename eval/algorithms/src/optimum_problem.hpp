@@ -29,18 +29,28 @@ struct StepMeasurement {
   double std_angle_rad = 1;  // per axis
 };
 
+// A smooth path's prior: the step from pose k-1 to k (previous_T_current) the same as the one
+// from k-2 to k-1, with these standard deviations of the difference per step.
+struct ConstantVelocity {
+  double std_xyz = 1;        // units, per axis
+  double std_angle_rad = 1;  // per axis
+};
+
 struct OptimumProblem {
   std::vector<Rigid3> world_T_robot;       // the start, solved in place; [0] held
   std::vector<Eigen::Vector3d> landmarks;  // the start, solved in place
   std::vector<OptimumObservation> observations;
   // steps[k]: between poses k-1 and k (k >= 1), when there is one.
   std::vector<std::optional<StepMeasurement>> steps;
+  // With a value: the constant-velocity prior on every three consecutive poses whose two steps
+  // have no measurement in steps.
+  std::optional<ConstantVelocity> constant_velocity;
 };
 
 struct OptimumReport {
   bool usable = false;       // Ceres's solution is usable (a converged or stopped-at-the-cap solve)
   int solver_iterations = 0;
-  double initial_cost = 0, final_cost = 0;  // half the sum of squared whitened residuals
+  double initial_cost = 0, final_cost = 0;  // half the sum of squared whitened residuals (under the loss)
   double solve_s = 0;                       // wall time of the solve, seconds
   std::string termination;                  // Ceres's own words on why it stopped
 };

@@ -23,15 +23,26 @@ inline std::string_view to_string(OptimumStart start) {
   return start == OptimumStart::Truth ? "truth" : "relative_point";
 }
 
-// Where a piece of the model comes from: the run's own (the sensor's noise; no motion model), or
-// the EKF's settings (ekf6d.*), to give the floor exactly what the EKF is given.
+// Where the sensor model comes from: the run's own (the sensor's stated noise), or the EKF's
+// settings, to give the floor exactly what the EKF is given.
 enum class OptimumModel {
-  Own,    // the sensor's stated noise; no motion model (the thesis's comparison) [C]
-  Ekf6d,  // the EKF's: its sensor model (ekf6d.std_range, std_yaw_deg, std_pitch_deg), or its
-          // constant-position motion model (ekf6d.stds_q) between frames without odometry
+  Own,    // the sensor's stated noise [C]
+  Ekf6d,  // the EKF's sensor model (ekf6d.std_range, std_yaw_deg, std_pitch_deg)
 };
 inline constexpr OptimumModel kOptimumModels[] = {OptimumModel::Own, OptimumModel::Ekf6d};
 inline std::string_view to_string(OptimumModel model) { return model == OptimumModel::Own ? "own" : "ekf6d"; }
+
+// A motion model between frames without odometry: none, the EKF's, or a smooth path's.
+enum class OptimumMotion {
+  Own,               // none, as Relative Point (the thesis's comparison) [C]
+  Ekf6d,             // the EKF's constant position: the pose stays, with ekf6d.stds_q per step
+  ConstantVelocity,  // each step's motion (previous_T_current) as the step's before it
+};
+inline constexpr OptimumMotion kOptimumMotions[] = {OptimumMotion::Own, OptimumMotion::Ekf6d,
+                                                    OptimumMotion::ConstantVelocity};
+inline std::string_view to_string(OptimumMotion motion) {
+  return motion == OptimumMotion::Own ? "own" : motion == OptimumMotion::Ekf6d ? "ekf6d" : "constant_velocity";
+}
 
 // Which landmark each observation is: the ids the frames carry (a simulation's truth, a rawlog's
 // own), or the landmarks a Relative Point run over the same frames assigns them to, for data
@@ -45,6 +56,28 @@ inline constexpr OptimumAssociation kOptimumAssociations[] = {OptimumAssociation
                                                               OptimumAssociation::RelativePoint};
 inline std::string_view to_string(OptimumAssociation association) {
   return association == OptimumAssociation::Known ? "known" : "relative_point";
+}
+
+// The loss on each observation's whitened residual. With the right association and Gaussian
+// noise least squares (none) is the maximum-likelihood estimate; with an association taken from
+// another estimator (association relative_point) a wrong match or a split landmark is an outlier
+// that a robust loss lets go [C].
+enum class OptimumLoss {
+  Auto,    // none with the known association, cauchy with relative_point's [C, measured]
+  None,    // least squares
+  Huber,   // quadratic up to loss_scale sigmas, linear beyond
+  Cauchy,  // log(1 + (r / loss_scale)^2): an outlier's pull fades
+};
+inline constexpr OptimumLoss kOptimumLosses[] = {OptimumLoss::Auto, OptimumLoss::None, OptimumLoss::Huber,
+                                                 OptimumLoss::Cauchy};
+inline std::string_view to_string(OptimumLoss loss) {
+  switch (loss) {
+    case OptimumLoss::Auto: return "auto";
+    case OptimumLoss::None: return "none";
+    case OptimumLoss::Huber: return "huber";
+    case OptimumLoss::Cauchy: break;
+  }
+  return "cauchy";
 }
 
 struct BatchOptimumOptions {
@@ -63,9 +96,21 @@ struct BatchOptimumOptions {
   double odometry_std_angle_rad = 0.5 * std::numbers::pi / 180.0;  // read and written in degrees [C]
   // The observations' noise model: the sensor's (own) or the EKF's sensor model (ekf6d) [C].
   OptimumModel noise_model = OptimumModel::Own;
-  // A motion model between consecutive frames without odometry: none (own) or the EKF's
-  // constant-position model (ekf6d: the pose stays, with ekf6d.stds_q per step) [C].
-  OptimumModel motion_model = OptimumModel::Own;
+  // A motion model between consecutive frames without odometry: none (own), the EKF's
+  // constant-position model (ekf6d: the pose stays, with ekf6d.stds_q per step) or constant
+  // velocity (each step's motion as the one before, with the deviations below) [C].
+  OptimumMotion motion_model = OptimumMotion::Own;
+  // Constant velocity: how much a step's motion may differ from the one before, per axis. The
+  // simulated figure eight moves 0.3 units a step at constant speed, turning by about 0.3 degrees
+  // a step on its arcs and not at all on its straights: the change where they meet [C].
+  double velocity_std_xyz = 0.01;                                  // units per step, per axis
+  double velocity_std_angle_rad = 0.3 * std::numbers::pi / 180.0;  // read and written in degrees
+  // The observations' loss and its scale in sigmas of the whitened residual (each component's
+  // deviation over its standard deviation; the loss sees the squared norm of the three). Scale 1
+  // gave the lowest error with Relative Point's association on MRPT's 6D demo log and both
+  // Victoria Park windows among 1, 2 and 3 (docs/algorithms/batch-optimum.md) [C, measured].
+  OptimumLoss loss = OptimumLoss::Auto;
+  double loss_scale = 1.0;
   // Levenberg-Marquardt iterations at most; a consistent start converges in a handful [C].
   int max_iterations = 100;
 };
@@ -91,8 +136,19 @@ void describe(OptionsOf<BatchOptimumOptions> auto& o, auto& f) {
            "observation noise: own (the sensor's) or ekf6d (the EKF's std_range, std_yaw_deg, std_pitch_deg)",
            kOptimumModels);
   f.choice("motion_model", o.motion_model,
-           "between frames without odometry: own (none) or ekf6d (the EKF's constant position, stds_q)",
-           kOptimumModels);
+           "between frames without odometry: own (none), ekf6d (the EKF's constant position, stds_q) or "
+           "constant_velocity",
+           kOptimumMotions);
+  f.field("velocity_std_xyz", o.velocity_std_xyz,
+          "constant_velocity: std. deviation of a step's change of translation per axis, units", above(0.0));
+  f.degrees("velocity_std_angle_deg", o.velocity_std_angle_rad,
+            "constant_velocity: std. deviation of a step's change of rotation per axis", above(0.0));
+  f.choice("loss", o.loss,
+           "loss on each observation: auto (none with known ids, cauchy with association relative_point), none, "
+           "huber or cauchy",
+           kOptimumLosses);
+  f.field("loss_scale", o.loss_scale, "scale of the huber or cauchy loss, sigmas of the whitened residual",
+          above(0.0));
   f.field("max_iterations", o.max_iterations, "Levenberg-Marquardt iterations at most", at_least(1));
 }
 
