@@ -145,7 +145,7 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const ReorderPlane
 bool RltXPoint::reorder_consistently(std::vector<RltPlane>& planes, const std::vector<std::vector<int>>& weight,
                                      const std::vector<std::vector<KeyPoint>>& end, const std::vector<int>& current,
                                      const ReorderPlanesOptions& options) {
-  // grounded_map: the order changes only when the chain there is passes a plane on two ends; the
+  // consistent_ends: the order changes only when the chain there is passes a plane on two ends; the
   // best order through consistent ends replaces it, if there is one [C].
   if (consistent_chain(current, weight, end)) return false;
   const std::optional<std::vector<int>> path = best_consistent_path(weight, end, options.reorder.exact_max_planes);

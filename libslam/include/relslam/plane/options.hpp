@@ -259,7 +259,7 @@ struct RelativePlaneOptions {
   // went unmeasured. On the generated maps it leaves no wrong pose valid but keeps far fewer
   // poses valid and walls mapped with the small frustum (docs/generated-maps.md), so it is off.
   bool grounded_map = false;
-  // Adaptive preset only [C: off; on with grounded_map]: X0 rests only on what fixes it in the
+  // Adaptive preset only [C: off; on with grounded_map and open_cut_ends]: X0 rests only on what fixes it in the
   // start frame (beyond Rule 4): a first reading with an end the sensor did not cut, on which X0
   // holds the plane, or the lines of two first readings whose directions differ by
   // integrity.min_angle_rad (a corner: their offsets fix the position, whatever the ends). A first
@@ -349,9 +349,16 @@ inline bool cut_ends_open(const RelativePlaneOptions& o) { return o.preset == Pr
 // grounded_map in effect: asked for, under the adaptive preset.
 inline bool map_grounded(const RelativePlaneOptions& o) { return o.preset == Preset::Adaptive && o.grounded_map; }
 
-// observed_anchor in effect: asked for, or grounded_map, under the adaptive preset.
+// observed_anchor in effect: asked for, or grounded_map with open_cut_ends, under the adaptive
+// preset.
 inline bool anchor_observed(const RelativePlaneOptions& o) {
-  return o.preset == Preset::Adaptive && (o.observed_anchor || o.grounded_map);
+  return o.preset == Preset::Adaptive && (o.observed_anchor || (o.grounded_map && o.open_cut_ends));
+}
+
+// grounded_map with open_cut_ends: the ends key points rest on are the walls' own, so a chain is
+// searched again for an order through consistent ends (ReorderPlanesOptions::consistent_ends).
+inline bool chains_through_consistent_ends(const RelativePlaneOptions& o) {
+  return map_grounded(o) && cut_ends_open(o);
 }
 
 constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Group};
@@ -531,7 +538,7 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
           "valid pose on the generated maps, but far fewer valid poses with the small frustum) [C]");
   f.field("observed_anchor", o.observed_anchor,
           "adaptive preset: X0 rests only on a first reading's uncut end or on the lines of two non-parallel first "
-          "readings, else waits unplaced (beyond Rule 4; on with grounded_map) [C]");
+          "readings, else waits unplaced (beyond Rule 4; on with grounded_map and open_cut_ends) [C]");
   f.nested("local_match", o.local_match, true);
   f.nested("global_match", o.global_match, false);
   f.field("plane_capacity", o.plane_capacity, "observations kept per RltPlane (thesis 4.4.3.4: 1200)", at_least(1));

@@ -66,7 +66,7 @@ struct ReorderPlanesOptions {
   bool reorder_planes;         // rules.reorder_planes: periodically
   bool reorder_broken_chains;  // rules.reorder_broken_chains: while unplaced
   ReorderOptions reorder;
-  // grounded_map: a group whose chain broke at a plane anchored on different ends
+  // grounded_map with open_cut_ends: a group whose chain broke at a plane anchored on different ends
   // (ComputeXPointOptions::consistent_ends) is searched again, at most every reorder.broken_gap
   // iterations, for an order through consistent ends (consistent_chain.hpp) [C].
   bool consistent_ends;
@@ -78,7 +78,7 @@ struct ReorderPlanesOptions {
         reorder_planes(o.rules.reorder_planes),
         reorder_broken_chains(o.rules.reorder_broken_chains),
         reorder(o.reorder),
-        consistent_ends(map_grounded(o)),
+        consistent_ends(chains_through_consistent_ends(o)),
         same_length(o.same_length) {}
 };
 
