@@ -74,6 +74,22 @@ CloudPlaneOptions depth_extraction(const sim::DepthCameraOptions& camera) {
 // A real end is known to within two summary pixels at 2.5 units (stride 8 at 525 px) [C].
 constexpr double kDepthEndTolerance = 0.1;
 
+// Whether a wall's end (robot frame) lies where the depth camera stopped seeing rather than where
+// the wall stops, as the plane sensor flags the ends its clip made (PlaneObject::a_cut, b_cut):
+// within the summary's stride (8 pixels) of the image's side, or within 3σ of the depth (plus
+// 5 cm) of the nearest or farthest return [C]. Ends hidden behind a nearer wall are not flagged.
+// relative_plane.open_cut_ends and observed_anchor read the flags: a depth camera's first wall
+// cut at both ends says nothing about where along it the start was.
+bool depth_cut(const Eigen::Vector2d& end, const sim::DepthCameraOptions& camera) {
+  constexpr double kSidePixels = 8;
+  const double depth = end.x();
+  if (depth <= camera.min_depth + 0.05) return true;
+  const double column = camera.cx - camera.fx * end.y() / depth;  // image x runs to the robot's right (-z)
+  const double sigma = camera.noise_per_depth2 * camera.max_depth * camera.max_depth;
+  return column < kSidePixels || column > camera.width - 1 - kSidePixels ||
+         depth >= camera.max_depth - 3.0 * sigma - 0.05;
+}
+
 }  // namespace
 
 // The depth camera's walls in place of the plane sensor's planes. The image's points are in the
@@ -91,6 +107,8 @@ void RangeSensorFrames::extract(int k, const sim::DepthFrame& image, sim::PlaneS
   for (PlaneObject& p : walls.frame.planes) {
     p.y_lo += options_.depth.camera_height;
     p.y_hi += options_.depth.camera_height;
+    p.a_cut = depth_cut(p.a, options_.depth);
+    p.b_cut = depth_cut(p.b, options_.depth);
   }
   frame.observation.planes = std::move(walls.frame.planes);
   const std::vector<em::TrueWallEnds> ends = true_ends(world_, frame.truth.world_T_robot);

@@ -79,11 +79,17 @@ void RltMapBuilder::place_x0(const RltXPoint& x0, const std::vector<RltPlane>& p
     any = true;
   }
   // A first observation that cannot be grown to the plane's size gives no estimate; when none
-  // can, they are used as seen [R]. With open_cut_ends, first those grown from an end the
-  // sensor did not cut (uncut_first_observation_pose) [C].
-  enum class Pass { Uncut, Grown, AsSeen };
-  for (Pass pass : {Pass::Uncut, Pass::Grown, Pass::AsSeen}) {
-    if (world_T_x0.count() > 0 || (pass == Pass::Uncut) != (options.cut_ends_open && options.prefer_grounded)) continue;
+  // can, they are used as seen [R]. With observed_anchor only those grown from an end the sensor
+  // did not cut (uncut_first_observation_pose), else the lines of two non-parallel ones
+  // (lines_first_observation_pose), else none: X0 waits [C].
+  enum class Pass { Uncut, Lines, Grown, AsSeen };
+  for (Pass pass : {Pass::Uncut, Pass::Lines, Pass::Grown, Pass::AsSeen}) {
+    if (world_T_x0.count() > 0 || (pass == Pass::Uncut || pass == Pass::Lines) != options.observed_anchor) continue;
+    if (pass == Pass::Lines) {
+      const std::optional<PlanarPose> lines = lines_first_observation_pose(x0, planes, earliest, world_T_start, options);
+      if (lines) world_T_x0.add(options.anchor_first_observation ? *lines : PlanarPose::identity());
+      continue;
+    }
     for (PlaneId p : x0.planes()) {
       const RltXPointRef* ref = planes[p].ref(x0.id());
       if (!ref->valid || planes[p].created_iteration() != earliest) continue;
@@ -111,6 +117,24 @@ std::optional<PlanarPose> RltMapBuilder::uncut_first_observation_pose(const RltX
     if (!cut && (whole || ref->key_point == end)) return adjust_size(first, ref->max_length, end).pose();
   }
   return std::nullopt;
+}
+
+std::optional<PlanarPose> RltMapBuilder::lines_first_observation_pose(const RltXPoint& x0,
+                                                                       const std::vector<RltPlane>& planes,
+                                                                       int earliest, const PlanarPose& world_T_start,
+                                                                       const BuildMapOptions& options) {
+  // observed_anchor (beyond Rule 4): the first readings seen from the start pose, each on its
+  // plane's line in X0, as a pose is put on the map's lines (fit_pose_to_lines): two lines more
+  // than min_angle apart fix where X0 is whatever the readings' ends (a corner).
+  std::vector<LinePair> pairs;
+  for (PlaneId p : x0.planes()) {
+    const RltXPointRef* ref = planes[p].ref(x0.id());
+    if (!ref->valid || planes[p].created_iteration() != earliest) continue;
+    const PlaneObject& first = planes[p].first_observation();
+    pairs.push_back({PlaneObject::from_pose(ref->pose, ref->max_length, first.y_lo, first.y_hi),
+                     first.transformed(world_T_start)});
+  }
+  return fit_pose_to_lines(pairs, options.min_angle_rad);
 }
 
 void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,

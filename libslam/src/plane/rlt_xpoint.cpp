@@ -2,6 +2,7 @@
 
 #include "relslam/plane/calculate_missing_key_points.hpp"
 #include "relslam/plane/key_point_compare.hpp"
+#include "relslam/plane/consistent_chain.hpp"
 #include "relslam/plane/reorder_planes.hpp"
 
 #include <algorithm>
@@ -95,11 +96,12 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const ReorderPlane
   const bool periodic =
       options.reorder_planes && (last_reorder_ < 0 ? iteration - created_iteration_ >= options.reorder.first_age
                                                    : iteration - last_reorder_ >= options.reorder.period);
-  const bool broken = options.reorder_broken_chains && !placed() &&
-                      (last_reorder_ < 0 || iteration - last_reorder_ >= options.reorder.broken_gap) &&
-                      edges_.size() + 1 == chain_.size() &&
+  const bool gap_passed = last_reorder_ < 0 || iteration - last_reorder_ >= options.reorder.broken_gap;
+  const bool broken = options.reorder_broken_chains && !placed() && gap_passed && edges_.size() + 1 == chain_.size() &&
                       !std::ranges::all_of(edges_, [](const CompareResult& e) { return places_both(e); });
-  if (!periodic && !broken) return false;
+  const bool inconsistent = options.consistent_ends && gap_passed &&
+                            std::ranges::any_of(chain_, [&](PlaneId p) { return !planes[p].ref(id_)->valid; });
+  if (!periodic && !broken && !inconsistent) return false;
   last_reorder_ = iteration;
   const RltPlaneInterval* within = comparison_window(planes, options.interval_mode);
   scratch_observations_.resize(n);
@@ -107,12 +109,24 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const ReorderPlane
   // W[i][j] (thesis 4.3.7.1): the iterations ComparePlanes(i, j) used when both planes get a key
   // point from it (or are static there); −1 otherwise: the pair cannot place one from the other.
   std::vector<std::vector<int>> weight(n, std::vector<int>(n, -1));
+  // end[i][j]: the end ComparePlanes(i, j) anchored plane i on (consistent_chain.hpp); none for a
+  // plane that kept its size there or was seen whole.
+  std::vector<std::vector<KeyPoint>> end(n, std::vector<KeyPoint>(n, KeyPoint::None));
+  const auto seen_whole = [&](int i) {
+    const RltPlane& plane = planes[chain_[i]];
+    return plane.whole_length(options.compare.cut_ends_open) <= plane.longest_seen() + options.same_length;
+  };
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
       const CompareResult r =
           compare_with_key_points(observations(planes, i, within), observations(planes, j, within), options.compare);
       weight[i][j] = weight[j][i] = places_both(r) ? r.samples : -1;
+      if (!r.static1 && !seen_whole(i)) end[i][j] = r.key_point1;
+      if (!r.static2 && !seen_whole(j)) end[j][i] = r.key_point2;
     }
+  std::vector<int> current(n);
+  for (int k = 0; k < n; ++k) current[k] = k;
+  if (options.consistent_ends) return reorder_consistently(planes, weight, end, current, options);
   const std::optional<std::vector<int>> path = best_comparison_path(weight, options.reorder.exact_max_planes);
   if (!path) return false;  // no chain of usable pairs: keep the one there is [R]
   // Only a strictly better chain replaces the current one (its weight counts unusable edges as 0).
@@ -121,13 +135,29 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const ReorderPlane
     for (std::size_t k = 1; k < order.size(); ++k) sum += std::max(0, weight[order[k - 1]][order[k]]);
     return sum;
   };
-  std::vector<int> current(n);
-  for (int k = 0; k < n; ++k) current[k] = k;
   bool current_usable = true;
   for (int k = 1; k < n; ++k) current_usable = current_usable && weight[k - 1][k] >= 0;
   if (current_usable && (!periodic || total(*path) <= total(current))) return false;
+  use_order(planes, *path);
+  return true;
+}
+
+bool RltXPoint::reorder_consistently(std::vector<RltPlane>& planes, const std::vector<std::vector<int>>& weight,
+                                     const std::vector<std::vector<KeyPoint>>& end, const std::vector<int>& current,
+                                     const ReorderPlanesOptions& options) {
+  // consistent_ends: the order changes only when the chain there is passes a plane on two ends; the
+  // best order through consistent ends replaces it, if there is one [C].
+  if (consistent_chain(current, weight, end)) return false;
+  const std::optional<std::vector<int>> path = best_consistent_path(weight, end, options.reorder.exact_max_planes);
+  if (!path) return false;
+  use_order(planes, *path);
+  return true;
+}
+
+void RltXPoint::use_order(std::vector<RltPlane>& planes, const std::vector<int>& path) {
+  const int n = static_cast<int>(chain_.size());
   std::vector<PlaneId> order(n);
-  for (int k = 0; k < n; ++k) order[k] = chain_[(*path)[k]];
+  for (int k = 0; k < n; ++k) order[k] = chain_[path[k]];
   // thesis 4.3.7.1: the reserves (Rule 36) of the edges that changed are cleared; a plane keeping
   // its parent keeps its reserve.
   for (int k = 0; k < n; ++k) {
@@ -139,7 +169,6 @@ bool RltXPoint::reorder_if_due(std::vector<RltPlane>& planes, const ReorderPlane
     }
   }
   set_chain(std::move(order));
-  return true;
 }
 
 void RltXPoint::compute(std::vector<RltPlane>& planes, const ComputeXPointOptions& options) {

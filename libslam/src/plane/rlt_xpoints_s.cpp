@@ -116,7 +116,8 @@ void RltXPointsS::start_iteration(int iteration) {
 }
 
 void RltXPointsS::compute_xpoints(RelativePlaneStep& result) {
-  const bool reorder = options_.key_points && (options_.rules.reorder_planes || options_.rules.reorder_broken_chains);
+  const bool reorder = options_.key_points && (options_.rules.reorder_planes || options_.rules.reorder_broken_chains ||
+                                               chains_through_consistent_ends(options_));
   const ComputeXPointOptions compute_options(options_);
   const ReorderPlanesOptions reorder_options(options_);
   for (RltXPoint& x : xpoints_)

@@ -259,6 +259,14 @@ struct RelativePlaneOptions {
   // went unmeasured. On the generated maps it leaves no wrong pose valid but keeps far fewer
   // poses valid and walls mapped with the small frustum (docs/generated-maps.md), so it is off.
   bool grounded_map = false;
+  // Adaptive preset only [C: off; on with grounded_map and open_cut_ends]: X0 rests only on what fixes it in the
+  // start frame (beyond Rule 4): a first reading with an end the sensor did not cut, on which X0
+  // holds the plane, or the lines of two first readings whose directions differ by
+  // integrity.min_angle_rad (a corner: their offsets fix the position, whatever the ends). A first
+  // reading cut at both ends alone says nothing about where along its wall the start was (a
+  // depth camera's first wall put every pose of scenarios/p-depth-room.json 4 off); X0 then waits
+  // unplaced, and no pose is given (docs/generated-maps.md).
+  bool observed_anchor = false;
   // Rule 1 registration bounds [R].
   MatchBounds local_match;
   // Rule 11 bounds, looser: the pose may be a little off [R].
@@ -340,6 +348,18 @@ inline bool cut_ends_open(const RelativePlaneOptions& o) { return o.preset == Pr
 
 // grounded_map in effect: asked for, under the adaptive preset.
 inline bool map_grounded(const RelativePlaneOptions& o) { return o.preset == Preset::Adaptive && o.grounded_map; }
+
+// observed_anchor in effect: asked for, or grounded_map with open_cut_ends, under the adaptive
+// preset.
+inline bool anchor_observed(const RelativePlaneOptions& o) {
+  return o.preset == Preset::Adaptive && (o.observed_anchor || (o.grounded_map && o.open_cut_ends));
+}
+
+// grounded_map with open_cut_ends: the ends key points rest on are the walls' own, so a chain is
+// searched again for an order through consistent ends (ReorderPlanesOptions::consistent_ends).
+inline bool chains_through_consistent_ends(const RelativePlaneOptions& o) {
+  return map_grounded(o) && cut_ends_open(o);
+}
 
 constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Group};
 std::string_view to_string(IntervalMode mode);  // "pair", "group"
@@ -516,6 +536,9 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
           "adaptive preset: only planes placed without a motion model's guess make a pose valid, links "
           "through two pieces of a wall on different ends place nothing (beyond Rules 17, 23-25, 28; no wrong "
           "valid pose on the generated maps, but far fewer valid poses with the small frustum) [C]");
+  f.field("observed_anchor", o.observed_anchor,
+          "adaptive preset: X0 rests only on a first reading's uncut end or on the lines of two non-parallel first "
+          "readings, else waits unplaced (beyond Rule 4; on with grounded_map and open_cut_ends) [C]");
   f.nested("local_match", o.local_match, true);
   f.nested("global_match", o.global_match, false);
   f.field("plane_capacity", o.plane_capacity, "observations kept per RltPlane (thesis 4.4.3.4: 1200)", at_least(1));

@@ -111,13 +111,18 @@ struct BuildMapOptions {
   // open_cut_ends in effect: X0 is put first by the planes whose first observation has an end the
   // sensor did not cut (RltMapBuilder::place_x0).
   bool cut_ends_open;
+  // observed_anchor in effect: X0 only from uncut ends or two non-parallel lines (x0_anchor.hpp).
+  bool observed_anchor;
+  double min_angle_rad;  // integrity.min_angle_rad: two lines that fix a position
   BuildMapOptions() : BuildMapOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
   BuildMapOptions(const RelativePlaneOptions& o)                  // NOLINT(google-explicit-constructor)
       : key_point(o),
         anchor_first_observation(o.rules.anchor_first_observation),
         first_reading_resize(o.rules.first_reading_resize),
         prefer_grounded(map_grounded(o)),
-        cut_ends_open(plane::cut_ends_open(o)) {}
+        cut_ends_open(plane::cut_ends_open(o)),
+        observed_anchor(anchor_observed(o)),
+        min_angle_rad(o.integrity.min_angle_rad) {}
 };
 
 class RltMapBuilder {
@@ -163,6 +168,9 @@ class RltMapBuilder {
   // Rule 4: where X0 is, from its planes' first observations, added to world_T_x0 (none: unplaced).
   void place_x0(const RltXPoint& x0, const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
                 const BuildMapOptions& options, PoseMean& world_T_x0) const;
+  static std::optional<PlanarPose> lines_first_observation_pose(const RltXPoint& x0, const std::vector<RltPlane>& planes,
+                                                                int earliest, const PlanarPose& world_T_start,
+                                                                const BuildMapOptions& options);
   std::optional<PlanarPose> uncut_first_observation_pose(const RltXPoint& x0, const RltPlane& plane,
                                                          const BuildMapOptions& options) const;
   std::optional<PlanarPose> first_observation_pose(const RltXPoint& x0, const RltPlane& plane,

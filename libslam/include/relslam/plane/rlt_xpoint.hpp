@@ -66,13 +66,20 @@ struct ReorderPlanesOptions {
   bool reorder_planes;         // rules.reorder_planes: periodically
   bool reorder_broken_chains;  // rules.reorder_broken_chains: while unplaced
   ReorderOptions reorder;
+  // grounded_map with open_cut_ends: a group whose chain broke at a plane anchored on different ends
+  // (ComputeXPointOptions::consistent_ends) is searched again, at most every reorder.broken_gap
+  // iterations, for an order through consistent ends (consistent_chain.hpp) [C].
+  bool consistent_ends;
+  double same_length;  // a plane seen whole: its longest uncut reading within this of its longest
   ReorderPlanesOptions() : ReorderPlanesOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
   ReorderPlanesOptions(const RelativePlaneOptions& o)                       // NOLINT(google-explicit-constructor)
       : compare(o),
         interval_mode(o.interval_mode),
         reorder_planes(o.rules.reorder_planes),
         reorder_broken_chains(o.rules.reorder_broken_chains),
-        reorder(o.reorder) {}
+        reorder(o.reorder),
+        consistent_ends(chains_through_consistent_ends(o)),
+        same_length(o.same_length) {}
 };
 
 class RltXPoint {
@@ -167,6 +174,12 @@ class RltXPoint {
   bool track_trusted_ = false;
   void compute_with_key_points(std::vector<RltPlane>& planes, const ComputeXPointOptions& options,
                                const RltPlaneInterval* within);
+  // reorder_if_due's two ends: grounded_map's search through consistent ends, and the new order
+  // (chain positions) made the chain, the Rule 36 reserves of the edges that changed cleared.
+  bool reorder_consistently(std::vector<RltPlane>& planes, const std::vector<std::vector<int>>& weight,
+                            const std::vector<std::vector<KeyPoint>>& end, const std::vector<int>& current,
+                            const ReorderPlanesOptions& options);
+  void use_order(std::vector<RltPlane>& planes, const std::vector<int>& path);
   // compute_with_key_points's three parts (thesis 4.3.6): edge comparison (ComparePlanes with key
   // points, Rules 13–15, 18, 36), canonical sizes (each plane's largest length and its key point,
   // Rule 19 for a missing one), and chaining with size correction (Rules 2, 6, 15, 28).
