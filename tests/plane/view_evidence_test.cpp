@@ -84,7 +84,7 @@ TEST(ViewEvidence, WallsBehindFacingAwayOrHiddenAreNotExpected) {
   std::vector<PlaneObject> seen = seen_from(map, ahead, large_view());
   EXPECT_EQ(conflict(ahead, seen, map, large_view()), ViewConflict::None);
   // A wall hidden behind a longer one: expected without occlusion, not with it.
-  const std::vector<PlaneObject> two = {{{5, 3}, {5, -3}}, {{9, 1}, {9, -1}}};  // both facing -x
+  const std::vector<PlaneObject> two = {{{5, -3}, {5, 3}}, {{9, -1}, {9, 1}}};  // both facing -x
   const PlanarPose origin = PlanarPose::from(0, 0, 0);
   seen = {two[0]};
   EXPECT_EQ(conflict(origin, seen, two, large_view()), ViewConflict::UnseenWall);
