@@ -136,6 +136,12 @@ void check_poset(RltXPointsState& s, const RltXPointsScratch& in, const Integrit
   s.last_valid_pose_ = s.pose_;
   s.last_valid_iteration_ = s.iteration_;
   s.no_pose_count_ = 0;
+  // A relocalised place becomes the pose the algorithm runs on (Rule 11 places the planes in view
+  // from it), but is reported valid only once the lines or real ends confirm it, within the
+  // robot's reach of it [C]: in a generated mirrored corridor a place turned by 180 degrees fit
+  // the planes in view again every few iterations while no plane in view ever came onto the map
+  // there (docs/generated-maps.md).
+  if (r.reason == PoseReason::Recovered) s.checked_pose_.valid = false;
 }
 
 }  // namespace relslam::plane

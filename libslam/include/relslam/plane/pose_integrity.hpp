@@ -26,7 +26,7 @@ namespace relslam::plane {
 enum class PoseReason : unsigned char {
   Lines,         // valid: two or more mapped planes in two directions agree with the map
   MotionModel,   // valid: the motion model carries it (one partial plane in view, Rules 23-27)
-  Recovered,     // valid: found by matching the planes in view against the whole map
+  Recovered,     // invalid until confirmed: found by matching the planes in view against the whole map
   Ends,          // valid: mapped planes in one direction and their real ends in view (end_fix.hpp)
   NoPlanes,      // invalid: no plane in view is on the map
   OneDirection,  // invalid: the mapped planes in view are parallel (the pose slides along them)
