@@ -1,4 +1,5 @@
 #include "relslam/sim/viewing_frustum.hpp"
+#include "relslam/core/frustum_depth.hpp"
 #include "relslam/core/option_fields.hpp"
 
 #include <algorithm>
@@ -56,10 +57,7 @@ bool ViewingFrustum::contains(const Eigen::Vector2d& p) const {
 }
 
 double ViewingFrustum::depth(const Eigen::Vector2d& p) const {
-  // The sides z = ±x·tan α of both shapes, as distances along their inward normals.
-  const double side = p.x() * std::sin(half_angle_rad) - std::abs(p.y()) * std::cos(half_angle_rad);
-  const double far_edge = shape == FrustumShape::Planar ? far - p.x() : far - p.norm();
-  return std::min({p.x() - near, far_edge, side});
+  return frustum_depth(p, half_angle_rad, near, far, shape == FrustumShape::Radial);
 }
 
 std::optional<SegmentClip> ViewingFrustum::clip(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {

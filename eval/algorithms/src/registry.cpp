@@ -23,6 +23,16 @@ AlgorithmEntry plane_entry(std::string name, std::string help,
   return {std::move(name), std::move(help), ScenarioHalf::Planes, {}, std::move(make)};
 }
 
+// Relative Plane's options with the source's field of view. Relocalisation judges a place by it
+// (plane/view_evidence.hpp): without one (laser logs, plane files) it would take places that fit
+// the planes in view by chance, so it is off there.
+plane::RelativePlaneOptions with_field_of_view(plane::RelativePlaneOptions options,
+                                               const std::optional<plane::FieldOfView>& view) {
+  if (view) options.integrity.field_of_view = *view;
+  else options.integrity.recovery = false;
+  return options;
+}
+
 }  // namespace
 
 const std::vector<AlgorithmEntry>& algorithm_registry() {
@@ -56,8 +66,8 @@ const std::vector<AlgorithmEntry>& algorithm_registry() {
       plane_entry("relative_plane",
                   "Relative Plane: relative maps of wall groups, no odometry, pose from scratch each frame (thesis 4)",
                   [](const PlaneAlgorithmContext& c) {
-                    return make_relative_plane(c.scenario.relative_plane, c.scenario.motion_prediction,
-                                               c.world_T_start);
+                    return make_relative_plane(with_field_of_view(c.scenario.relative_plane, c.field_of_view),
+                                               c.scenario.motion_prediction, c.world_T_start);
                   }),
       plane_entry("icp_slam",
                   "MRPT's ICP-SLAM (CMetricMapBuilderICP) on laser scans, options icp_slam.* as its "

@@ -39,7 +39,7 @@ std::optional<SummaryRow> PointFamily::ratio(const std::vector<std::unique_ptr<A
 std::vector<std::unique_ptr<PlaneRecorder>> PlaneFamily::recorders(const LoadedScenario& loaded,
                                                                   PlaneFrameSource& source,
                                                                   const std::filesystem::path& out) {
-  const PlaneAlgorithmContext context{loaded.scenario, source.start()};
+  const PlaneAlgorithmContext context{loaded.scenario, source.start(), source.field_of_view()};
   std::vector<std::unique_ptr<PlaneRecorder>> recorders;
   for (const std::string& name : loaded.scenario.algorithms)
     recorders.push_back(std::make_unique<PlaneRecorder>(make_plane_algorithm(name, context), source.walls(),

@@ -283,6 +283,26 @@ nlohmann::json PlanarSimulationSource::describe_run() const {
   return out;
 }
 
+std::optional<plane::FieldOfView> sensor_field_of_view(const sim::PlaneSensorOptions& sensor,
+                                                       const sim::PointSensorOptions* points) {
+  // Walls seen otherwise than through the frustum (Maps A and B) have none.
+  if (sensor.mode != sim::PlaneVisibility::Frustum) return std::nullopt;
+  const sim::ViewingFrustum& f = points ? points->frustum : sensor.frustum;
+  return plane::FieldOfView{.known = true,
+                            .half_angle_rad = f.half_angle_rad,
+                            .near = f.near,
+                            .far = f.far,
+                            .radial = f.shape == sim::FrustumShape::Radial,
+                            .occlusion = points && points->occlusion,
+                            .front_face_only = points ? points->backface_cull : sensor.backface_cull};
+}
+
+std::optional<plane::FieldOfView> PlanarSimulationSource::field_of_view() const {
+  // A laser's or depth camera's own field of view is not the frustum's.
+  if (range_) return std::nullopt;
+  return sensor_field_of_view(map_.sensor, extraction_ ? &simulator_.point_sensor().options() : nullptr);
+}
+
 std::vector<std::string> PlanarSimulationSource::frame_columns() const {
   std::vector<std::string> columns;
   if (extraction_) columns = {"t_extract_ms", "extracted_planes"};

@@ -5,6 +5,8 @@
 
 #include "pose_check_control.hpp"
 
+#include "relslam/plane/end_fix.hpp"
+
 #include <algorithm>
 #include <optional>
 #include <utility>
@@ -65,6 +67,35 @@ bool confirmed(RltXPointsState& s, const IntegrityResult& found, const Integrity
   return confirms;
 }
 
+// The mapped planes, world frame, as relocalisation and the view evidence read them.
+std::vector<PlaneObject> mapped_planes(const RltXPointsState& s) {
+  std::vector<PlaneObject> map;
+  for (const MapPlane& m : s.builder_.map())
+    if (m.mapped) map.push_back(m.plane);
+  return map;
+}
+
+// The pose from mapped planes in one direction and their real ends (end_fix.hpp): a map plane's
+// end is real when the plane was seen keeping its size or is anchored on that end (Rule 17),
+// and the place must pass the view evidence as a relocalised one does.
+IntegrityResult ends_pose(const RltXPointsState& s, const RltXPointsScratch& in, const IntegrityOptions& options,
+                          const std::optional<std::pair<PlanarPose, int>>& previous) {
+  std::vector<EndPair> pairs;
+  const std::vector<MapPlane>& map = s.builder_.map();
+  for (std::size_t i = 0; i < in.stamped_.size(); ++i) {
+    const PlaneId p = in.assignment_[i];
+    if (p == kNone || p >= static_cast<PlaneId>(map.size()) || !map[p].mapped || !map[p].grounded) continue;
+    const MapPlane& m = map[p];
+    pairs.push_back({{in.stamped_[i], m.plane},
+                     m.size_static || m.key_point == KeyPoint::Left,
+                     m.size_static || m.key_point == KeyPoint::Right});
+  }
+  IntegrityResult r = fit_pose_to_ends(pairs, options, previous);
+  if (r.valid && contradicted(r.world_T_robot, in.stamped_, mapped_planes(s), options))
+    r = {r.world_T_robot, false, PoseReason::Disagree, r.planes};
+  return r;
+}
+
 }  // namespace
 
 std::vector<LinePair> line_pairs(const RltXPointsState& s, const RltXPointsScratch& in) {
@@ -87,6 +118,9 @@ void check_poset(RltXPointsState& s, const RltXPointsScratch& in, const Integrit
   IntegrityResult r = check_pose(pairs, options, previous);
   // The motion model's stated case (Rules 23-27): its track while the lines fix no pose.
   const bool unfixed = r.reason == PoseReason::NoPlanes || r.reason == PoseReason::OneDirection;
+  // Parallel planes with real ends in view: measured along the walls, before the motion model's guess.
+  if (r.reason == PoseReason::OneDirection && options.real_ends && options.field_of_view.known)
+    if (const IntegrityResult e = ends_pose(s, in, options, previous); e.valid) r = e;
   if (!r.valid && unfixed && s.motion_model_active_) r = motion_model_pose(s, pairs, options);
   if (!r.valid && options.recovery && s.iteration_ - s.last_checked_iteration_ >= options.recover_after)
     if (const std::optional<IntegrityResult> found = recovered_pose(s, in, options))
@@ -102,6 +136,12 @@ void check_poset(RltXPointsState& s, const RltXPointsScratch& in, const Integrit
   s.last_valid_pose_ = s.pose_;
   s.last_valid_iteration_ = s.iteration_;
   s.no_pose_count_ = 0;
+  // A relocalised place becomes the pose the algorithm runs on (Rule 11 places the planes in view
+  // from it), but is reported valid only once the lines or real ends confirm it, within the
+  // robot's reach of it [C]: in a generated mirrored corridor a place turned by 180 degrees fit
+  // the planes in view again every few iterations while no plane in view ever came onto the map
+  // there (docs/generated-maps.md).
+  if (r.reason == PoseReason::Recovered) s.checked_pose_.valid = false;
 }
 
 }  // namespace relslam::plane

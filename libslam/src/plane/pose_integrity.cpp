@@ -3,6 +3,8 @@
 
 #include "relslam/plane/pose_integrity.hpp"
 
+#include "relslam/plane/view_evidence.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -83,11 +85,20 @@ bool support_at(const PlanarPose& pose, std::span<const PlaneObject> seen, std::
 
 }  // namespace
 
+bool contradicted(const PlanarPose& pose, std::span<const PlaneObject> seen, std::span<const PlaneObject> map,
+                  const IntegrityOptions& o) {
+  // The pose check's bounds doubled for covering a mapped wall: the place is fitted to the
+  // planes in view within them.
+  const CoverBounds cover{2 * o.offset_bound, 2 * o.angle_bound_rad};
+  return view_conflict(pose, seen, map, o.field_of_view, o.view_evidence, cover) != ViewConflict::None;
+}
+
 std::string_view to_string(PoseReason reason) {
   switch (reason) {
     case PoseReason::Lines: return "lines";
     case PoseReason::MotionModel: return "motion_model";
     case PoseReason::Recovered: return "recovered";
+    case PoseReason::Ends: return "ends";
     case PoseReason::NoPlanes: return "no_planes";
     case PoseReason::OneDirection: return "one_direction";
     case PoseReason::Disagree: return "disagree";
@@ -184,7 +195,7 @@ std::optional<IntegrityResult> relocalize(std::span<const PlaneObject> seen, std
           if (near && (pose->translation - near->pose.translation).norm() > near->radius) continue;
           if (!support_at(*pose, seen, map, known, options, support)) continue;
           const IntegrityResult checked = check_pose(support, options);
-          if (!checked.valid) continue;
+          if (!checked.valid || contradicted(checked.world_T_robot, seen, map, options)) continue;
           const auto same = std::ranges::find_if(found, [&](const IntegrityResult& f) {
             return (f.world_T_robot.translation - checked.world_T_robot.translation).norm() <= options.offset_bound;
           });

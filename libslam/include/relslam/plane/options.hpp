@@ -518,8 +518,13 @@ void describe(OptionsOf<IntegrityOptions> auto& i, auto& f) {
   f.degrees("max_turn_deg", i.max_turn_rad, "... and turns at most this, degrees", above(0.0));
   f.field("continuity_window", i.continuity_window, "... checked while the last valid pose is this recent, iterations",
           at_least(0));
-  f.field("recovery", i.recovery, "when lost, match the planes in view against the whole map");
+  f.field("recovery", i.recovery,
+          "when lost, match the planes in view against the whole map; a place the map contradicts (walls "
+          "the field of view should show) is none (simulated sensors: needs the field of view)");
   f.field("recover_after", i.recover_after, "... after this many iterations without a valid pose", at_least(1));
+  f.field("real_ends", i.real_ends,
+          "mapped planes all in one direction fix the pose with two real ends in view on the map's "
+          "(simulated sensors: needs the field of view)");
 }
 
 // The scenario keys of RelativePlaneOptions (relative_plane.*), with their checks.

@@ -12,6 +12,7 @@
 
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"
+#include "relslam/plane/field_of_view.hpp"
 
 #include <numbers>
 #include <optional>
@@ -25,7 +26,8 @@ namespace relslam::plane {
 enum class PoseReason : unsigned char {
   Lines,         // valid: two or more mapped planes in two directions agree with the map
   MotionModel,   // valid: the motion model carries it (one partial plane in view, Rules 23-27)
-  Recovered,     // valid: found by matching the planes in view against the whole map
+  Recovered,     // invalid until confirmed: found by matching the planes in view against the whole map
+  Ends,          // valid: mapped planes in one direction and their real ends in view (end_fix.hpp)
   NoPlanes,      // invalid: no plane in view is on the map
   OneDirection,  // invalid: the mapped planes in view are parallel (the pose slides along them)
   Disagree,      // invalid: the planes in view do not agree with the map within the bound
@@ -55,6 +57,14 @@ struct IntegrityOptions {
   // matched against the whole map.
   bool recovery = true;
   int recover_after = 3;
+  // The sensor's field of view (no scenario key: the harness fills it from the scenario's sensor).
+  // Known, a place whose map shows walls the sensor should see there and does not, or walls a
+  // plane in view would pass through, is no relocalised pose (view_evidence.hpp).
+  FieldOfView field_of_view;
+  ViewEvidenceOptions view_evidence;
+  // With the field of view known (the sensor flags the ends it cuts): mapped planes in one
+  // direction fix the pose with two real ends in view that agree with the map's (end_fix.hpp).
+  bool real_ends = true;
 };
 
 // One plane in view and the map plane it is registered to.
@@ -89,6 +99,11 @@ IntegrityResult check_pose(std::span<const LinePair> pairs, const IntegrityOptio
 // max_turn_rad per iteration, within the bounds).
 bool within_reach(const PlanarPose& pose, const PlanarPose& previous, int iterations, const IntegrityOptions& options);
 
+// Whether the map (world) contradicts the robot at `pose` seeing `seen` (robot frame) through
+// options.field_of_view (view_evidence.hpp); false when the field of view is unknown.
+bool contradicted(const PlanarPose& pose, std::span<const PlaneObject> seen, std::span<const PlaneObject> map,
+                  const IntegrityOptions& options);
+
 // Where the robot can be: within `radius` of `pose` (the last valid pose and how far the robot
 // can have gone since).
 struct NearPose {
@@ -104,6 +119,7 @@ struct NearPose {
 // symmetric room, a corridor of equal pieces) — a guess is never a valid pose. `known[i]`, when
 // given and not -1, is the index in `map` of the map plane seen[i] is registered to (Rule 1 tracked
 // it there): seen[i] is paired with that one only, and a place where it does not agree is none.
+// With options.field_of_view known, a place the map contradicts (view_conflict) is none either.
 std::optional<IntegrityResult> relocalize(std::span<const PlaneObject> seen, std::span<const PlaneObject> map,
                                           const std::optional<NearPose>& near, const IntegrityOptions& options,
                                           std::span<const int> known = {});

@@ -9,9 +9,11 @@
 #include "relslam/eval/config/scenario_half.hpp"
 #include "relslam/eval/config/scenario_loading.hpp"
 #include "relslam/eval/io/range_bearing.hpp"
+#include "relslam/plane/field_of_view.hpp"
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,8 @@ struct AlgorithmContext {
 struct PlaneAlgorithmContext {
   const Scenario& scenario;
   PlanarPose world_T_start;  // the robot's first pose (Rule 4)
+  // The sensor's field of view where the source knows it (PlaneFrameSource::field_of_view).
+  std::optional<plane::FieldOfView> field_of_view = std::nullopt;
 };
 
 // One algorithm a scenario may list: its name, one line for `relslam algorithms`, the half whose

@@ -32,7 +32,8 @@ namespace relslam::eval {
 // The Relative Plane adaptive preset's integrity bounds scaled from the planar sensor's noise
 // (relative_plane.integrity.offset_bound = 0.05 + 6 sigma, angle_bound_deg = 1.5 + 6 sigma_r,
 // sigma_r for the point sensor taken as 40 sigma_pt degrees [C]), unless given; recorded in
-// "derived" like the point bounds. Relocalisation (integrity.recovery) is off unless given.
+// "derived" like the point bounds. Relocalisation (integrity.recovery) and the pose from real
+// ends (integrity.real_ends) are off unless given.
 void derive_plane_bounds(Scenario& scenario, const std::function<bool(const std::string&)>& given);
 
 }  // namespace relslam::eval

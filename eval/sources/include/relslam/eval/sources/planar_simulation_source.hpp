@@ -41,6 +41,12 @@ inline constexpr const char* kGeneratedMapFile = "generated_map.json";
 // run has no point sensor (`points` false).
 std::vector<int> resolve_point_frames(const LoadedScenario& loaded, int frames, bool points);
 
+// The field of view Relative Plane's relocalisation judges a place by (plane/field_of_view.hpp):
+// the plane sensor's frustum, or the point sensor's (`points`, with its occlusion); none for
+// walls seen otherwise than through the frustum.
+std::optional<plane::FieldOfView> sensor_field_of_view(const sim::PlaneSensorOptions& sensor,
+                                                       const sim::PointSensorOptions* points = nullptr);
+
 // What the planar simulation produced (after stream()).
 struct PlanarSimulationSummary {
   int iterations = 0;
@@ -71,6 +77,9 @@ class PlanarSimulationSource final : public PlaneFrameSource {
   // truth_wall_angle_deg, the largest angle between two of them (0 to 90; over 20: two
   // non-parallel walls, which constrain the pose, thesis 4.2.5).
   std::vector<std::string> frame_columns() const override;
+  // The map's frustum, with occlusion for the point, laser and depth sensors (the plane sensor
+  // sees through walls, thesis Fig 100); none unless the walls are seen through the frustum.
+  std::optional<plane::FieldOfView> field_of_view() const override;
 
   const sim::PlanarMap& map() const { return map_; }
   const sim::PlanarSimulator& simulator() const { return simulator_; }

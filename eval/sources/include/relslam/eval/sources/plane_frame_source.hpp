@@ -7,10 +7,12 @@
 #include "relslam/core/planar_pose.hpp"
 #include "relslam/core/plane_object.hpp"
 #include "relslam/eval/io/csv_writer.hpp"
+#include "relslam/plane/field_of_view.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,9 @@ class PlaneFrameSource {
   // The source's own columns of every algorithm's iterations.csv (after the algorithm's), such
   // as the plane extraction's time: what each frame's `measured` fields are.
   virtual std::vector<std::string> frame_columns() const { return {}; }
+  // The sensor's field of view, where the source knows it (a simulated sensor's frustum): what
+  // Relative Plane's relocalisation judges a place by (plane/view_evidence.hpp).
+  virtual std::optional<plane::FieldOfView> field_of_view() const { return std::nullopt; }
 };
 
 }  // namespace relslam::eval
