@@ -259,6 +259,16 @@ struct RelativePlaneOptions {
   // went unmeasured. On the generated maps it leaves no wrong pose valid but keeps far fewer
   // poses valid and walls mapped with the small frustum (docs/generated-maps.md), so it is off.
   bool grounded_map = false;
+  // Adaptive preset only [C: off]: walls placed by their lines where no group places them, and
+  // groups placed on walls already on the map (line_placement.hpp). A wall seen in
+  // place_line_samples iterations whose pose the lines of two or more mapped walls in two
+  // directions fixed and checked (pose_integrity.hpp), lying on one line each time within the
+  // check's bounds, goes onto the map there; a group no link places is placed where two or more
+  // of its planes, in two directions, lie on their walls on the map. Beyond Rules 6, 8 and 12:
+  // a wall seen only in pieces (every end cut) is compared with no other (Rules 13-15), so its
+  // group stays unplaced and every group linked through it (the SENA log's scans 55-142).
+  bool place_by_lines = false;
+  int place_line_samples = 3;
   // Rule 1 registration bounds [R].
   MatchBounds local_match;
   // Rule 11 bounds, looser: the pose may be a little off [R].
@@ -340,6 +350,9 @@ inline bool cut_ends_open(const RelativePlaneOptions& o) { return o.preset == Pr
 
 // grounded_map in effect: asked for, under the adaptive preset.
 inline bool map_grounded(const RelativePlaneOptions& o) { return o.preset == Preset::Adaptive && o.grounded_map; }
+
+// place_by_lines in effect: asked for, under the adaptive preset.
+inline bool lines_placed(const RelativePlaneOptions& o) { return o.preset == Preset::Adaptive && o.place_by_lines; }
 
 constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Group};
 std::string_view to_string(IntervalMode mode);  // "pair", "group"
@@ -516,6 +529,12 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
           "adaptive preset: only planes placed without a motion model's guess make a pose valid, links "
           "through two pieces of a wall on different ends place nothing (beyond Rules 17, 23-25, 28; no wrong "
           "valid pose on the generated maps, but far fewer valid poses with the small frustum) [C]");
+  f.field("place_by_lines", o.place_by_lines,
+          "adaptive preset: a wall no group places is placed by its line from poses checked on two or more "
+          "mapped walls, and a group no link places is placed on its walls already on the map (beyond Rules 6, "
+          "8, 12) [C]");
+  f.field("place_line_samples", o.place_line_samples,
+          "place_by_lines: checked iterations a wall must lie on one line in before it is placed", at_least(1));
   f.nested("local_match", o.local_match, true);
   f.nested("global_match", o.global_match, false);
   f.field("plane_capacity", o.plane_capacity, "observations kept per RltPlane (thesis 4.4.3.4: 1200)", at_least(1));
