@@ -4,14 +4,17 @@
 
 #include "pose_check_control.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 
 namespace relslam::plane {
 namespace {
 
 // The pose putting every seen plane on its map plane's line (the heading their mean direction
-// difference), and where the lines leave it free (all parallel: along them) keeping the seen
-// planes' centre where `held` puts it: least squares with a vanishing pull (1e-9 against 1).
+// difference) across the lines' main direction, and along it keeping the seen planes' centre
+// where `held` puts it. Only the main direction: planes within min_angle of each other fix the
+// position along them only through their small angle, which the noise decides.
 PlanarPose fit_pose_holding(std::span<const LinePair> pairs, const PlanarPose& held) {
   double c = 0, s = 0;
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
@@ -22,15 +25,17 @@ PlanarPose fit_pose_holding(std::span<const LinePair> pairs, const PlanarPose& h
   }
   const double heading = std::atan2(s, c);
   const Eigen::Matrix2d rotation = planar_rotation(heading);
-  constexpr double kPull = 1e-9;
-  Eigen::Matrix2d a = kPull * Eigen::Matrix2d::Identity();
-  Eigen::Vector2d b = kPull * (held * centre - rotation * centre);
+  const Eigen::Vector2d t0 = held * centre - rotation * centre;
+  Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
   for (const LinePair& p : pairs) {
     const Eigen::Vector2d n = p.mapped.normal();  // n·(R m_seen + t) + d = 0 on the map line
     a += n * n.transpose();
     b += n * (-p.mapped.offset() - n.dot(rotation * p.seen.midpoint()));
   }
-  return PlanarPose{a.ldlt().solve(b), wrap_angle(heading)};
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> main(a);  // eigenvalues ascending
+  const Eigen::Vector2d v = main.eigenvectors().col(1);
+  return PlanarPose{t0 + v * v.dot(b - a * t0) / main.eigenvalues()(1), wrap_angle(heading)};
 }
 
 }  // namespace

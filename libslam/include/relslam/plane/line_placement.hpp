@@ -37,7 +37,7 @@ struct LinePlacement {
 // The bounds a line placement is held to: the pose check's (IntegrityOptions::offset_bound,
 // angle_bound_rad, min_angle_rad), and the samples it needs.
 struct LinePlacementOptions {
-  int samples = 3;
+  int samples = 4;
   double offset_bound = 0.05;
   double angle_bound_rad = 0.026;
   double min_angle_rad = 0.35;

@@ -264,11 +264,14 @@ struct RelativePlaneOptions {
   // place_line_samples iterations whose pose the lines of two or more mapped walls in two
   // directions fixed and checked (pose_integrity.hpp), lying on one line each time within the
   // check's bounds, goes onto the map there; a group no link places is placed where two or more
-  // of its planes, in two directions, lie on their walls on the map. Beyond Rules 6, 8 and 12:
+  // of its planes, in two directions, lie on their walls on the map; where the mapped walls in
+  // view are all parallel, the pose they fix across them is held along them where the frame was
+  // handed in (the motion prediction's, which the laser scenarios move the frames by), as the
+  // motion model holds it along one plane (Rules 23-25). Beyond Rules 6, 8 and 12:
   // a wall seen only in pieces (every end cut) is compared with no other (Rules 13-15), so its
   // group stays unplaced and every group linked through it (the SENA log's scans 55-142).
   bool place_by_lines = false;
-  int place_line_samples = 3;
+  int place_line_samples = 4;
   // Rule 1 registration bounds [R].
   MatchBounds local_match;
   // Rule 11 bounds, looser: the pose may be a little off [R].

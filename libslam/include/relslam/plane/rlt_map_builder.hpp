@@ -50,6 +50,11 @@ struct MapPlane {
   // because it was made from the same guess (pose_integrity.hpp).
   bool grounded = false;
 
+  // Placed by a group, not by its line alone (place_by_lines, line_placement.hpp): only such an
+  // entry is what the thesis's map holds, for the rules that ask whether a plane is placed
+  // (Rules 19's extension, 26).
+  bool group_placed() const { return mapped && source != kNone; }
+
   // Whether the entry's end k is a real end of the wall, so an observation grown from k (Rule 16)
   // may be put onto the entry. An entry shorter than the plane's longest observation (by more
   // than τ_len) is a piece: mapped at the largest size its group compared, it is right at its
