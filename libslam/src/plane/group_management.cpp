@@ -107,7 +107,7 @@ void GroupManagement::regroup_unplaced(RelativePlaneStep& result) {
   for (PlaneId p : scratch_.assignment_) {
     const RltPlane& plane = state_.planes_[p];
     if (plane.refs().empty() || static_cast<int>(plane.refs().size()) >= options_.regroup_memberships) continue;
-    if (p < static_cast<PlaneId>(map.size()) && map[p].mapped) continue;
+    if (p < static_cast<PlaneId>(map.size()) && map[p].group_placed()) continue;
     const bool settled = std::ranges::all_of(plane.refs(), [&](const RltXPointRef& ref) {
       return state_.iteration_ - ref.join_iteration >= options_.unplaced_wait;
     });

@@ -41,7 +41,7 @@ PlaneId check_for_motion_model(RltXPointsState& s, std::span<const PlaneId> assi
   if (!options.enabled || !s.last_valid_pose_.valid) return kNone;
   if (s.no_pose_count_ < options.start_after) return kNone;
   // [R, thesis 4.3.6] exactly one plane in view, and it is on the map; blind or lost otherwise.
-  if (assignment.size() != 1 || !s.builder_.map()[assignment.front()].mapped) return kNone;
+  if (assignment.size() != 1 || !s.builder_.map()[assignment.front()].group_placed()) return kNone;
   return assignment.front();
 }
 

@@ -139,7 +139,7 @@ std::optional<PlanarPose> RltMapBuilder::lines_first_observation_pose(const RltX
 
 void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
                               const std::vector<RltPlane>& planes, const PlanarPose& world_T_start,
-                              const BuildMapOptions& options) {
+                              const BuildMapOptions& options, std::span<const LinePlacement> lines) {
   // Rebuilt from the links every iteration (thesis 4.4.3.11): a group recomputed this iteration moves
   // every group chained after it.
   map_.assign(planes.size(), MapPlane{});
@@ -163,8 +163,43 @@ void RltMapBuilder::build_map(std::span<const RltXPointLink> links, std::vector<
     } else if (xpoints[link.from].placed()) {
       link_to(link, xpoints, planes, options, world_T_to);
     }
+    if (options.place_by_lines && world_T_to.count() == 0 && !to.motion_model() && !link.first) {
+      place_on_walls(to, planes, lines, options, world_T_to);
+      if (world_T_to.count() > 0) grounded_[link.to] = 1;  // placed on walls a pose checked
+    }
     to.place(world_T_to.mean(), world_T_to.count() > 0);
     if (to.placed()) place_planes(to, planes, grounded_[link.to] != 0, options);
+  }
+  if (options.place_by_lines) place_lines(lines);
+}
+
+void RltMapBuilder::place_on_walls(const RltXPoint& to, const std::vector<RltPlane>& planes,
+                                   std::span<const LinePlacement> lines, const BuildMapOptions& options,
+                                   PoseMean& world_T_to) const {
+  std::vector<LinePair> pairs;
+  for (PlaneId p : to.planes()) {
+    const RltXPointRef* ref = planes[p].ref(to.id());
+    if (!ref->valid) continue;
+    const MapPlane& entry = map_[p];
+    const PlaneObject seen = PlaneObject::from_pose(ref->pose, ref->max_length);
+    if (entry.mapped && entry.grounded)
+      pairs.push_back({seen, entry.plane});
+    else if (!entry.mapped && p < static_cast<PlaneId>(lines.size()) && lines[p].placed)
+      pairs.push_back({seen, lines[p].world});
+  }
+  if (const std::optional<PlanarPose> pose = place_on_lines(pairs, options.line)) world_T_to.add(*pose);
+}
+
+void RltMapBuilder::place_lines(std::span<const LinePlacement> lines) {
+  for (std::size_t p = 0; p < lines.size() && p < map_.size(); ++p) {
+    MapPlane& entry = map_[p];
+    if (entry.mapped || !lines[p].placed) continue;
+    ++mapped_count_;
+    entry.mapped = true;
+    entry.plane = lines[p].world;
+    entry.world_T_plane = entry.plane.pose();
+    entry.length = entry.plane.length();
+    entry.grounded = true;  // from poses the lines of grounded walls fixed
   }
 }
 

@@ -12,6 +12,7 @@
 #include "relslam/core/checked_options.hpp"
 
 #include "group_management.hpp"
+#include "line_placement_control.hpp"
 #include "motion_model_control.hpp"
 #include "plane_registration.hpp"
 #include "pose_check_control.hpp"
@@ -93,7 +94,8 @@ RelativePlaneStep RltXPointsS::iterate(const PlaneFrame& frame) {
   result.timings.manage_ms = lap(t);
   compute_xpoints(result);
   result.timings.compute_ms = lap(t);
-  builder_.build_map(links_, xpoints_, planes_, world_T_start_, options_);
+  const BuildMapOptions build_options(options_);
+  builder_.build_map(links_, xpoints_, planes_, world_T_start_, build_options, line_map_);
   result.timings.build_ms = lap(t);
   get_poset();
   result.timings.pose_ms = lap(t);
@@ -154,6 +156,10 @@ void RltXPointsS::get_poset() {
     pose_ = {tracked.value_or(PlanarPose{}), tracked.has_value(), tracked ? 1 : 0};
   }
   if (options_.preset == Preset::Adaptive) check_poset(*this, *this, options_.integrity);
+  if (lines_placed(options_)) {
+    const bool held = hold_along(*this, *this, options_.integrity, world_T_start_);
+    gather_line_evidence(*this, *this, BuildMapOptions(options_).line, held);
+  }
   if (pose_.valid) {
     last_valid_pose_ = pose_;
     last_valid_iteration_ = iteration_;

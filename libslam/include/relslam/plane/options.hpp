@@ -267,6 +267,19 @@ struct RelativePlaneOptions {
   // depth camera's first wall put every pose of scenarios/p-depth-room.json 4 off); X0 then waits
   // unplaced, and no pose is given (docs/generated-maps.md).
   bool observed_anchor = false;
+  // Adaptive preset only [C: off]: walls placed by their lines where no group places them, and
+  // groups placed on walls already on the map (line_placement.hpp). A wall seen in
+  // place_line_samples iterations whose pose the lines of two or more mapped walls in two
+  // directions fixed and checked (pose_integrity.hpp), lying on one line each time within the
+  // check's bounds, goes onto the map there; a group no link places is placed where two or more
+  // of its planes, in two directions, lie on their walls on the map; where the mapped walls in
+  // view are all parallel, the pose they fix across them is held along them where the frame was
+  // handed in (the motion prediction's, which the laser scenarios move the frames by), as the
+  // motion model holds it along one plane (Rules 23-25). Beyond Rules 6, 8 and 12:
+  // a wall seen only in pieces (every end cut) is compared with no other (Rules 13-15), so its
+  // group stays unplaced and every group linked through it (the SENA log's scans 55-142).
+  bool place_by_lines = false;
+  int place_line_samples = 4;
   // Rule 1 registration bounds [R].
   MatchBounds local_match;
   // Rule 11 bounds, looser: the pose may be a little off [R].
@@ -360,6 +373,8 @@ inline bool anchor_observed(const RelativePlaneOptions& o) {
 inline bool chains_through_consistent_ends(const RelativePlaneOptions& o) {
   return map_grounded(o) && cut_ends_open(o);
 }
+// place_by_lines in effect: asked for, under the adaptive preset.
+inline bool lines_placed(const RelativePlaneOptions& o) { return o.preset == Preset::Adaptive && o.place_by_lines; }
 
 constexpr IntervalMode kIntervalModes[] = {IntervalMode::Pair, IntervalMode::Group};
 std::string_view to_string(IntervalMode mode);  // "pair", "group"
@@ -544,6 +559,12 @@ void describe(OptionsOf<RelativePlaneOptions> auto& o, auto& f) {
   f.field("observed_anchor", o.observed_anchor,
           "adaptive preset: X0 rests only on a first reading's uncut end or on the lines of two non-parallel first "
           "readings, else waits unplaced (beyond Rule 4; on with grounded_map and open_cut_ends) [C]");
+  f.field("place_by_lines", o.place_by_lines,
+          "adaptive preset: a wall no group places is placed by its line from poses checked on two or more "
+          "mapped walls, and a group no link places is placed on its walls already on the map (beyond Rules 6, "
+          "8, 12) [C]");
+  f.field("place_line_samples", o.place_line_samples,
+          "place_by_lines: checked iterations a wall must lie on one line in before it is placed", at_least(1));
   f.nested("local_match", o.local_match, true);
   f.nested("global_match", o.global_match, false);
   f.field("plane_capacity", o.plane_capacity, "observations kept per RltPlane (thesis 4.4.3.4: 1200)", at_least(1));

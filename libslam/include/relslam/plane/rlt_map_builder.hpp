@@ -7,6 +7,7 @@
 #include "relslam/core/plane_object.hpp"
 #include "relslam/plane/ids.hpp"
 #include "relslam/plane/key_point_compare.hpp"
+#include "relslam/plane/line_placement.hpp"
 #include "relslam/plane/options.hpp"
 #include "relslam/plane/plane_object.hpp"
 #include "relslam/plane/pose_integrity.hpp"
@@ -48,6 +49,11 @@ struct MapPlane {
   // through it carries that guess onto the map; a pose resting on such a plane agrees with it
   // because it was made from the same guess (pose_integrity.hpp).
   bool grounded = false;
+
+  // Placed by a group, not by its line alone (place_by_lines, line_placement.hpp): only such an
+  // entry is what the thesis's map holds, for the rules that ask whether a plane is placed
+  // (Rules 19's extension, 26).
+  bool group_placed() const { return mapped && source != kNone; }
 
   // Whether the entry's end k is a real end of the wall, so an observation grown from k (Rule 16)
   // may be put onto the entry. An entry shorter than the plane's longest observation (by more
@@ -114,6 +120,10 @@ struct BuildMapOptions {
   // observed_anchor in effect: X0 only from uncut ends or two non-parallel lines (x0_anchor.hpp).
   bool observed_anchor;
   double min_angle_rad;  // integrity.min_angle_rad: two lines that fix a position
+  // place_by_lines in effect: walls and unplaced groups placed by the walls' lines
+  // (line_placement.hpp), held to the pose check's bounds.
+  bool place_by_lines;
+  LinePlacementOptions line;
   BuildMapOptions() : BuildMapOptions(RelativePlaneOptions{}) {}  // the defaults of RelativePlaneOptions
   BuildMapOptions(const RelativePlaneOptions& o)                  // NOLINT(google-explicit-constructor)
       : key_point(o),
@@ -122,7 +132,9 @@ struct BuildMapOptions {
         prefer_grounded(map_grounded(o)),
         cut_ends_open(plane::cut_ends_open(o)),
         observed_anchor(anchor_observed(o)),
-        min_angle_rad(o.integrity.min_angle_rad) {}
+        min_angle_rad(o.integrity.min_angle_rad),
+        place_by_lines(lines_placed(o)),
+        line{o.place_line_samples, o.integrity.offset_bound, o.integrity.angle_bound_rad, o.integrity.min_angle_rad} {}
 };
 
 class RltMapBuilder {
@@ -135,8 +147,12 @@ class RltMapBuilder {
   // averaged (Rule 8). With options.key_points a first observation smaller than the plane's
   // size in X0 is grown from its key point first (Rule 4's first-reading resize, thesis 4.4.3.11
   // step 1), and a linking plane's smaller membership is re-anchored to the larger (Rule 17).
+  // With options.place_by_lines a group no link places is placed on its walls on the map, and
+  // each wall `lines` placed that no group does goes onto the map as its line
+  // (line_placement.hpp).
   void build_map(std::span<const RltXPointLink> links, std::vector<RltXPoint>& xpoints,
-                 const std::vector<RltPlane>& planes, const PlanarPose& world_T_start, const BuildMapOptions& options);
+                 const std::vector<RltPlane>& planes, const PlanarPose& world_T_start, const BuildMapOptions& options,
+                 std::span<const LinePlacement> lines = {});
 
   // GetPoset (Rule 5): the mean of CalculateOffset over the observations whose RltPlane is on
   // the map at the same size; recomputed from scratch each iteration, never carried forward.
@@ -163,6 +179,12 @@ class RltMapBuilder {
                const BuildMapOptions& options, PoseMean& world_T_to) const;
   // The group a link from `from` through plane p is placed from (MapPlane::grounded).
   XPointId link_source(const RltXPoint& from, PlaneId p, const BuildMapOptions& options) const;
+  // place_by_lines: where `to`'s planes lie on their walls on the map (or in `lines`), added to
+  // world_T_to.
+  void place_on_walls(const RltXPoint& to, const std::vector<RltPlane>& planes, std::span<const LinePlacement> lines,
+                      const BuildMapOptions& options, PoseMean& world_T_to) const;
+  // place_by_lines: the walls of `lines` no group placed, onto the map.
+  void place_lines(std::span<const LinePlacement> lines);
   void place_planes(const RltXPoint& xpoint, const std::vector<RltPlane>& planes, bool grounded,
                     const BuildMapOptions& options);
   // Rule 4: where X0 is, from its planes' first observations, added to world_T_x0 (none: unplaced).

@@ -6,6 +6,7 @@
 
 #include "relslam/plane/hints.hpp"
 #include "relslam/plane/ids.hpp"
+#include "relslam/plane/line_placement.hpp"
 #include "relslam/plane/rlt_map_builder.hpp"
 #include "relslam/plane/rlt_plane.hpp"
 #include "relslam/plane/rlt_xmm_point.hpp"
@@ -45,6 +46,8 @@ struct RltXPointsState {
   RltPoset recovery_candidate_;
   int recovery_candidate_iteration_ = 0;
   int last_valid_iteration_ = 0;
+  // place_by_lines: per RltPlane, where the walls' lines put it (line_placement.hpp).
+  std::vector<LinePlacement> line_map_;
   std::vector<RltXMMPoint> motion_models_;
   bool motion_model_active_ = false;  // the last of motion_models_ carries the pose
   int no_pose_count_ = 0;             // Rule 26: iterations without a pose ...
