@@ -46,7 +46,7 @@ struct EkfDivergenceOptions {
   // of freedom (steps that associated nothing left out; at least half the window must have
   // associations). Measured, largest over the run (docs/own-data-ekf.md): 0.97 on MRPT's demo
   // logs with or without odometry, 0.59 on S-EKF-F8 and S-LINE, 0.16 on Victoria Park, 4.76 on
-  // S-DYN (above 2 from iteration 101, while the moving points are in view) [C].
+  // S-DYN (above 2 from iteration 100, while the moving points are in view) [C].
   int long_window = 100;
   double median_nis_bound = 2.0;
 };
