@@ -1,7 +1,5 @@
 #include "mrpt_record_check.hpp"
 
-#include "relslam/eval/io/point_cloud_rawlog.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -94,8 +92,7 @@ constexpr std::initializer_list<Class> kCloudInFrame = {Class::RangeScan3D, Clas
                                                         Class::BearingRange, Class::RangeScan2D, Class::Odometry};
 constexpr std::initializer_list<Class> kPointMaps = {Class::SimplePointsMap, Class::PointsMapXYZI,
                                                      Class::ColouredPointsMap};
-// An image or range layer's side, as the cloud reader's check after MRPT (point_cloud_rawlog.hpp).
-constexpr auto kMaxSide = static_cast<std::uint32_t>(kMaxImageSide);
+constexpr auto kMaxSide = static_cast<std::uint32_t>(kMaxWalkedImageSide);
 
 // The class-name length an object header's first byte gives; throws when it is no MRPT header.
 unsigned class_name_length(std::uint8_t length_byte, const std::string& path) {
@@ -364,7 +361,7 @@ class Walker {
     const auto cols = pod<std::uint32_t>(field, "cols");
     if (rows > kMaxSide || cols > kMaxSide)
       throw RecordProblem(field, std::to_string(cols) + "x" + std::to_string(rows) + " pixels, beyond " +
-                                     std::to_string(kMaxImageSide) + " either way");
+                                     std::to_string(kMaxWalkedImageSide) + " either way");
     skip(2 * std::size_t{rows} * cols, field, "pixels");
   }
 
@@ -397,8 +394,8 @@ class Walker {
       height = pod<std::int32_t>(path, "height");
     }
     if (width >= 1 && height >= 1) return skip(count(path + ".jpeg", UINT32_MAX), path, "JPEG bytes");
-    if (width < -kMaxImageSide || height < -kMaxImageSide)
-      throw RecordProblem(path, "a raw image beyond " + std::to_string(kMaxImageSide) + " pixels either way");
+    if (width < -kMaxWalkedImageSide || height < -kMaxWalkedImageSide)
+      throw RecordProblem(path, "a raw image beyond " + std::to_string(kMaxWalkedImageSide) + " pixels either way");
     if (width < 0 && height < 0) skip(3 * std::size_t(-width) * std::size_t(-height), path, "RGB pixels");
   }
 

@@ -40,6 +40,10 @@ class RecordProblem : public std::runtime_error {
 // near 100 MB; at 64 MiB a 124 KB gzip file of one record took 742 MB.
 inline constexpr std::size_t kMaxRecordBytes = std::size_t{16} << 20;
 
+// The most pixels either way of an image or range layer the cloud walk lets MRPT size: the
+// cloud reader's own bound, kMaxImageSide of point_cloud_rawlog.hpp (which checks they agree).
+inline constexpr int kMaxWalkedImageSide = 8192;
+
 // Reads up to n bytes into the buffer; fewer only at the end of the input.
 using ByteReader = std::function<std::size_t(void* buffer, std::size_t n)>;
 

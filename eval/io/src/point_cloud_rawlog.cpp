@@ -32,6 +32,8 @@ using mrpt::obs::CObservation3DRangeScan;
 using mrpt::obs::CObservationPointCloud;
 using mrpt::obs::CObservationVelodyneScan;
 
+static_assert(kMaxWalkedImageSide == kMaxImageSide, "the walk bounds images as the reader does");
+
 constexpr std::array kCloudClasses = {"CObservation3DRangeScan", "CObservationVelodyneScan", "CObservationPointCloud"};
 constexpr std::array kContainerClasses = {"CSensoryFrame", "CActionCollection"};
 
