@@ -303,9 +303,13 @@ TEST(TuneEkfOnALog, TunesOnTheFirstPartAndScoresTheBestOnTheRest) {
   // The held-out frames, run fresh with the best values and with the untuned ones.
   for (const char* run : {"tuned", "untuned"}) {
     const nlohmann::json& held_out = tuning["held_out"][run];
-    EXPECT_EQ(held_out["status"], "ok") << run;
     EXPECT_GT(held_out["final_mean_landmark_error"].get<double>(), 0.0) << run;
   }
+  EXPECT_EQ(tuning["held_out"]["tuned"]["status"], "ok");
+  // The untuned values keep the position 1 to 1.7 m off for most of these frames, in a path
+  // 11.9 m across (landmark error 1.1 m against 0.2): scored against the truth, they left it.
+  const std::string untuned = tuning["held_out"]["untuned"]["status"];
+  EXPECT_EQ(untuned.rfind("lost: left the truth at iteration ", 0), 0u) << untuned;
   EXPECT_EQ(read_csv(dir / "tune/held_out/summary.csv").text(0, "iterations"), "300");
   // The held-out run's manifest says its values were tuned, on which frames it ran.
   const nlohmann::json held = manifest(dir / "tune/held_out");

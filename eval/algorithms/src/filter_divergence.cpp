@@ -1,29 +1,20 @@
 #include "relslam/eval/algorithms/filter_divergence.hpp"
 
+#include "relslam/eval/metrics/three_digits.hpp"
+
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 namespace relslam::eval {
-namespace {
-
-// Three significant digits: the mean is compared with a bound, not reproduced.
-std::string shown(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
-
-}  // namespace
 
 void FilterDivergence::add(int iteration, const StepInnovation& step) {
   if (!reason_.empty()) return;  // the first divergence stands
   if (step.pose_jump_sigma > options_.pose_jump_sigma) {
     reason_ = "diverged at iteration " + std::to_string(iteration) + ": its update moved the position " +
-              shown(step.pose_jump_sigma) + " standard deviations from the prediction (bound " +
-              shown(options_.pose_jump_sigma) + ")";
+              three_digits(step.pose_jump_sigma) + " standard deviations from the prediction (bound " +
+              three_digits(options_.pose_jump_sigma) + ")";
     return;
   }
   window_.emplace_back(iteration, step);
@@ -44,9 +35,9 @@ void FilterDivergence::check_median(int iteration) {
   std::nth_element(ratios.begin(), middle, ratios.end());
   if (*middle <= options_.median_nis_bound) return;
   reason_ = "diverged at iteration " + std::to_string(iteration) +
-            ": median normalised innovation squared per degree of freedom " + shown(*middle) + " over iterations " +
+            ": median normalised innovation squared per degree of freedom " + three_digits(*middle) + " over iterations " +
             std::to_string((window_.end() - options_.long_window)->first) + " to " + std::to_string(iteration) +
-            " (bound " + shown(options_.median_nis_bound) + ")";
+            " (bound " + three_digits(options_.median_nis_bound) + ")";
 }
 
 void FilterDivergence::check_mean(int iteration) {
@@ -66,8 +57,8 @@ void FilterDivergence::check_mean(int iteration) {
   const double mean = nis / dof;
   if (mean <= bound) return;
   reason_ = "diverged at iteration " + std::to_string(iteration) + ": mean normalised innovation squared " +
-            shown(mean) + " per degree of freedom over iterations " + std::to_string(first->first) + " to " +
-            std::to_string(iteration) + " (bound " + shown(bound) + ")";
+            three_digits(mean) + " per degree of freedom over iterations " + std::to_string(first->first) + " to " +
+            std::to_string(iteration) + " (bound " + three_digits(bound) + ")";
 }
 
 std::string FilterDivergence::reason() const { return reason_; }

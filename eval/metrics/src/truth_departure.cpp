@@ -1,18 +1,10 @@
 #include "relslam/eval/metrics/truth_departure.hpp"
 
+#include "relslam/eval/metrics/three_digits.hpp"
+
 #include <algorithm>
-#include <cstdio>
 
 namespace relslam::eval {
-namespace {
-
-std::string shown(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
-
-}  // namespace
 
 double path_extent(const std::vector<Eigen::Vector3d>& points) {
   if (points.empty()) return 0;
@@ -36,8 +28,8 @@ std::string truth_departure(const std::vector<PositionErrorAt>& errors, double e
     worst = beyond ? std::max(worst, *e.error) : 0;
     if (in_a_row == kTruthDepartureIterations)
       return "left the truth at iteration " + std::to_string(e.iteration) + ": position error beyond " +
-             shown(bound) + " (a tenth of the true path's extent of " + shown(extent) + ") for " +
-             std::to_string(kTruthDepartureIterations) + " iterations in a row, " + shown(worst) + " at most";
+             three_digits(bound) + " (a tenth of the true path's extent of " + three_digits(extent) + ") for " +
+             std::to_string(kTruthDepartureIterations) + " iterations in a row, " + three_digits(worst) + " at most";
   }
   return "";
 }
