@@ -7,6 +7,7 @@
 #include "test_support.hpp"
 
 #include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationPointCloud.h>
@@ -16,8 +17,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
+#include <cstdint>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <vector>
 
 namespace relslam {
 namespace {
@@ -147,6 +152,82 @@ TEST(ExtractCli, BadCloudsExitWithTwoAndSayWhere) {
                                          (dir.path() / "o").string(), "--quiet"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("empty.csv: empty cloud"), std::string::npos) << r.err;
+}
+
+// The record MRPT writes for `object`, as bytes.
+std::vector<unsigned char> record_of(const mrpt::serialization::CSerializable& object) {
+  mrpt::io::CMemoryStream memory;
+  auto archive = mrpt::serialization::archiveFrom(memory);
+  archive << object;
+  const auto* data = static_cast<const unsigned char*>(memory.getRawBufferData());
+  return {data, data + memory.getTotalBytesCount()};
+}
+
+// `bytes` with the first occurrence of `find` (which must occur) replaced by `put`, written to
+// `file` as a plain rawlog.
+void write_patched(const std::filesystem::path& file, std::vector<unsigned char> bytes,
+                   const std::vector<unsigned char>& find, const std::vector<unsigned char>& put) {
+  const auto at = std::search(bytes.begin(), bytes.end(), find.begin(), find.end());
+  ASSERT_NE(at, bytes.end()) << "pattern not in the record";
+  std::copy(put.begin(), put.end(), at);
+  std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
+                                              static_cast<std::streamsize>(bytes.size()));
+}
+
+// Counts that MRPT's deserialiser would size a vector by before reading an element (an image of
+// 4 billion rows, hundreds of millions of points) end with exit 2 at the field, before MRPT
+// reads the record: the walk over every field (mrpt_record_check.hpp) checks them first.
+TEST(ExtractCli, CraftedCountsAreRefusedBeforeMrptReadsTheRecord) {
+  const test::ScratchDir dir;
+  // The range image's rows (30) and columns (40).
+  write_patched(dir.path() / "rows.rawlog", record_of(wall_scan()), {30, 0, 0, 0, 40, 0, 0, 0},
+                {0xff, 0xff, 0xff, 0xff});
+  expect_rejected(dir.path() / "rows.rawlog", "CObservation3DRangeScan.rangeImage",
+                  "40x4294967295 pixels, beyond 8192 either way");
+
+  // The 3D points' count (3), after the sensor pose's end flag and hasPoints3D.
+  mrpt::obs::CObservation3DRangeScan points;
+  points.hasPoints3D = true;
+  points.resizePoints3DVectors(3);
+  write_patched(dir.path() / "points.rawlog", record_of(points), {0x88, 1, 3, 0, 0, 0}, {0x88, 1, 0, 0, 0, 0x10});
+  expect_rejected(dir.path() / "points.rawlog", "CObservation3DRangeScan.points3D", "count 268435456 needs");
+
+  // A Velodyne scan's decoded x values (2 of them, the first 1.0f).
+  mrpt::obs::CObservationVelodyneScan velodyne;
+  velodyne.point_cloud.x = {1.0f, 7.0f};
+  velodyne.point_cloud.y = velodyne.point_cloud.z = {0.5f, -1.0f};
+  velodyne.point_cloud.intensity = {10, 20};
+  write_patched(dir.path() / "velodyne.rawlog", record_of(velodyne), {2, 0, 0, 0, 0, 0, 0x80, 0x3f},
+                {0, 0, 0, 0x40});
+  expect_rejected(dir.path() / "velodyne.rawlog", "CObservationVelodyneScan.point_cloud.x", "count 1073741824 needs");
+
+  // A point cloud's map: its point count (2, the first x 1.0f).
+  auto map = std::make_shared<mrpt::maps::CSimplePointsMap>();
+  map->insertPoint(1.0f, 2.0f, 3.0f);
+  map->insertPoint(4.0f, 5.0f, 6.0f);
+  mrpt::obs::CObservationPointCloud cloud;
+  cloud.pointcloud = map;
+  write_patched(dir.path() / "cloud.rawlog", record_of(cloud), {2, 0, 0, 0, 0, 0, 0x80, 0x3f},
+                {0xff, 0xff, 0xff, 0x7f});
+  expect_rejected(dir.path() / "cloud.rawlog", "CObservationPointCloud.pointcloud.CSimplePointsMap.points",
+                  "count 2147483647 needs");
+
+  // A flag MRPT reads into a bool: hasRangeImage, after the pose's end flag and hasPoints3D 0.
+  write_patched(dir.path() / "flag.rawlog", record_of(wall_scan()), {0x88, 0, 1}, {0x88, 0, 7});
+  expect_rejected(dir.path() / "flag.rawlog", "CObservation3DRangeScan.hasRangeImage", "a flag must be 0 or 1, got 7");
+}
+
+// The intensity image is walked and left out of what MRPT decodes (the reader does not use it,
+// and a JPEG's header may claim any size): a frame with one reads as one without.
+TEST(PointCloudRawlog, AnIntensityImageIsWalkedAndLeftOut) {
+  const test::ScratchDir dir;
+  mrpt::obs::CObservation3DRangeScan scan = wall_scan();
+  scan.hasIntensityImage = true;
+  scan.intensityImage.resize(40, 30, mrpt::img::CH_GRAY);
+  write_log(dir.path() / "intensity.rawlog", scan);
+  const eval::PointCloudLog log = eval::read_point_cloud_rawlog(dir.path() / "intensity.rawlog");
+  ASSERT_EQ(log.frames.size(), 1u);
+  EXPECT_EQ(log.frames[0].returns(), 40u * 29u);
 }
 
 // A CSV point file: two perpendicular walls, noise-free; EM2 finds both exactly and the tables

@@ -53,6 +53,28 @@ TEST(FilterDivergence, StepsWithoutAssociationsDoNotCountAndTheWindowMustBeFull)
   EXPECT_NE(empty.reason().find("diverged at iteration 30: mean normalised innovation squared 500"), std::string::npos);
 }
 
+// Innovations three times their covariance step after step (moving points taken for
+// landmarks): no 10-step window passes 50, but once most of the last 100 steps are that high the
+// median passes 2.
+TEST(FilterDivergence, ASustainedExcessIsDivergence) {
+  FilterDivergence check({10, 50.0});
+  feed(check, 0, 200, 1.0);
+  feed(check, 200, 49, 3.0);
+  EXPECT_EQ(check.reason(), "");
+  feed(check, 249, 10, 3.0);
+  EXPECT_EQ(check.reason(),
+            "diverged at iteration 249: median normalised innovation squared per degree of freedom 3 over iterations "
+            "150 to 249 (bound 2)");
+}
+
+// Every third step thirty times its covariance: the median of the long window stays at 1, and
+// no short window passes its bound.
+TEST(FilterDivergence, RepeatedSpikesAreNoSustainedExcess) {
+  FilterDivergence check({10, 50.0});
+  for (int k = 0; k < 600; ++k) feed(check, k, 1, k % 3 == 0 ? 30.0 : 1.0);
+  EXPECT_EQ(check.reason(), "");
+}
+
 TEST(FilterDivergence, ANonFiniteInnovationIsDivergence) {
   FilterDivergence check({3, 50.0});
   feed(check, 0, 2, 1.0);

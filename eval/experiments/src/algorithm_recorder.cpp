@@ -178,6 +178,12 @@ SummaryRow AlgorithmRecorder::summary_over(int iterations) const {
   // One whose pose was not its own for most of the run has not mapped it (lost_pose.hpp).
   else if (running() && !algorithm_->lost().empty())
     row.status = RunStatus::lost(algorithm_->lost());
+  // One whose estimate stayed far from the truth has not mapped it either (truth_departure.hpp).
+  else if (const std::string left = running() ? scorer_.departure(static_cast<std::size_t>(iterations),
+                                                                  algorithm_->steps_before_map_frame())
+                                              : "";
+           !left.empty())
+    row.status = RunStatus::lost(left);
   scorer_.fill(row, static_cast<std::size_t>(iterations), algorithm_->steps_before_map_frame());
   row.input_digest = digest_.hex();
   return row;

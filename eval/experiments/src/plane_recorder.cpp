@@ -1,6 +1,7 @@
 #include "relslam/eval/experiments/plane_recorder.hpp"
 
 #include "relslam/eval/metrics/trajectory_error.hpp"
+#include "relslam/eval/metrics/truth_departure.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -101,6 +102,7 @@ void PlaneRecorder::step(const PlaneFrame& observation, const PlaneTruthFrame& t
   if (pose) trajectory_.write(static_cast<double>(k), rigid_from_planar(*pose));
   estimates_.push_back(pose);
   truths_.push_back(truth.pose_known ? std::optional<PlanarPose>(truth.world_T_robot) : std::nullopt);
+  iterations_done_.push_back(k);
   runtimes_ms_.push_back(runtime_ms);
 
   fields_.clear();
@@ -203,6 +205,18 @@ PlanarScores PlaneRecorder::planar_scores(int walls_mapped) {
   return scores;
 }
 
+std::string PlaneRecorder::departure() const {
+  std::vector<Eigen::Vector3d> path;
+  std::vector<PositionErrorAt> errors;
+  for (std::size_t i = 0; i < estimates_.size(); ++i) {
+    if (truths_[i]) path.push_back(rigid_from_planar(*truths_[i]).translation);
+    errors.push_back({iterations_done_[i], estimates_[i] && truths_[i]
+                                               ? std::optional<double>(planar_pose_error(*estimates_[i], *truths_[i]).position)
+                                               : std::nullopt});
+  }
+  return truth_departure(errors, path_extent(path));
+}
+
 SummaryRow PlaneRecorder::finish() {
   iterations_.close();
   trajectory_.close();
@@ -213,6 +227,8 @@ SummaryRow PlaneRecorder::finish() {
   SummaryRow row;
   row.algorithm = name();
   row.status = status_;
+  // An estimate that stayed far from the truth has not mapped the walls (truth_departure.hpp).
+  if (const std::string left = running() ? departure() : ""; !left.empty()) row.status = RunStatus::lost(left);
   row.iterations = static_cast<int>(estimates_.size());
   // Without true walls (recorded planes) there is no map error, not a zero one.
   row.final_landmark_error = walls_.empty() ? std::nan("") : last_map_error_.sum;

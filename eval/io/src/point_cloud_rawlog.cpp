@@ -32,6 +32,8 @@ using mrpt::obs::CObservation3DRangeScan;
 using mrpt::obs::CObservationPointCloud;
 using mrpt::obs::CObservationVelodyneScan;
 
+static_assert(kMaxWalkedImageSide == kMaxImageSide, "the walk bounds images as the reader does");
+
 constexpr std::array kCloudClasses = {"CObservation3DRangeScan", "CObservationVelodyneScan", "CObservationPointCloud"};
 constexpr std::array kContainerClasses = {"CSensoryFrame", "CActionCollection"};
 
@@ -235,6 +237,32 @@ std::string checked_class(const std::vector<unsigned char>& bytes, std::size_t a
   return cls;
 }
 
+// The record at `at` (moved past it), walked field by field before MRPT reads a byte
+// (mrpt_record_check.hpp): no count may claim more than the file holds, the images MRPT would
+// decode are cut from the record. `checked` holds the record MRPT then reads.
+mrpt::serialization::CSerializable::Ptr checked_object(const std::vector<unsigned char>& bytes, std::size_t& at,
+                                                       std::vector<unsigned char>& checked, const Place& where) {
+  const ByteReader read = [&](void* buffer, std::size_t n) {
+    n = std::min(n, bytes.size() - at);
+    std::copy_n(bytes.data() + at, n, static_cast<unsigned char*>(buffer));
+    at += n;
+    return n;
+  };
+  try {
+    read_checked_cloud_record(read, checked, bytes.size());
+  } catch (const RecordProblem& p) {
+    throw InputError(where.file, where.record, p.field(), p.what());
+  }
+  mrpt::io::CMemoryStream memory;
+  memory.assignMemoryNotOwn(checked.data(), checked.size());
+  auto archive = mrpt::serialization::archiveFrom(memory);
+  try {
+    return archive.ReadObject();
+  } catch (const std::exception& e) {
+    throw InputError(where.file, where.record, where.path, "unreadable record: " + mrpt_exception_message(e.what()));
+  }
+}
+
 }  // namespace
 
 std::size_t PointCloudFrame::returns() const {
@@ -245,18 +273,12 @@ std::size_t PointCloudFrame::returns() const {
 PointCloudLog read_point_cloud_rawlog(const std::filesystem::path& path) {
   const std::string name = path.string();
   const std::vector<unsigned char> bytes = decoded_file(path);
-  mrpt::io::CMemoryStream memory;
-  memory.assignMemoryNotOwn(bytes.data(), bytes.size());
-  auto archive = mrpt::serialization::archiveFrom(memory);
+  std::size_t at = 0;  // where the next record starts
+  std::vector<unsigned char> checked;
   PointCloudLog log;
-  for (int record = 1; static_cast<std::size_t>(memory.getPosition()) < bytes.size(); ++record) {
-    const std::string cls = checked_class(bytes, static_cast<std::size_t>(memory.getPosition()), name, record);
-    mrpt::serialization::CSerializable::Ptr object;
-    try {
-      object = archive.ReadObject();
-    } catch (const std::exception& e) {
-      throw InputError(name, record, cls, "unreadable record: " + mrpt_exception_message(e.what()));
-    }
+  for (int record = 1; at < bytes.size(); ++record) {
+    const std::string cls = checked_class(bytes, at, name, record);
+    const mrpt::serialization::CSerializable::Ptr object = checked_object(bytes, at, checked, {name, record, cls});
     log.records = record;
     std::vector<std::pair<mrpt::obs::CObservation::Ptr, std::string>> observations;
     if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(object)) {

@@ -32,6 +32,7 @@ IterationScore RunScorer::score(const Rigid3& estimate, const TruthFrame& truth,
   history_.push_back(s);
   estimates_.push_back(estimate);
   truths_.push_back(truth.world_T_robot);
+  iterations_.push_back(truth.iteration);
   return s;
 }
 
@@ -67,6 +68,18 @@ int RunScorer::duplicates(const std::vector<int>& ids) const {
   int extra = 0;
   for (const auto& [truth, n] : per_truth) extra += truth >= 0 ? n - 1 : 0;
   return extra;
+}
+
+std::string RunScorer::departure(std::size_t iterations, std::size_t first) const {
+  const std::size_t n = std::min(iterations, history_.size());
+  if (!poses_known_ || n == 0) return "";
+  std::vector<Eigen::Vector3d> path;
+  std::vector<PositionErrorAt> errors;
+  for (std::size_t k = 0; k < n; ++k) {
+    path.push_back(truths_[k].translation);
+    if (k >= first) errors.push_back({iterations_[k], (estimates_[k].translation - truths_[k].translation).norm()});
+  }
+  return truth_departure(errors, path_extent(path));
 }
 
 void RunScorer::fill(SummaryRow& row, std::size_t iterations, std::size_t first) const {

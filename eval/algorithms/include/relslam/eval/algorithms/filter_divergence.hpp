@@ -1,6 +1,7 @@
 #pragma once
 // When a Kalman filter has diverged, without the truth: the mean normalised innovation squared
-// of its associated observations over a sliding window against a bound, and each update's move
+// of its associated observations over a sliding window against a bound, the median of each
+// step's over a long window against another (a burst, a sustained excess), and each update's move
 // of the position against a bound in standard deviations of the prediction
 // (config/ekf_divergence_options.hpp says why). The first step over either bound names the
 // iteration; the run's summary.csv status is then "lost: diverged at iteration N: ...", never
@@ -37,6 +38,12 @@ class FilterDivergence {
   std::string reason() const;
 
  private:
+  // Whether the mean NIS per degree of freedom over the last `window` steps exceeds its bound,
+  // or the median of the steps' NIS per degree of freedom over the last `long_window` steps
+  // exceeds its own; each notes the reason if so.
+  void check_mean(int iteration);
+  void check_median(int iteration);
+
   EkfDivergenceOptions options_;
   std::deque<std::pair<int, StepInnovation>> window_;
   std::string reason_;

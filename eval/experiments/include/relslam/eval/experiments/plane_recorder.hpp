@@ -68,6 +68,8 @@ class PlaneRecorder {
   MapCounts write_planes_table();
   void score_trajectory(SummaryRow& row) const;
   PlanarScores planar_scores(int walls_mapped);
+  // "" or why the estimate left the truth (relslam/eval/metrics/truth_departure.hpp).
+  std::string departure() const;
 
   std::unique_ptr<PlaneAlgorithm> algorithm_;
   const std::vector<PlaneObject>& walls_;
@@ -81,6 +83,7 @@ class PlaneRecorder {
   std::set<int> walls_seen_;
   std::vector<std::optional<PlanarPose>> estimates_;
   std::vector<std::optional<PlanarPose>> truths_;  // none where the source knows no true pose
+  std::vector<int> iterations_done_;  // each step's iteration, for the truth check
   std::vector<double> runtimes_ms_;
   std::vector<double> mean_map_errors_;
   PlaneMapError last_map_error_;

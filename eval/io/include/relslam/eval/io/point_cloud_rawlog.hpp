@@ -48,9 +48,11 @@ inline constexpr double kMaxCloudCoordinate_m = 1e4;        // |x|, |y|, |z| of 
 inline constexpr double kMaxFocalLength_px = 1e6;
 
 // Reads plain or gzip rawlogs. Accepted at the top level: the three cloud classes, and
-// CSensoryFrame (its cloud observations read, the others counted as skipped) and
-// CActionCollection (skipped). Each record's class is checked from its header before MRPT
-// decodes it, the whole file decodes to at most the budget of rawlog.hpp, and every decoded
+// CSensoryFrame (its cloud observations read, the landmark reader's counted as skipped) and
+// CActionCollection (skipped). Each record is walked field by field before MRPT decodes it
+// (every count bounded by what the file holds, images and range layers by kMaxImageSide, the
+// intensity and confidence images left out; docs/reader-limits.md), the whole file decodes to
+// at most the budget of rawlog.hpp, and every decoded
 // cloud is checked: a range image neither empty nor beyond kMaxImageSide, the size its
 // intrinsics state, positive finite focal lengths, finite centre and range units, no record
 // stored outside the file; points finite and within kMaxCloudCoordinate_m; at least one return;

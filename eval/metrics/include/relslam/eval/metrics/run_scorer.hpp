@@ -6,6 +6,7 @@
 #include "relslam/core/truth.hpp"
 #include "relslam/eval/metrics/landmark_error.hpp"
 #include "relslam/eval/metrics/run_summary.hpp"
+#include "relslam/eval/metrics/truth_departure.hpp"
 
 #include <cstdint>
 #include <map>
@@ -48,6 +49,9 @@ class RunScorer {
   // with one that stopped earlier, at the same point.
   // Trajectory errors over the scored iterations from `first` on (the ones before had no pose).
   void fill(SummaryRow& row, std::size_t iterations = SIZE_MAX, std::size_t first = 0) const;
+  // "" while the estimate kept to the truth, else why it left it (truth_departure.hpp), over
+  // the same iterations as fill(); "" without a true path. Batch algorithms' revised poses count.
+  std::string departure(std::size_t iterations = SIZE_MAX, std::size_t first = 0) const;
   std::size_t scored() const { return history_.size(); }
   const std::vector<Rigid3>& estimates() const { return estimates_; }
 
@@ -57,6 +61,7 @@ class RunScorer {
   std::vector<double> runtimes_;
   std::vector<IterationScore> history_;
   std::vector<Rigid3> estimates_, truths_;
+  std::vector<int> iterations_;  // each scored iteration's number
   bool truth_known_;
   bool poses_known_ = true;
 };
