@@ -264,8 +264,8 @@ struct RelativePlaneOptions {
   // holds the plane, or the lines of two first readings whose directions differ by
   // integrity.min_angle_rad (a corner: their offsets fix the position, whatever the ends). A first
   // reading cut at both ends alone says nothing about where along its wall the start was (a
-  // depth camera's first wall put every pose of scenarios/p-depth-room.json 4 off); X0 then waits
-  // unplaced, and no pose is given (docs/generated-maps.md).
+  // depth camera's first wall, for one); X0 then waits unplaced, and no pose is given
+  // (docs/generated-maps.md).
   bool observed_anchor = false;
   // Adaptive preset only [C: off]: walls placed by their lines where no group places them, and
   // groups placed on walls already on the map (line_placement.hpp). A wall seen in
